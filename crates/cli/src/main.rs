@@ -1,1 +1,103 @@
-fn main() {}
+//! `kreisel`: the command-line tool of the kreisel rigid-body rotation library.
+//!
+//! `main` parses the command line, dispatches to one subcommand, and turns
+//! its error into one line on standard error and an exit status: 0 on
+//! success, 1 for bad data or files ([`error::EXIT_DATA_ERROR`]), 2 for usage
+//! errors (clap).
+
+#![forbid(unsafe_code)]
+
+mod convert;
+mod error;
+mod numbers;
+mod representation;
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use crate::error::CliError;
+
+/// Rigid-body rotations from the command line.
+#[derive(Debug, Parser)]
+#[command(name = "kreisel", version, propagate_version = true)]
+struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// The subcommands, one module each.
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Convert rotations between representations (quaternion, matrix, rotation vector,
+    /// axis-angle, Euler angles), one per line
+    Convert(convert::ConvertArgs),
+}
+
+/// Runs the chosen subcommand.
+fn dispatch(command: &Command) -> Result<(), CliError> {
+    match command {
+        Command::Convert(args) => convert::run(args),
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match dispatch(&cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        // The reader of our output has gone (`| head -1`): nothing to report.
+        Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
+        Err(e) => {
+            // Unlike eprintln!, never panics if standard error is closed.
+            let _ = writeln!(std::io::stderr(), "kreisel: error: {e}");
+            ExitCode::from(e.exit_code())
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn command_line_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn help_states_tolerance_and_radians() {
+        // The help text spells out the library's tolerance; keep them in sync.
+        assert_eq!(kreisel_kinematics::ORTHONORMALITY_TOLERANCE, 1e-6);
+        let mut cli = Cli::command();
+        let help = cli
+            .find_subcommand_mut("convert")
+            .expect("convert subcommand")
+            .render_long_help()
+            .to_string();
+        assert!(help.contains("max|M^T M - I| <= 1e-6"), "{help}");
+        assert!(help.contains("rotvec stays in radians"), "{help}");
+    }
+
+    #[test]
+    fn parses_convert_arguments() {
+        let cli = Cli::try_parse_from([
+            "kreisel",
+            "convert",
+            "--from",
+            "euler:zxz",
+            "--to",
+            "quat-xyzw",
+            "--degrees",
+        ])
+        .unwrap();
+        let Command::Convert(args) = cli.command;
+        assert_eq!(args.from.to_string(), "euler:zxz");
+        assert!(args.degrees && args.input.is_none());
+        let e = Cli::try_parse_from(["kreisel", "convert", "--from", "quaternion", "--to", "quat"])
+            .unwrap_err();
+        assert_eq!(e.exit_code(), 2);
+    }
+}

@@ -1,0 +1,294 @@
+//! `kreisel convert`: stream rotations from one representation to another,
+//! one per line, in constant memory.
+
+#![forbid(unsafe_code)]
+
+use std::fs::{self, File};
+use std::io::{self, BufRead, BufReader, BufWriter, Read, Write};
+use std::path::{Path, PathBuf};
+
+use crate::error::{CliError, LineProblem, Location, Stream};
+use crate::numbers::{Numbers, parse_numbers, write_numbers};
+use crate::representation::Representation;
+
+/// Longest accepted input line in bytes (newline included); longer lines are
+/// an error, so a file without newlines cannot exhaust memory.
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
+/// Size of the input and output buffers.
+const BUFFER_BYTES: usize = 1 << 16;
+
+/// The `--help` text of `kreisel convert` after the option list.
+const AFTER_LONG_HELP: &str = "\
+Representations (REPR):
+  quat          w,x,y,z     quaternion, scalar first. Input of any non-zero
+                            length is normalised; output is canonical (w >= 0).
+  quat-xyzw     x,y,z,w     quaternion, scalar last (scipy, ROS).
+  matrix        m00,m01,m02,m10,m11,m12,m20,m21,m22
+                            active rotation matrix (v_world = M v_body),
+                            row-major. Input must be orthonormal within
+                            max|M^T M - I| <= 1e-6 and have det M > 0.
+  rotvec        x,y,z       rotation vector axis*angle, always in radians
+                            (--degrees does not apply). Output angle in [0, pi].
+  axis-angle    x,y,z,angle axis of any non-zero length (zero only with angle
+                            0). Output: unit axis, angle in [0, pi].
+  euler:SEQ     a,b,c       Euler angles, SEQ named as in scipy: uppercase is
+                            intrinsic (ZXZ: about the moving body axes),
+                            lowercase extrinsic (zxz: about the fixed axes).
+                            All 24: XYZ XZY YXZ YZX ZXY ZYX XYX XZX YXY YZY ZXZ
+                            ZYZ and their lowercase forms. Output: first and
+                            third angle in (-pi, pi], middle in [0, pi] (proper
+                            Euler) or [-pi/2, pi/2] (Tait-Bryan); at exact
+                            gimbal lock the third angle is 0.
+
+Input: one rotation per line, numbers separated by commas and/or whitespace.
+Blank lines and lines starting with '#' are skipped. Output: one line per
+rotation, numbers comma-separated in shortest round-trip form.
+
+Errors: the first invalid line stops the conversion with a message naming its
+line number (FILE:LINE: with --input) and exit status 1; every line before it
+has been written.
+
+Examples:
+  echo '0 0 1.5707963267948966' | kreisel convert --from rotvec --to quat
+  kreisel convert --from matrix --to euler:ZXZ --degrees --input m.csv";
+
+/// Arguments of `kreisel convert`.
+#[derive(Debug, Clone, clap::Args)]
+#[command(after_long_help = AFTER_LONG_HELP)]
+pub struct ConvertArgs {
+    /// Representation of the input: quat, quat-xyzw, matrix, rotvec, axis-angle, euler:SEQ
+    #[arg(long, value_name = "REPR")]
+    pub from: Representation,
+
+    /// Representation of the output: quat, quat-xyzw, matrix, rotvec, axis-angle, euler:SEQ
+    #[arg(long, value_name = "REPR")]
+    pub to: Representation,
+
+    /// Read and write Euler angles and the axis-angle angle in degrees (rotvec stays in radians)
+    #[arg(long)]
+    pub degrees: bool,
+
+    /// Read from FILE instead of standard input
+    #[arg(long, value_name = "FILE")]
+    pub input: Option<PathBuf>,
+
+    /// Write to FILE (created or truncated) instead of standard output
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// What to convert: the representations and the angle unit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Conversion {
+    /// Representation of the input lines.
+    pub from: Representation,
+    /// Representation of the output lines.
+    pub to: Representation,
+    /// Euler and axis–angle angles in degrees.
+    pub degrees: bool,
+}
+
+impl Conversion {
+    /// Converts the text of one line: `None` for a blank or comment line.
+    ///
+    /// # Errors
+    /// A [`LineProblem`] when the line is not a rotation in `self.from`.
+    pub fn convert_line(&self, text: &str) -> Result<Option<Numbers>, LineProblem> {
+        let text = text.trim();
+        if text.is_empty() || text.starts_with('#') {
+            return Ok(None);
+        }
+        let numbers = parse_numbers(text)?;
+        let q = self.from.quat_from_numbers(&numbers, self.degrees)?;
+        Ok(Some(self.to.numbers_from_quat(q, self.degrees)))
+    }
+}
+
+/// Runs `kreisel convert`: opens the input and output and streams the lines.
+///
+/// # Errors
+/// A [`CliError`] for a file that cannot be opened or created, an I/O error,
+/// or the first invalid line. The output is flushed in every case, so all
+/// lines before an invalid one are written.
+pub fn run(args: &ConvertArgs) -> Result<(), CliError> {
+    let conversion = Conversion {
+        from: args.from,
+        to: args.to,
+        degrees: args.degrees,
+    };
+    let (reader, input) = open_input(args.input.as_deref())?;
+    let (writer, output) = open_output(args.output.as_deref(), args.input.as_deref())?;
+    let mut writer = BufWriter::with_capacity(BUFFER_BYTES, writer);
+    let converted = convert_stream(reader, &mut writer, conversion, &input, &output);
+    let flushed = writer
+        .flush()
+        .map_err(|source| CliError::Write { output, source });
+    converted.and(flushed)
+}
+
+/// Standard input, or the file at `path`.
+fn open_input(path: Option<&Path>) -> Result<(Box<dyn BufRead>, Stream), CliError> {
+    match path {
+        None => Ok((Box::new(io::stdin().lock()), Stream::Standard)),
+        Some(path) => {
+            let file = File::open(path).map_err(|source| CliError::OpenInput {
+                path: path.to_owned(),
+                source,
+            })?;
+            let reader = BufReader::with_capacity(BUFFER_BYTES, file);
+            Ok((Box::new(reader), Stream::File(path.to_owned())))
+        }
+    }
+}
+
+/// Standard output, or the file at `path` (created or truncated), unless it
+/// is the input file.
+fn open_output(
+    path: Option<&Path>,
+    input: Option<&Path>,
+) -> Result<(Box<dyn Write>, Stream), CliError> {
+    let Some(path) = path else {
+        return Ok((Box::new(io::stdout().lock()), Stream::Standard));
+    };
+    if let Some(input) = input {
+        // Both exist when this is the same file; then creating the output
+        // would truncate the input before it is read.
+        if let (Ok(a), Ok(b)) = (fs::canonicalize(input), fs::canonicalize(path))
+            && a == b
+        {
+            return Err(CliError::OutputIsInput {
+                path: path.to_owned(),
+            });
+        }
+    }
+    let file = File::create(path).map_err(|source| CliError::CreateOutput {
+        path: path.to_owned(),
+        source,
+    })?;
+    Ok((Box::new(file), Stream::File(path.to_owned())))
+}
+
+/// Converts every line of `reader` and writes the results to `writer`.
+///
+/// Reads one line at a time into a reused buffer (at most
+/// [`MAX_LINE_BYTES`]), so memory stays constant however long the input.
+/// Stops at the first invalid line. Does not flush `writer`.
+///
+/// # Errors
+/// [`CliError::Line`] for an invalid line (with its 1-based number),
+/// [`CliError::Read`] / [`CliError::Write`] for I/O errors.
+pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
+    mut reader: R,
+    writer: &mut W,
+    conversion: Conversion,
+    input: &Stream,
+    output: &Stream,
+) -> Result<(), CliError> {
+    let mut buffer = Vec::with_capacity(256);
+    let mut line: u64 = 0;
+    loop {
+        buffer.clear();
+        let read = (&mut reader)
+            .take(MAX_LINE_BYTES as u64 + 1)
+            .read_until(b'\n', &mut buffer)
+            .map_err(|source| CliError::Read {
+                input: input.clone(),
+                source,
+            })?;
+        if read == 0 {
+            return Ok(());
+        }
+        line += 1;
+        let at_line = |problem| CliError::Line {
+            location: Location {
+                input: input.clone(),
+                line,
+            },
+            problem,
+        };
+        if buffer.len() > MAX_LINE_BYTES {
+            return Err(at_line(LineProblem::TooLong {
+                limit: MAX_LINE_BYTES,
+            }));
+        }
+        let text = std::str::from_utf8(&buffer).map_err(|_| at_line(LineProblem::NotUtf8))?;
+        if let Some(numbers) = conversion.convert_line(text).map_err(at_line)? {
+            write_numbers(writer, numbers.as_slice()).map_err(|source| CliError::Write {
+                output: output.clone(),
+                source,
+            })?;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn convert(from: &str, to: &str, text: &str) -> (Result<(), CliError>, String) {
+        let conversion = Conversion {
+            from: from.parse().unwrap(),
+            to: to.parse().unwrap(),
+            degrees: false,
+        };
+        let mut out = Vec::new();
+        let result = convert_stream(
+            text.as_bytes(),
+            &mut out,
+            conversion,
+            &Stream::Standard,
+            &Stream::Standard,
+        );
+        (result, String::from_utf8(out).unwrap())
+    }
+
+    #[test]
+    fn skips_blank_and_comment_lines_and_keeps_order() {
+        let text = "# header\n\n2,0,0,0\n   \t\n  # note\n0,0,0,-3\r\n0 1 0 0";
+        let (result, out) = convert("quat", "quat", text);
+        assert!(result.is_ok());
+        assert_eq!(out, "1,0,0,0\n0,0,0,1\n0,1,0,0\n");
+    }
+
+    #[test]
+    fn stops_at_first_error_with_line_number() {
+        let (result, out) = convert("quat", "rotvec", "1,0,0,0\n# c\n0,0,0,0\n1,0,0,0\n");
+        assert_eq!(out, "0,0,0\n");
+        let e = result.unwrap_err();
+        assert_eq!(e.to_string(), "line 3: quaternion has zero norm");
+    }
+
+    #[test]
+    fn rejects_invalid_utf8_and_endless_lines() {
+        let conversion = Conversion {
+            from: Representation::Quat,
+            to: Representation::Quat,
+            degrees: false,
+        };
+        let mut out = Vec::new();
+        let bad = b"1,0,0,0\n1,0,\xff,0\n";
+        let e = convert_stream(
+            &bad[..],
+            &mut out,
+            conversion,
+            &Stream::Standard,
+            &Stream::Standard,
+        )
+        .unwrap_err();
+        assert_eq!(e.to_string(), "line 2: line is not valid UTF-8 text");
+        let long = vec![b' '; MAX_LINE_BYTES + 10];
+        let e = convert_stream(
+            &long[..],
+            &mut out,
+            conversion,
+            &Stream::Standard,
+            &Stream::Standard,
+        )
+        .unwrap_err();
+        assert!(
+            e.to_string().starts_with("line 1: line is longer than"),
+            "{e}"
+        );
+    }
+}

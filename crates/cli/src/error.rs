@@ -1,0 +1,227 @@
+//! The errors of the `kreisel` binary: where a problem happened and what it was.
+//!
+//! [`CliError`] is what a subcommand returns; `main` prints it as one line,
+//! `kreisel: error: {error}`, and exits with [`CliError::exit_code`]. Errors
+//! caused by a line of input carry a [`Location`] (the file, or standard
+//! input, and the 1-based line number) and a [`LineProblem`].
+
+use std::fmt;
+use std::io;
+use std::path::PathBuf;
+
+use kreisel_kinematics::KinematicsError;
+
+use crate::representation::Representation;
+
+/// Exit status for errors in the data or in the files (clap uses 2 for usage errors).
+pub const EXIT_DATA_ERROR: u8 = 1;
+
+/// Where input comes from or output goes to: a named file or a standard stream.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Stream {
+    /// Standard input or standard output.
+    Standard,
+    /// A file given on the command line.
+    File(PathBuf),
+}
+
+/// The place of an offending input line.
+///
+/// Displays as `FILE:LINE` for a file and `line LINE` for standard input.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Location {
+    /// The input the line was read from.
+    pub input: Stream,
+    /// 1-based line number, counting every line (comments and blank ones too).
+    pub line: u64,
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.input {
+            Stream::Standard => write!(f, "line {}", self.line),
+            Stream::File(path) => write!(f, "{}:{}", path.display(), self.line),
+        }
+    }
+}
+
+/// What is wrong with one line of input.
+#[derive(Debug, thiserror::Error)]
+pub enum LineProblem {
+    /// The line is not valid UTF-8 text.
+    #[error("line is not valid UTF-8 text")]
+    NotUtf8,
+    /// The line exceeds the length limit (protects memory from endless lines).
+    #[error("line is longer than {limit} bytes")]
+    TooLong {
+        /// The limit in bytes.
+        limit: usize,
+    },
+    /// Two commas with nothing between them, or a comma at the start or end.
+    #[error(
+        "empty number at position {position} (two commas in a row, or a leading or trailing comma)"
+    )]
+    EmptyNumber {
+        /// 1-based position of the empty field among the numbers.
+        position: usize,
+    },
+    /// A token that `f64::from_str` does not accept.
+    #[error("cannot parse `{token}` as a number")]
+    BadNumber {
+        /// The token as written.
+        token: String,
+    },
+    /// A number that parses but is NaN or infinite (also `1e999`, which overflows).
+    #[error("number `{token}` is not finite")]
+    NonFinite {
+        /// The token as written.
+        token: String,
+    },
+    /// The line holds the wrong count of numbers for the representation.
+    #[error("expected {expected} numbers for {representation}, found {found}")]
+    WrongCount {
+        /// The input representation.
+        representation: Representation,
+        /// How many numbers it needs.
+        expected: usize,
+        /// How many the line holds.
+        found: usize,
+    },
+    /// A rotation vector with finite components whose length overflows `f64`.
+    #[error("rotation vector length is not a finite number (it overflows)")]
+    RotationVectorLength,
+    /// The numbers do not describe a rotation (zero quaternion, non-orthonormal
+    /// or reflection matrix, zero axis with a non-zero angle).
+    #[error("{source}")]
+    NotARotation {
+        /// The library's description of the problem.
+        #[from]
+        source: KinematicsError,
+    },
+}
+
+/// Everything that makes a `kreisel` subcommand fail.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// The `--input` file cannot be opened.
+    #[error("cannot open input file {}: {source}", path.display())]
+    OpenInput {
+        /// The path as given.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// The `--output` file cannot be created.
+    #[error("cannot create output file {}: {source}", path.display())]
+    CreateOutput {
+        /// The path as given.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// `--input` and `--output` name the same file, which would be truncated
+    /// before it is read.
+    #[error("output file {} is the input file; refusing to overwrite it", path.display())]
+    OutputIsInput {
+        /// The output path as given.
+        path: PathBuf,
+    },
+    /// Reading the input failed (an I/O error, not a problem with the text).
+    #[error("cannot read {}: {source}", stream_name(input, "standard input"))]
+    Read {
+        /// The input being read.
+        input: Stream,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// Writing the output failed (disk full, closed pipe, ...).
+    #[error("cannot write {}: {source}", stream_name(output, "standard output"))]
+    Write {
+        /// The output being written.
+        output: Stream,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// A line of input is not a valid rotation in the `--from` representation.
+    #[error("{location}: {problem}")]
+    Line {
+        /// The file (or standard input) and line number.
+        location: Location,
+        /// What is wrong with it.
+        problem: LineProblem,
+    },
+}
+
+/// `path` for a file, `standard` for a standard stream.
+fn stream_name(stream: &Stream, standard: &str) -> String {
+    match stream {
+        Stream::Standard => standard.to_owned(),
+        Stream::File(path) => path.display().to_string(),
+    }
+}
+
+impl CliError {
+    /// The process exit status for this error.
+    pub fn exit_code(&self) -> u8 {
+        EXIT_DATA_ERROR
+    }
+
+    /// `true` when the reader of standard output went away (e.g. `| head -1`):
+    /// not a failure of `kreisel`, so it ends quietly with status 0.
+    pub fn is_broken_pipe(&self) -> bool {
+        matches!(
+            self,
+            CliError::Write { output: Stream::Standard, source }
+                if source.kind() == io::ErrorKind::BrokenPipe
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn locations_name_file_or_line() {
+        let stdin = Location {
+            input: Stream::Standard,
+            line: 7,
+        };
+        assert_eq!(stdin.to_string(), "line 7");
+        let file = Location {
+            input: Stream::File(PathBuf::from("data/q.csv")),
+            line: 12,
+        };
+        assert_eq!(file.to_string(), "data/q.csv:12");
+    }
+
+    #[test]
+    fn line_error_is_one_line() {
+        let e = CliError::Line {
+            location: Location {
+                input: Stream::Standard,
+                line: 3,
+            },
+            problem: LineProblem::WrongCount {
+                representation: Representation::Quat,
+                expected: 4,
+                found: 3,
+            },
+        };
+        assert_eq!(
+            e.to_string(),
+            "line 3: expected 4 numbers for quat, found 3"
+        );
+        assert!(!e.is_broken_pipe());
+    }
+
+    #[test]
+    fn only_stdout_broken_pipe_is_quiet() {
+        let pipe = |output| CliError::Write {
+            output,
+            source: io::Error::from(io::ErrorKind::BrokenPipe),
+        };
+        assert!(pipe(Stream::Standard).is_broken_pipe());
+        assert!(!pipe(Stream::File(PathBuf::from("x"))).is_broken_pipe());
+    }
+}

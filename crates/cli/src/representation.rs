@@ -1,0 +1,278 @@
+//! The rotation representations of `kreisel convert` (`--from`/`--to REPR`)
+//! and their conversion from and to unit quaternions.
+//!
+//! Every conversion goes through a unit quaternion: `numbers → DQuat` checks
+//! that the numbers describe a rotation, `DQuat → numbers` writes it in the
+//! representation's canonical form.
+
+#![forbid(unsafe_code)]
+
+use core::fmt;
+use core::str::FromStr;
+
+use glam::{DMat3, DQuat, DVec3};
+use kreisel_kinematics::{
+    AxisAngle, EulerSequence, KinematicsError, ORTHONORMALITY_TOLERANCE, canonical_quat,
+    quat_from_rotation_vector, rotation_matrix_from_quat, rotation_vector_from_quat,
+    try_normalize_quat, try_quat_from_rotation_matrix,
+};
+
+use crate::error::LineProblem;
+use crate::numbers::Numbers;
+
+/// The names of the representations, as listed in error messages.
+pub const VALID_NAMES: &str = "quat, quat-xyzw, matrix, rotvec, axis-angle, euler:SEQ \
+     (SEQ one of XYZ XZY YXZ YZX ZXY ZYX XYX XZX YXY YZY ZXZ ZYZ, uppercase intrinsic, \
+     or the same in lowercase, extrinsic)";
+
+/// A way of writing a rotation as a line of numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Representation {
+    /// `w, x, y, z`: a quaternion, scalar first; any non-zero length on input.
+    Quat,
+    /// `x, y, z, w`: a quaternion, scalar last (scipy's and ROS's order).
+    QuatXyzw,
+    /// `m00, m01, m02, m10, …, m22`: the active rotation matrix
+    /// (`v_world = M v_body`), row-major.
+    Matrix,
+    /// `x, y, z`: the rotation vector `axis · angle`, always in radians.
+    RotVec,
+    /// `x, y, z, angle`: an axis (any non-zero length) and an angle.
+    AxisAngle,
+    /// Three Euler angles in one of the 24 conventions.
+    Euler(EulerSequence),
+}
+
+impl Representation {
+    /// How many numbers a line of this representation holds.
+    pub const fn count(self) -> usize {
+        match self {
+            Representation::Quat | Representation::QuatXyzw | Representation::AxisAngle => 4,
+            Representation::Matrix => 9,
+            Representation::RotVec | Representation::Euler(_) => 3,
+        }
+    }
+
+    /// The rotation that a line of numbers describes.
+    ///
+    /// With `degrees`, Euler angles and the axis–angle angle are in degrees
+    /// (a rotation vector is always in radians).
+    ///
+    /// # Errors
+    /// [`LineProblem::WrongCount`] for the wrong count of numbers,
+    /// [`LineProblem::NotARotation`] for a zero quaternion, a matrix that is
+    /// not orthonormal within [`ORTHONORMALITY_TOLERANCE`] or is a
+    /// reflection, and an axis–angle pair with a zero axis and a non-zero
+    /// angle, [`LineProblem::RotationVectorLength`] for a rotation vector whose
+    /// length overflows. The numbers should be finite (as
+    /// [`crate::numbers::parse_numbers`] ensures); non-finite ones are
+    /// rejected too.
+    pub fn quat_from_numbers(self, numbers: &Numbers, degrees: bool) -> Result<DQuat, LineProblem> {
+        let n = numbers.as_slice();
+        if numbers.count() != self.count() || n.len() != self.count() {
+            return Err(LineProblem::WrongCount {
+                representation: self,
+                expected: self.count(),
+                found: numbers.count(),
+            });
+        }
+        let angle = |a: f64| if degrees { a.to_radians() } else { a };
+        let q = match self {
+            Representation::Quat => try_normalize_quat(DQuat::from_xyzw(n[1], n[2], n[3], n[0]))?,
+            Representation::QuatXyzw => {
+                try_normalize_quat(DQuat::from_xyzw(n[0], n[1], n[2], n[3]))?
+            }
+            Representation::Matrix => {
+                // Row-major text; glam stores columns: column c = (M_0c, M_1c, M_2c).
+                let m = DMat3::from_cols(
+                    DVec3::new(n[0], n[3], n[6]),
+                    DVec3::new(n[1], n[4], n[7]),
+                    DVec3::new(n[2], n[5], n[8]),
+                );
+                try_quat_from_rotation_matrix(m, ORTHONORMALITY_TOLERANCE)?
+            }
+            Representation::RotVec => {
+                // Finite components can still have a length beyond f64::MAX.
+                let q = quat_from_rotation_vector(DVec3::new(n[0], n[1], n[2]));
+                if !q.is_finite() {
+                    return Err(LineProblem::RotationVectorLength);
+                }
+                q
+            }
+            Representation::AxisAngle => {
+                let axis = DVec3::new(n[0], n[1], n[2]);
+                let rotation = AxisAngle::try_new(axis, angle(n[3])).map_err(|e| match e {
+                    // Report the angle as the user wrote it (degrees or radians).
+                    KinematicsError::ZeroAxis { .. } => KinematicsError::ZeroAxis { angle: n[3] },
+                    other => other,
+                })?;
+                rotation.to_quat()
+            }
+            Representation::Euler(sequence) => {
+                let angles = DVec3::new(angle(n[0]), angle(n[1]), angle(n[2]));
+                if !angles.is_finite() {
+                    return Err(KinematicsError::NonFinite {
+                        what: "Euler angles",
+                    }
+                    .into());
+                }
+                sequence.to_quat(angles)
+            }
+        };
+        Ok(q)
+    }
+
+    /// The numbers of a unit quaternion in this representation.
+    ///
+    /// Quaternions are canonical (`w ≥ 0`, as [`canonical_quat`]); the
+    /// axis–angle angle is in `[0, π]` (axis `1,0,0` for the identity); Euler
+    /// angles are in the ranges of [`EulerSequence::from_quat`] (at exact
+    /// gimbal lock the third angle is 0). With `degrees`, Euler angles and
+    /// the axis–angle angle are written in degrees.
+    pub fn numbers_from_quat(self, q: DQuat, degrees: bool) -> Numbers {
+        let angle = |a: f64| if degrees { a.to_degrees() } else { a };
+        match self {
+            Representation::Quat => {
+                let q = canonical_quat(q);
+                Numbers::from_array([q.w, q.x, q.y, q.z])
+            }
+            Representation::QuatXyzw => {
+                let q = canonical_quat(q);
+                Numbers::from_array([q.x, q.y, q.z, q.w])
+            }
+            Representation::Matrix => {
+                // The columns of Mᵀ are the rows of M.
+                Numbers::from_array(rotation_matrix_from_quat(q).transpose().to_cols_array())
+            }
+            Representation::RotVec => Numbers::from_array(rotation_vector_from_quat(q).to_array()),
+            Representation::AxisAngle => {
+                let a = AxisAngle::from_quat(q);
+                Numbers::from_array([a.axis.x, a.axis.y, a.axis.z, angle(a.angle)])
+            }
+            Representation::Euler(sequence) => {
+                let a = sequence.from_quat(q).angles;
+                Numbers::from_array([angle(a.x), angle(a.y), angle(a.z)])
+            }
+        }
+    }
+}
+
+impl fmt::Display for Representation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Representation::Quat => f.write_str("quat"),
+            Representation::QuatXyzw => f.write_str("quat-xyzw"),
+            Representation::Matrix => f.write_str("matrix"),
+            Representation::RotVec => f.write_str("rotvec"),
+            Representation::AxisAngle => f.write_str("axis-angle"),
+            Representation::Euler(sequence) => write!(f, "euler:{sequence}"),
+        }
+    }
+}
+
+impl FromStr for Representation {
+    type Err = String;
+
+    /// Parses `quat`, `quat-xyzw`, `matrix`, `rotvec`, `axis-angle` or
+    /// `euler:SEQ`; the error message lists the valid names.
+    fn from_str(text: &str) -> Result<Self, Self::Err> {
+        match text {
+            "quat" => Ok(Representation::Quat),
+            "quat-xyzw" => Ok(Representation::QuatXyzw),
+            "matrix" => Ok(Representation::Matrix),
+            "rotvec" => Ok(Representation::RotVec),
+            "axis-angle" => Ok(Representation::AxisAngle),
+            _ => match text.strip_prefix("euler:") {
+                Some(sequence) => sequence
+                    .parse()
+                    .map(Representation::Euler)
+                    .map_err(|e| format!("{e}; valid representations: {VALID_NAMES}")),
+                None => Err(format!(
+                    "unknown representation; valid representations: {VALID_NAMES}"
+                )),
+            },
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kreisel_kinematics::rotation_angle_between;
+
+    fn all() -> Vec<Representation> {
+        let mut all = vec![
+            Representation::Quat,
+            Representation::QuatXyzw,
+            Representation::Matrix,
+            Representation::RotVec,
+            Representation::AxisAngle,
+        ];
+        all.extend(EulerSequence::all().map(Representation::Euler));
+        all
+    }
+
+    #[test]
+    fn names_round_trip() {
+        for r in all() {
+            assert_eq!(r.to_string().parse::<Representation>(), Ok(r));
+        }
+        for bad in [
+            "",
+            "quaternion",
+            "euler",
+            "euler:",
+            "euler:ZZX",
+            "euler:ZxZ",
+            "Quat",
+        ] {
+            let e = bad.parse::<Representation>().unwrap_err();
+            assert!(e.contains("quat-xyzw") && e.contains("euler:SEQ"), "{e}");
+        }
+    }
+
+    #[test]
+    fn every_pair_round_trips() {
+        let q = DQuat::from_xyzw(0.3, -0.5, 0.1, 0.8).normalize();
+        for from in all() {
+            for degrees in [false, true] {
+                let numbers = from.numbers_from_quat(q, degrees);
+                assert_eq!(numbers.count(), from.count());
+                let back = from.quat_from_numbers(&numbers, degrees).unwrap();
+                assert!(rotation_angle_between(q, back) < 1e-15, "{from} {degrees}");
+            }
+        }
+    }
+
+    #[test]
+    fn matrix_is_row_major_and_active() {
+        // 90° about z: x → y, so the first column is (0, 1, 0).
+        let q = DQuat::from_rotation_z(core::f64::consts::FRAC_PI_2);
+        let m = Representation::Matrix.numbers_from_quat(q, false);
+        let expect = [0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+        for (a, b) in m.as_slice().iter().zip(expect) {
+            assert!((a - b).abs() < 1e-15, "{m:?}");
+        }
+        let back = Representation::Matrix
+            .quat_from_numbers(&Numbers::from_array(expect), false)
+            .unwrap();
+        assert!(rotation_angle_between(q, back) < 1e-16);
+    }
+
+    #[test]
+    fn wrong_count_and_zero_axis_in_degrees() {
+        let e = Representation::Quat
+            .quat_from_numbers(&Numbers::from_array([1.0, 0.0, 0.0]), false)
+            .unwrap_err();
+        assert_eq!(e.to_string(), "expected 4 numbers for quat, found 3");
+        let huge = Numbers::from_array([1.5e308, 1.5e308, 0.0]);
+        let e = Representation::RotVec
+            .quat_from_numbers(&huge, false)
+            .unwrap_err();
+        assert!(matches!(e, LineProblem::RotationVectorLength), "{e}");
+        let e = Representation::AxisAngle
+            .quat_from_numbers(&Numbers::from_array([0.0, 0.0, 0.0, 90.0]), true)
+            .unwrap_err();
+        assert_eq!(e.to_string(), "rotation axis is zero but the angle is 90");
+    }
+}
