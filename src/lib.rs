@@ -1,1 +1,19 @@
+//! # kreisel
+//!
+//! A rigid-body rotation engine for tops and Euler angles. This facade
+//! re-exports the kreisel crates:
+//!
+//! - [`kinematics`]: quaternions, rotation matrices, axis–angle, rotation
+//!   vectors, all 24 Euler conventions, Euler rates ⇄ angular velocity.
+//!
+//! ```
+//! use kreisel::kinematics::{EulerSequence, glam::DVec3};
+//! let zxz: EulerSequence = "ZXZ".parse()?;
+//! let q = zxz.to_quat(DVec3::new(0.1, 0.2, 0.3));
+//! assert!((zxz.from_quat(q).angles - DVec3::new(0.1, 0.2, 0.3)).length() < 1e-15);
+//! # Ok::<(), kreisel::kinematics::KinematicsError>(())
+//! ```
+#![deny(missing_docs)]
+#![forbid(unsafe_code)]
 
+pub use kreisel_kinematics as kinematics;

@@ -3,7 +3,7 @@
 use glam::{DQuat, DVec3};
 
 use crate::quaternion::{norm3, normalized3};
-use crate::{KinematicsError, rotation_vector_from_quat};
+use crate::{KinematicsError, canonical_quat};
 
 /// A rotation by `angle` radians about the unit vector `axis` (right-hand rule).
 ///
@@ -91,7 +91,7 @@ impl AxisAngle {
     /// The axis–angle pair of a unit quaternion, with angle in `[0, π]`.
     ///
     /// ```text
-    /// r = log(q),  angle = |r|,  axis = r / |r|   (axis = x for the identity)
+    /// q ← canonical_quat(q),  angle = 2 atan2(|v|, w),  axis = v / |v|   (axis = x for the identity)
     /// ```
     ///
     /// ```
@@ -102,7 +102,16 @@ impl AxisAngle {
     /// assert!((aa.angle - 0.5).abs() < 1e-15);
     /// ```
     pub fn from_quat(world_from_body: DQuat) -> Self {
-        Self::from_rotation_vector(rotation_vector_from_quat(world_from_body))
+        let q = canonical_quat(world_from_body);
+        let v = DVec3::new(q.x, q.y, q.z);
+        match normalized3(v) {
+            // 2 atan2(|v|, w) ∈ [0, π] exactly, as w ≥ 0.
+            Some(axis) => Self {
+                axis,
+                angle: 2.0 * norm3(v).atan2(q.w),
+            },
+            None => Self::IDENTITY,
+        }
     }
 
     /// The rotation vector `axis · angle`.

@@ -28,15 +28,6 @@ fn half_open(angle: f64) -> f64 {
     if angle <= -PI { angle + TAU } else { angle }
 }
 
-/// The quaternion of a rotation by `angle` about a coordinate axis.
-#[inline]
-fn axis_quat(axis: Axis, angle: f64) -> DQuat {
-    let (s, c) = (0.5 * angle).sin_cos();
-    let mut v = [0.0; 3];
-    v[axis.index()] = s;
-    DQuat::from_xyzw(v[0], v[1], v[2], c)
-}
-
 impl EulerSequence {
     /// The rotation (`world_from_body`) described by Euler angles in this convention.
     ///
@@ -60,16 +51,32 @@ impl EulerSequence {
     /// # Ok::<(), kreisel_kinematics::KinematicsError>(())
     /// ```
     pub fn to_quat(self, angles: DVec3) -> DQuat {
-        let [a, b, c] = self.axes();
-        let (qa, qb, qc) = (
-            axis_quat(a, angles.x),
-            axis_quat(b, angles.y),
-            axis_quat(c, angles.z),
-        );
-        match self.frame() {
-            Frame::Intrinsic => qa * qb * qc,
-            Frame::Extrinsic => qc * qb * qa,
-        }
+        let [a, b, c] = self.intrinsic_axes();
+        let t = match self.frame() {
+            Frame::Intrinsic => angles,
+            Frame::Extrinsic => DVec3::new(angles.z, angles.y, angles.x),
+        };
+        let (sa, ca) = (0.5 * t.x).sin_cos();
+        let (sb, cb) = (0.5 * t.y).sin_cos();
+        let (sg, cg) = (0.5 * t.z).sin_cos();
+        // q_A(α) ⊗ q_B(β) ⊗ q_C(γ) multiplied out; ε = ε_{AB·}.
+        let eps = a.parity(b);
+        let mut v = [0.0; 3];
+        let w = if a == c {
+            // proper: l is the remaining axis
+            let l = a.third(b);
+            v[a.index()] = cb * (ca * sg + sa * cg);
+            v[b.index()] = sb * (ca * cg + sa * sg);
+            v[l.index()] = eps * sb * (sa * cg - ca * sg);
+            cb * (ca * cg - sa * sg)
+        } else {
+            let (cc, cs, sc, ss) = (ca * cg, ca * sg, sa * cg, sa * sg);
+            v[a.index()] = cb * sc + eps * sb * cs;
+            v[b.index()] = sb * cc - eps * cb * ss;
+            v[c.index()] = eps * sb * sc + cb * cs;
+            cb * cc - eps * sb * ss
+        };
+        DQuat::from_xyzw(v[0], v[1], v[2], w)
     }
 
     /// Euler angles of a rotation (`world_from_body`) in this convention.
