@@ -50,6 +50,7 @@ impl EulerSequence {
     /// assert!(q.abs_diff_eq(expect, 1e-15));
     /// # Ok::<(), kreisel_kinematics::KinematicsError>(())
     /// ```
+    #[inline]
     pub fn to_quat(self, angles: DVec3) -> DQuat {
         let [a, b, c] = self.intrinsic_axes();
         let t = match self.frame() {
@@ -120,6 +121,7 @@ impl EulerSequence {
     /// assert!((found.angles.y - angles.y).abs() < 1e-15);
     /// # Ok::<(), kreisel_kinematics::KinematicsError>(())
     /// ```
+    #[inline]
     pub fn from_quat(self, world_from_body: DQuat) -> EulerDecomposition {
         let q = world_from_body;
         let [a, b, c] = self.intrinsic_axes();
