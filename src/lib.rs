@@ -17,3 +17,8 @@
 #![forbid(unsafe_code)]
 
 pub use kreisel_kinematics as kinematics;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

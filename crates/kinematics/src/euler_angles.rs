@@ -5,7 +5,7 @@ use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::{DQuat, DVec3};
 
-use crate::euler_sequence::{Axis, EulerSequence, Frame};
+use crate::euler_sequence::{EulerSequence, Frame, gather, scatter};
 
 /// Euler angles recovered from a rotation, with a flag for gimbal lock.
 ///
@@ -60,24 +60,31 @@ impl EulerSequence {
         let (sa, ca) = (0.5 * t.x).sin_cos();
         let (sb, cb) = (0.5 * t.y).sin_cos();
         let (sg, cg) = (0.5 * t.z).sin_cos();
-        // q_A(α) ⊗ q_B(β) ⊗ q_C(γ) multiplied out; ε = ε_{AB·}.
+        // q_A(α) ⊗ q_B(β) ⊗ q_C(γ) multiplied out, written along (A, B, T)
+        // with T the third axis and ε = ε_{ABT}; for Tait–Bryan C = T.
         let eps = a.parity(b);
-        let mut v = [0.0; 3];
-        let w = if a == c {
-            // proper: l is the remaining axis
-            let l = a.third(b);
-            v[a.index()] = cb * (ca * sg + sa * cg);
-            v[b.index()] = sb * (ca * cg + sa * sg);
-            v[l.index()] = eps * sb * (sa * cg - ca * sg);
-            cb * (ca * cg - sa * sg)
+        let (w, u) = if a == c {
+            (
+                cb * (ca * cg - sa * sg),
+                DVec3::new(
+                    cb * (ca * sg + sa * cg),
+                    sb * (ca * cg + sa * sg),
+                    eps * sb * (sa * cg - ca * sg),
+                ),
+            )
         } else {
             let (cc, cs, sc, ss) = (ca * cg, ca * sg, sa * cg, sa * sg);
-            v[a.index()] = cb * sc + eps * sb * cs;
-            v[b.index()] = sb * cc - eps * cb * ss;
-            v[c.index()] = eps * sb * sc + cb * cs;
-            cb * cc - eps * sb * ss
+            (
+                cb * cc - eps * sb * ss,
+                DVec3::new(
+                    cb * sc + eps * sb * cs,
+                    sb * cc - eps * cb * ss,
+                    eps * sb * sc + cb * cs,
+                ),
+            )
         };
-        DQuat::from_xyzw(v[0], v[1], v[2], w)
+        let v = scatter(a, b, u);
+        DQuat::from_xyzw(v.x, v.y, v.z, w)
     }
 
     /// Euler angles of a rotation (`world_from_body`) in this convention.
@@ -125,18 +132,12 @@ impl EulerSequence {
     pub fn from_quat(self, world_from_body: DQuat) -> EulerDecomposition {
         let q = world_from_body;
         let [a, b, c] = self.intrinsic_axes();
-        let comp = |axis: Axis| match axis {
-            Axis::X => q.x,
-            Axis::Y => q.y,
-            Axis::Z => q.z,
-        };
-        let proper = a == c;
-        let eps = a.parity(b);
-        let (x0, x1, y0, y1, sign, offset) = if proper {
-            let l = a.third(b);
-            (q.w, comp(a), comp(b), eps * comp(l), 1.0, 0.0)
+        // Components along (A, B, T), T the third axis; for Tait–Bryan C = T.
+        let (u, eps) = gather(a, b, DVec3::new(q.x, q.y, q.z));
+        let (x0, x1, y0, y1, sign, offset) = if a == c {
+            (q.w, u.x, u.y, eps * u.z, 1.0, 0.0)
         } else {
-            let (qa, qb, qc) = (comp(a), comp(b), eps * comp(c));
+            let (qa, qb, qc) = (u.x, u.y, eps * u.z);
             (q.w - qb, qa - qc, q.w + qb, qa + qc, -eps, -FRAC_PI_2)
         };
         // q is unit (or at least of moderate size): the squares cannot

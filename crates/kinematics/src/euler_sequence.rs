@@ -49,24 +49,13 @@ impl Axis {
         }
     }
 
-    /// The axis that is neither `self` nor `other` (they must differ).
-    #[inline]
-    pub(crate) const fn third(self, other: Axis) -> Axis {
-        match 3 - self.index() - other.index() {
-            0 => Axis::X,
-            1 => Axis::Y,
-            _ => Axis::Z,
-        }
-    }
-
     /// Levi-Civita sign `ε_{self, next, third}`: `+1.0` when `next` follows
     /// `self` cyclically (x→y→z→x), `−1.0` otherwise.
     #[inline]
     pub(crate) const fn parity(self, next: Axis) -> f64 {
-        if (self.index() + 1) % 3 == next.index() {
-            1.0
-        } else {
-            -1.0
+        match (self, next) {
+            (Axis::X, Axis::Y) | (Axis::Y, Axis::Z) | (Axis::Z, Axis::X) => 1.0,
+            _ => -1.0,
         }
     }
 
@@ -91,6 +80,41 @@ impl Axis {
             (Axis::Y, false) => 'y',
             (Axis::Z, false) => 'z',
         }
+    }
+}
+
+/// The components of `v` along `a`, `b` and the remaining axis `t`, and the
+/// Levi-Civita sign `ε_{abt}`. `a` and `b` must differ (for `a = b`, `v` is
+/// returned unchanged with `ε = 1`).
+///
+/// A `match` rather than indexing, so the hot Euler conversions carry no
+/// bounds checks.
+#[inline]
+pub(crate) fn gather(a: Axis, b: Axis, v: DVec3) -> (DVec3, f64) {
+    use Axis::{X, Y, Z};
+    match (a, b) {
+        (X, Y) => (v, 1.0),
+        (Y, Z) => (DVec3::new(v.y, v.z, v.x), 1.0),
+        (Z, X) => (DVec3::new(v.z, v.x, v.y), 1.0),
+        (X, Z) => (DVec3::new(v.x, v.z, v.y), -1.0),
+        (Z, Y) => (DVec3::new(v.z, v.y, v.x), -1.0),
+        (Y, X) => (DVec3::new(v.y, v.x, v.z), -1.0),
+        _ => (v, 1.0),
+    }
+}
+
+/// The inverse of [`gather`]: the vector whose components along `a`, `b`
+/// and the remaining axis are `u.x`, `u.y`, `u.z`.
+#[inline]
+pub(crate) fn scatter(a: Axis, b: Axis, u: DVec3) -> DVec3 {
+    use Axis::{X, Y, Z};
+    match (a, b) {
+        (Y, Z) => DVec3::new(u.z, u.x, u.y),
+        (Z, X) => DVec3::new(u.y, u.z, u.x),
+        (X, Z) => DVec3::new(u.x, u.z, u.y),
+        (Z, Y) => DVec3::new(u.z, u.y, u.x),
+        (Y, X) => DVec3::new(u.y, u.x, u.z),
+        _ => u,
     }
 }
 
@@ -354,6 +378,20 @@ mod tests {
         assert_eq!(Axis::Z.parity(Axis::X), 1.0);
         assert_eq!(Axis::Y.parity(Axis::X), -1.0);
         assert_eq!(Axis::X.parity(Axis::Z), -1.0);
-        assert_eq!(Axis::X.third(Axis::Z), Axis::Y);
+        for a in Axis::ALL {
+            for b in Axis::ALL {
+                if a == b {
+                    continue;
+                }
+                let v = DVec3::new(1.0, 2.0, 3.0);
+                let (u, eps) = gather(a, b, v);
+                assert_eq!(eps, a.parity(b));
+                assert_eq!((u.x, u.y), (v[a.index()], v[b.index()]));
+                assert_eq!(scatter(a, b, u), v);
+                // (a, b, third) is right-handed times ε.
+                let third = a.unit().cross(b.unit()) * eps;
+                assert_eq!(u.z, v.dot(third));
+            }
+        }
     }
 }
