@@ -111,7 +111,11 @@ fn main() {
     ];
     print!("| library | sequences |");
     for d in deltas {
-        print!(" δ = {d:e} |");
+        if d == 0.0 {
+            print!(" at the lock |");
+        } else {
+            print!(" δ = {d:e} |");
+        }
     }
     println!();
     println!("|---|---|{}", "---|".repeat(deltas.len()));
