@@ -15,27 +15,13 @@
 use std::f64::consts::PI;
 use std::panic;
 
-use glam::{DQuat, DVec3, EulerRot};
+use glam::{DQuat, DVec3};
+
+#[path = "support/glam_euler.rs"]
+mod glam_euler;
+use glam_euler::glam_rot;
 use kreisel::kinematics::{EulerSequence, Frame, rotation_angle_between};
 use nalgebra::{Quaternion, Rotation3, Unit, UnitQuaternion, Vector3};
-
-/// glam's name for a kreisel convention.
-fn glam_rot(seq: EulerSequence) -> EulerRot {
-    use EulerRot::*;
-    let name = seq.to_string().to_uppercase();
-    let intrinsic = [XYZ, XZY, YXZ, YZX, ZXY, ZYX, XYX, XZX, YXY, YZY, ZXZ, ZYZ];
-    let extrinsic = [
-        XYZEx, XZYEx, YXZEx, YZXEx, ZXYEx, ZYXEx, XYXEx, XZXEx, YXYEx, YZYEx, ZXZEx, ZYZEx,
-    ];
-    let names = [
-        "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ",
-    ];
-    let i = names.iter().position(|n| *n == name).unwrap_or(0);
-    match seq.frame() {
-        Frame::Intrinsic => intrinsic[i],
-        Frame::Extrinsic => extrinsic[i],
-    }
-}
 
 fn kreisel_angles(seq: EulerSequence, q: DQuat) -> Option<DVec3> {
     Some(seq.from_quat(q).angles)

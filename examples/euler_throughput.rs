@@ -24,35 +24,12 @@ use std::hint::black_box;
 use std::process::ExitCode;
 use std::time::Instant;
 
-use glam::{DQuat, DVec3, EulerRot};
-use kreisel::kinematics::{EulerSequence, Frame};
+use glam::{DQuat, DVec3};
 
-fn glam_rot(seq: EulerSequence) -> EulerRot {
-    use EulerRot::*;
-    let table = [
-        ("XYZ", XYZ, XYZEx),
-        ("XZY", XZY, XZYEx),
-        ("YXZ", YXZ, YXZEx),
-        ("YZX", YZX, YZXEx),
-        ("ZXY", ZXY, ZXYEx),
-        ("ZYX", ZYX, ZYXEx),
-        ("XYX", XYX, XYXEx),
-        ("XZX", XZX, XZXEx),
-        ("YXY", YXY, YXYEx),
-        ("YZY", YZY, YZYEx),
-        ("ZXZ", ZXZ, ZXZEx),
-        ("ZYZ", ZYZ, ZYZEx),
-    ];
-    let name = seq.to_string().to_uppercase();
-    let (_, intrinsic, extrinsic) = table
-        .into_iter()
-        .find(|(n, _, _)| *n == name)
-        .unwrap_or(table[0]);
-    match seq.frame() {
-        Frame::Intrinsic => intrinsic,
-        Frame::Extrinsic => extrinsic,
-    }
-}
+#[path = "support/glam_euler.rs"]
+mod glam_euler;
+use glam_euler::glam_rot;
+use kreisel::kinematics::EulerSequence;
 
 /// Smoothly varying angles covering the whole range.
 fn angles(i: u64) -> DVec3 {
