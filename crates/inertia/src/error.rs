@@ -1,0 +1,95 @@
+//! The one error type of `kreisel-inertia`.
+
+use std::path::PathBuf;
+
+use crate::io::MeshFormat;
+
+/// Everything that can go wrong when loading a mesh or computing mass properties.
+///
+/// Each variant carries what a person needs to fix the input: the file, the
+/// index of the offending vertex or triangle, the value and the limit.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum InertiaError {
+    /// A file could not be read.
+    #[error("cannot read {}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+    /// The file's extension names no mesh format kreisel reads.
+    #[error("{}: unknown mesh format (expected .stl, .obj, .ply, .gltf or .glb)", path.display())]
+    UnknownFormat {
+        /// The file.
+        path: PathBuf,
+    },
+    /// The file is not a valid mesh of its format.
+    #[error("{}: invalid {format} file: {reason}", path.display())]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// The format it was read as.
+        format: MeshFormat,
+        /// What is wrong, as precisely as the parser says.
+        reason: String,
+    },
+    /// A mesh without vertices or triangles.
+    #[error("mesh is empty ({vertices} vertices, {triangles} triangles)")]
+    EmptyMesh {
+        /// Number of vertices.
+        vertices: usize,
+        /// Number of triangles.
+        triangles: usize,
+    },
+    /// A vertex coordinate is NaN or infinite.
+    #[error("vertex {vertex} has a non-finite coordinate")]
+    NonFiniteVertex {
+        /// 0-based vertex index.
+        vertex: usize,
+    },
+    /// A triangle refers to a vertex that does not exist.
+    #[error(
+        "triangle {triangle} refers to vertex {index}, but the mesh has {vertex_count} vertices"
+    )]
+    IndexOutOfRange {
+        /// 0-based triangle index.
+        triangle: usize,
+        /// The offending vertex index.
+        index: u64,
+        /// Number of vertices in the mesh.
+        vertex_count: usize,
+    },
+    /// The surface is not closed, so it encloses no volume.
+    #[error(
+        "mesh is open: {boundary_edges} boundary edges (edges used by only one triangle); it encloses no volume (use a shell model or the convex hull instead)"
+    )]
+    OpenMesh {
+        /// Number of edges used by exactly one triangle.
+        boundary_edges: usize,
+    },
+    /// Some edges are shared by more than two triangles.
+    #[error("mesh is not manifold: {edges} edges are shared by more than two triangles")]
+    NonManifold {
+        /// Number of such edges.
+        edges: usize,
+    },
+    /// The mesh encloses no volume (all triangles degenerate or cancelling).
+    #[error("mesh encloses zero volume")]
+    ZeroVolume,
+    /// A physical quantity that must be positive and finite is not.
+    #[error("{quantity} must be positive and finite, got {value}")]
+    NonPositive {
+        /// What it is (`"density"`, `"mass"`, `"thickness"`, …).
+        quantity: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// An inertia tensor that no physical body has.
+    #[error("inertia tensor is not physical: {reason}")]
+    UnphysicalInertia {
+        /// Why (not symmetric, not positive definite, triangle inequality broken).
+        reason: String,
+    },
+}

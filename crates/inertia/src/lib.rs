@@ -1,0 +1,30 @@
+//! # kreisel-inertia
+//!
+//! Mass properties of rigid bodies: mass, centre of mass, inertia tensor
+//! about the centre of mass, principal moments and axes; for primitives in
+//! closed form, point masses, compounds of parts, and closed triangle meshes
+//! by exact polyhedral integration.
+//!
+//! ## Conventions
+//! - SI units; tensors are about the centre of mass unless a name says
+//!   otherwise (`inertia_about_point`), with elements
+//!   `I_ab = Σ m (r² δ_ab − r_a r_b)` (so products of inertia carry their
+//!   minus sign inside the tensor).
+//! - Principal frames are right-handed; `principal_orientation` maps
+//!   principal-frame coordinates to body (mesh) coordinates.
+#![deny(missing_docs)]
+#![forbid(unsafe_code)]
+
+mod error;
+pub mod io;
+mod mass_properties;
+mod mesh_integration;
+mod primitives;
+mod principal_axes;
+mod tri_mesh;
+
+pub use error::InertiaError;
+pub use mass_properties::MassProperties;
+pub use mesh_integration::MeshMoments;
+pub use principal_axes::PrincipalAxes;
+pub use tri_mesh::TriMesh;
