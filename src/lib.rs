@@ -5,6 +5,8 @@
 //!
 //! - [`kinematics`]: quaternions, rotation matrices, axis–angle, rotation
 //!   vectors, all 24 Euler conventions, Euler rates ⇄ angular velocity.
+//! - [`inertia`]: mass, centre of mass, inertia tensor and principal axes of
+//!   primitives, point masses, compounds and closed triangle meshes.
 //!
 //! ```
 //! use kreisel::kinematics::{EulerSequence, glam::DVec3};
@@ -16,6 +18,7 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub use kreisel_inertia as inertia;
 pub use kreisel_kinematics as kinematics;
 
 /// The README's examples, compiled and run as doctests.

@@ -1,5 +1,8 @@
-//! Shared test problems: the committed reference data under `tests/data/`.
+//! Shared test problems: the committed reference data under `tests/data/`,
+//! and meshes of primitive solids ([`shapes`]).
 #![allow(dead_code)]
+
+pub mod shapes;
 
 use std::path::PathBuf;
 

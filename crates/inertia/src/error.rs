@@ -75,6 +75,22 @@ pub enum InertiaError {
         /// Number of such edges.
         edges: usize,
     },
+    /// A connected surface cannot be oriented consistently (a Möbius strip or
+    /// Klein bottle).
+    #[error(
+        "mesh is not orientable: a connected surface of {triangles} triangles has no consistent winding"
+    )]
+    NonOrientable {
+        /// Number of triangles in the offending surface (as far as explored).
+        triangles: usize,
+    },
+    /// The convex hull of the points could not be built (fewer than four
+    /// points, or all of them in one plane).
+    #[error("convex hull is degenerate: {reason}")]
+    DegenerateHull {
+        /// Why, as the hull algorithm says.
+        reason: String,
+    },
     /// The mesh encloses no volume (all triangles degenerate or cancelling).
     #[error("mesh encloses zero volume")]
     ZeroVolume,

@@ -18,13 +18,21 @@
 mod error;
 pub mod io;
 mod mass_properties;
+mod mesh_check;
 mod mesh_integration;
+mod mesh_mass;
+mod parry_interop;
 mod primitives;
 mod principal_axes;
 mod tri_mesh;
 
 pub use error::InertiaError;
 pub use mass_properties::MassProperties;
+pub use mesh_check::{CheckedMesh, MeshWarning, prepare_shell, prepare_solid};
 pub use mesh_integration::MeshMoments;
+pub use mesh_mass::{MassModel, Material, MeshMassReport, mesh_mass_properties};
+pub use parry_interop::{
+    convex_hull, from_parry, from_parry_mass_properties, parry_mass_properties, to_parry,
+};
 pub use principal_axes::PrincipalAxes;
 pub use tri_mesh::TriMesh;

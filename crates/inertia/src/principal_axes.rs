@@ -183,7 +183,11 @@ mod tests {
             let p = PrincipalAxes::from_tensor(tensor);
             // Backward stable: a few ulps of the largest moment.
             let tol = 8.0 * f64::EPSILON * 5.0;
-            assert!((p.moments - d).abs().max_element() < tol, "{split}: {}", p.moments);
+            assert!(
+                (p.moments - d).abs().max_element() < tol,
+                "{split}: {}",
+                p.moments
+            );
             assert!(max_abs(reconstruct(&p) - tensor) < tol);
             let orth = p.axes.transpose() * p.axes - DMat3::IDENTITY;
             assert!(max_abs(orth) < 4.0 * f64::EPSILON);

@@ -81,6 +81,15 @@ impl TriMesh {
         }
     }
 
+    /// Builds a mesh from parts already known to be valid (indices in range,
+    /// coordinates finite), e.g. a checked mesh with triangles removed.
+    pub(crate) fn from_checked_parts(vertices: Vec<DVec3>, triangles: Vec<[u32; 3]>) -> Self {
+        Self {
+            vertices,
+            triangles,
+        }
+    }
+
     /// The vertex positions.
     pub fn vertices(&self) -> &[DVec3] {
         &self.vertices

@@ -464,8 +464,10 @@ def write_stl_binary(mesh, path, header):
 
 def write_stl_ascii(mesh, path, solid_name):
     def g(x):
-        s = "%.9g" % x
-        assert f32(float(s)) == x, (x, s)
+        # Shortest decimal of the float32 value held as a double: it parses
+        # back to exactly that value whether a reader uses f32 or f64.
+        s = repr(float(x))
+        assert float(s) == x and f32(float(s)) == x, (x, s)
         return s
     lines = ["solid " + solid_name]
     for f in mesh.faces:
@@ -898,7 +900,8 @@ to z = 50 mm (%d vertices, %d triangles). Profile (radius, height) in mm:
 %s. `top.stl` is binary STL (float32 coordinates; the generator rounds every
 vertex to float32 first and computes the reference from those values);
 `top_ascii.stl` is the same triangles as ASCII STL with coordinates written as
-`%%.9g` of the float32 values, which round-trip exactly. The ring vertices are
+the shortest decimals of the float32 values (as doubles), which parse back
+exactly whether read as float32 or float64. The ring vertices are
 octant-symmetric bit for bit, so the products of inertia vanish exactly and the
 two transverse moments are exactly equal (a symmetric top).
 
