@@ -9,8 +9,10 @@ use std::fmt;
 use std::io;
 use std::path::PathBuf;
 
+use kreisel_inertia::InertiaError;
 use kreisel_kinematics::KinematicsError;
 
+use crate::numbers::Shortest;
 use crate::representation::Representation;
 
 /// Exit status for errors in the data or in the files (clap uses 2 for usage errors).
@@ -150,6 +152,80 @@ pub enum CliError {
         /// What is wrong with it.
         problem: LineProblem,
     },
+    /// A mesh file cannot be read or parsed (the library's message names the file).
+    #[error("{}", one_line(&source.to_string()))]
+    LoadMesh {
+        /// The library's description of the problem.
+        source: InertiaError,
+    },
+    /// A mesh file that parses but holds no body with triangles.
+    #[error("{}: the file holds no mesh bodies", path.display())]
+    NoBodies {
+        /// The mesh file.
+        path: PathBuf,
+    },
+    /// One body of a mesh file has no mass properties under the chosen model.
+    #[error("{}: body '{}': {}", path.display(), one_line(body), problem)]
+    Body {
+        /// The mesh file.
+        path: PathBuf,
+        /// The body's name in the file.
+        body: String,
+        /// What went wrong.
+        problem: BodyProblem,
+    },
+    /// `--mass` cannot be spread over the bodies: their total volume is too
+    /// small (or too large) for a finite positive density.
+    #[error(
+        "{}: total volume {} m^3 gives no finite positive density for --mass {} kg",
+        path.display(),
+        Shortest(*volume),
+        Shortest(*mass)
+    )]
+    DerivedDensity {
+        /// The mesh file.
+        path: PathBuf,
+        /// The total mass asked for, kg.
+        mass: f64,
+        /// The total volume of the bodies, m³.
+        volume: f64,
+    },
+}
+
+/// Why the mass properties of one body of a mesh file cannot be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum BodyProblem {
+    /// Scaling made a coordinate overflow to infinity.
+    #[error("coordinates overflow when scaled by {}", Shortest(*scale))]
+    ScaleOverflow {
+        /// The scale factor.
+        scale: f64,
+    },
+    /// The library rejected the body; for surfaces that enclose no well-defined
+    /// volume the message says which options model them anyway.
+    #[error("{}{}", one_line(&source.to_string()), solid_hint(source))]
+    Inertia {
+        /// The library's description of the problem.
+        #[from]
+        source: InertiaError,
+    },
+}
+
+/// What to try when a mesh is no closed, orientable, manifold surface.
+fn solid_hint(error: &InertiaError) -> &'static str {
+    match error {
+        InertiaError::OpenMesh { .. }
+        | InertiaError::NonManifold { .. }
+        | InertiaError::NonOrientable { .. } => {
+            "; rerun with --shell (thin shell, see --thickness) or --hull (solid convex hull)"
+        }
+        _ => "",
+    }
+}
+
+/// The text with line breaks replaced by spaces, so an error stays one line.
+pub fn one_line(text: &str) -> String {
+    text.replace(['\r', '\n'], " ")
 }
 
 /// `path` for a file, `standard` for a standard stream.
@@ -223,5 +299,26 @@ mod tests {
         };
         assert!(pipe(Stream::Standard).is_broken_pipe());
         assert!(!pipe(Stream::File(PathBuf::from("x"))).is_broken_pipe());
+    }
+
+    #[test]
+    fn open_mesh_error_names_file_body_and_options() {
+        let e = CliError::Body {
+            path: PathBuf::from("part.obj"),
+            body: "lid\nx".into(),
+            problem: BodyProblem::from(InertiaError::OpenMesh { boundary_edges: 4 }),
+        };
+        let text = e.to_string();
+        assert!(
+            text.starts_with("part.obj: body 'lid x': mesh is open: 4 boundary edges"),
+            "{text}"
+        );
+        assert!(
+            text.contains("--shell") && text.contains("--hull"),
+            "{text}"
+        );
+        assert!(!text.contains('\n'));
+        let e = BodyProblem::from(InertiaError::ZeroVolume);
+        assert!(!e.to_string().contains("--hull"));
     }
 }

@@ -9,6 +9,7 @@
 
 mod convert;
 mod error;
+mod inertia;
 mod numbers;
 mod representation;
 
@@ -19,9 +20,21 @@ use clap::{Parser, Subcommand};
 
 use crate::error::CliError;
 
+/// The `--help` text after the subcommand list.
+const AFTER_HELP: &str = "\
+Examples:
+  echo '0 0 1.5707963267948966' | kreisel convert --from rotvec --to quat
+  kreisel inertia part.stl --units mm --density 2700
+  kreisel inertia assets/t_handle.obj --format urdf";
+
 /// Rigid-body rotations from the command line.
 #[derive(Debug, Parser)]
-#[command(name = "kreisel", version, propagate_version = true)]
+#[command(
+    name = "kreisel",
+    version,
+    propagate_version = true,
+    after_help = AFTER_HELP
+)]
 struct Cli {
     /// What to do.
     #[command(subcommand)]
@@ -34,12 +47,16 @@ enum Command {
     /// Convert rotations between representations (quaternion, matrix, rotation vector,
     /// axis-angle, Euler angles), one per line
     Convert(convert::ConvertArgs),
+    /// Mass, centre of mass, inertia tensor and principal axes of a mesh file
+    /// (STL, OBJ, PLY, glTF), as text, JSON, URDF, SDFormat or MJCF
+    Inertia(inertia::InertiaArgs),
 }
 
 /// Runs the chosen subcommand.
 fn dispatch(command: &Command) -> Result<(), CliError> {
     match command {
         Command::Convert(args) => convert::run(args),
+        Command::Inertia(args) => inertia::run(args),
     }
 }
 
@@ -93,11 +110,47 @@ mod tests {
             "--degrees",
         ])
         .unwrap();
-        let Command::Convert(args) = cli.command;
+        let Command::Convert(args) = cli.command else {
+            panic!("not convert: {:?}", cli.command);
+        };
         assert_eq!(args.from.to_string(), "euler:zxz");
         assert!(args.degrees && args.input.is_none());
         let e = Cli::try_parse_from(["kreisel", "convert", "--from", "quaternion", "--to", "quat"])
             .unwrap_err();
         assert_eq!(e.exit_code(), 2);
+    }
+
+    #[test]
+    fn parses_inertia_arguments_and_conflicts() {
+        let parse = |args: &[&str]| {
+            let mut all = vec!["kreisel", "inertia"];
+            all.extend_from_slice(args);
+            Cli::try_parse_from(all)
+        };
+        let cli = parse(&["m.stl", "--units", "mm", "--shell", "--thickness", "2e-3"]).unwrap();
+        let Command::Inertia(args) = cli.command else {
+            panic!("not inertia");
+        };
+        let setup = args.setup();
+        assert_eq!(
+            (setup.scale, setup.units_text()),
+            (0.001, "mm (scale 0.001)".into())
+        );
+        assert_eq!(setup.model_text(), "shell of thickness 0.002 m");
+        for bad in [
+            &["m.stl", "--density", "1", "--mass", "2"][..],
+            &["m.stl", "--scale", "2", "--units", "cm"],
+            &["m.stl", "--thickness", "0.1"],
+            &["m.stl", "--shell", "--hull"],
+            &["m.stl", "--density", "-1"],
+            &["m.stl", "--scale", "0"],
+            &["m.stl", "--format", "xml"],
+            &["m.stl", "--units", "ft"],
+        ] {
+            let e = parse(bad).unwrap_err();
+            assert_eq!(e.exit_code(), 2, "{bad:?}");
+        }
+        let help = Cli::command().render_help().to_string();
+        assert!(help.contains("kreisel inertia"), "{help}");
     }
 }

@@ -9,6 +9,7 @@
 
 #![forbid(unsafe_code)]
 
+use core::fmt;
 use std::io::{self, Write};
 
 use crate::error::LineProblem;
@@ -109,16 +110,31 @@ pub fn write_numbers<W: Write + ?Sized>(out: &mut W, numbers: &[f64]) -> io::Res
         if n > 0 {
             out.write_all(b",")?;
         }
-        // −0 + 0 = +0 in round-to-nearest; every other value is unchanged.
-        let value = value + 0.0;
-        let magnitude = value.abs();
-        if magnitude != 0.0 && !(1e-4..1e16).contains(&magnitude) {
-            write!(out, "{value:e}")?;
-        } else {
-            write!(out, "{value}")?;
-        }
+        write!(out, "{}", Shortest(value))?;
     }
     out.write_all(b"\n")
+}
+
+/// One number in shortest round-trip form, as [`write_numbers`] writes it.
+///
+/// `{}` (`0.25`, `-3`), or `{:e}` (`1.5e-300`) when `|x| < 1e-4` or
+/// `|x| ≥ 1e16`; a negative zero is written as `0`. Non-finite values are
+/// written as Rust does (`NaN`, `inf`): callers that need a strict syntax
+/// (JSON) check finiteness first.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shortest(pub f64);
+
+impl fmt::Display for Shortest {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // −0 + 0 = +0 in round-to-nearest; every other value is unchanged.
+        let value = self.0 + 0.0;
+        let magnitude = value.abs();
+        if magnitude != 0.0 && magnitude.is_finite() && !(1e-4..1e16).contains(&magnitude) {
+            write!(f, "{value:e}")
+        } else {
+            write!(f, "{value}")
+        }
+    }
 }
 
 #[cfg(test)]
@@ -192,5 +208,17 @@ mod tests {
         let text = String::from_utf8(out).unwrap();
         let back: Vec<f64> = text.trim().split(',').map(|t| t.parse().unwrap()).collect();
         assert_eq!(back, values);
+    }
+
+    #[test]
+    fn shortest_matches_write_numbers() {
+        let shown: Vec<String> = [1.0, -0.0, 2.5e-300, 1.5e16, 0.1 + 0.2]
+            .iter()
+            .map(|&x| Shortest(x).to_string())
+            .collect();
+        assert_eq!(
+            shown,
+            ["1", "0", "2.5e-300", "1.5e16", "0.30000000000000004"]
+        );
     }
 }

@@ -1,0 +1,287 @@
+//! `kreisel inertia`: mass, centre of mass, inertia tensor and principal
+//! axes of the bodies in a mesh file, as text, JSON, or a URDF, SDFormat or
+//! MJCF `<inertial>` element.
+//!
+//! The options become a [`Setup`] (units, model, material), the library
+//! loads and integrates each body ([`compute`]), and one of the writers
+//! ([`text`], [`json`], [`xml`]) renders the [`Report`]. Mesh repairs are
+//! warnings: written to standard error and into the report, exit status 0.
+
+#![forbid(unsafe_code)]
+
+mod compute;
+mod json;
+mod text;
+mod xml;
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use kreisel_inertia::MassModel;
+
+use crate::error::{CliError, Stream, one_line};
+
+pub use compute::{DensityChoice, Report, Setup, Summary, compute};
+
+/// Wall thickness of `--shell` without `--thickness`, m.
+pub const DEFAULT_THICKNESS: f64 = 0.001;
+
+/// Density without `--density` or `--mass`: water, kg/m³.
+pub const DEFAULT_DENSITY: f64 = 1000.0;
+
+/// The `--help` text of `kreisel inertia` after the option list.
+const AFTER_LONG_HELP: &str = "\
+Conventions:
+  Everything is in SI units after scaling: coordinates in m, mass in kg,
+  inertia in kg m^2. The tensor is about the centre of mass in the mesh axes,
+  I_ab = sum m (r^2 delta_ab - r_a r_b), so its off-diagonal elements carry
+  the minus sign (I_xy = -sum m x y), as URDF, SDFormat and MuJoCo expect.
+  Principal moments ascend; the principal axes are unit vectors in mesh
+  coordinates and form a right-handed frame; the principal orientation is the
+  quaternion w,x,y,z that maps principal-frame coordinates to mesh coordinates.
+
+Bodies:
+  Every object/group of an OBJ file, solid of an ASCII STL file and mesh of a
+  glTF scene is one body; all are in the mesh frame, and the assembly is their
+  rigid sum. --mass is the mass of the assembly: one density, mass / total
+  volume, is applied to every body. URDF, SDFormat and MJCF output is the
+  assembly's inertial.
+
+Meshes:
+  A solid needs a closed surface. Inconsistent winding, inside-out surfaces
+  and degenerate triangles are repaired with a warning on standard error; an
+  open mesh is an error: model it with --shell (a thin wall of --thickness T)
+  or --hull (the solid convex hull of the vertices).
+
+Examples:
+  kreisel inertia part.stl --units mm --density 2700
+  kreisel inertia assets/t_handle.obj --format urdf
+  kreisel inertia scan.ply --hull --mass 0.35 --format json";
+
+/// Arguments of `kreisel inertia`.
+#[derive(Debug, Clone, clap::Args)]
+#[command(after_long_help = AFTER_LONG_HELP)]
+pub struct InertiaArgs {
+    /// Mesh file: .stl (binary or ASCII), .obj, .ply, .gltf or .glb
+    #[arg(value_name = "MESH")]
+    pub mesh: PathBuf,
+
+    /// Uniform density in kg/m^3 [default: 1000, water]
+    #[arg(long, value_name = "RHO", value_parser = parse_density, allow_hyphen_values = true)]
+    pub density: Option<f64>,
+
+    /// Total mass of the whole file in kg; the density follows from the total volume
+    #[arg(
+        long,
+        value_name = "M",
+        value_parser = parse_mass,
+        allow_hyphen_values = true,
+        conflicts_with = "density"
+    )]
+    pub mass: Option<f64>,
+
+    /// Multiply every coordinate by S to get metres [default: 1]
+    #[arg(long, value_name = "S", value_parser = parse_scale, allow_hyphen_values = true)]
+    pub scale: Option<f64>,
+
+    /// Length unit of the mesh coordinates (the same as --scale 0.001, 0.01, 1, 0.0254) [default: m]
+    #[arg(long, value_name = "UNIT", value_enum, conflicts_with = "scale")]
+    pub units: Option<Units>,
+
+    /// Model the surface as a thin shell of uniform thickness (open meshes allowed)
+    #[arg(long, conflicts_with = "hull")]
+    pub shell: bool,
+
+    /// Shell wall thickness in metres, after scaling [default: 0.001]
+    #[arg(
+        long,
+        value_name = "T",
+        value_parser = parse_thickness,
+        allow_hyphen_values = true,
+        requires = "shell"
+    )]
+    pub thickness: Option<f64>,
+
+    /// Model each body as the solid convex hull of its vertices
+    #[arg(long)]
+    pub hull: bool,
+
+    /// Output format
+    #[arg(long, value_name = "FORMAT", value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+}
+
+/// The length unit of the mesh coordinates (`--units`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Units {
+    /// Millimetres.
+    Mm,
+    /// Centimetres.
+    Cm,
+    /// Metres.
+    M,
+    /// Inches.
+    In,
+}
+
+impl Units {
+    /// Metres per unit.
+    pub const fn scale(self) -> f64 {
+        match self {
+            Units::Mm => 0.001,
+            Units::Cm => 0.01,
+            Units::M => 1.0,
+            Units::In => 0.0254,
+        }
+    }
+
+    /// The unit's symbol, as given to `--units`.
+    pub const fn symbol(self) -> &'static str {
+        match self {
+            Units::Mm => "mm",
+            Units::Cm => "cm",
+            Units::M => "m",
+            Units::In => "in",
+        }
+    }
+}
+
+/// What `kreisel inertia` writes (`--format`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// A readable report of every body and the assembly.
+    Text,
+    /// One JSON object: the assembly, with every body under `bodies`.
+    Json,
+    /// A URDF `<inertial>` element of the assembly.
+    Urdf,
+    /// An SDFormat `<inertial>` element of the assembly.
+    Sdf,
+    /// A MuJoCo MJCF `<inertial>` element of the assembly.
+    Mjcf,
+}
+
+/// A positive finite number, or a message saying what `quantity` must be.
+fn parse_positive(text: &str, quantity: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 => Ok(v),
+        Ok(_) => Err(format!("{quantity} must be a positive finite number")),
+        Err(e) => Err(format!("{quantity} must be a positive finite number ({e})")),
+    }
+}
+
+/// `--density`: kg/m³, positive and finite.
+fn parse_density(text: &str) -> Result<f64, String> {
+    parse_positive(text, "density (kg/m^3)")
+}
+
+/// `--mass`: kg, positive and finite.
+fn parse_mass(text: &str) -> Result<f64, String> {
+    parse_positive(text, "mass (kg)")
+}
+
+/// `--scale`: metres per mesh unit, positive and finite.
+fn parse_scale(text: &str) -> Result<f64, String> {
+    parse_positive(text, "scale (metres per mesh unit)")
+}
+
+/// `--thickness`: m, positive and finite.
+fn parse_thickness(text: &str) -> Result<f64, String> {
+    parse_positive(text, "thickness (m)")
+}
+
+impl InertiaArgs {
+    /// The units, model and material these options choose.
+    pub fn setup(&self) -> Setup {
+        let (units, scale) = match (self.units, self.scale) {
+            (_, Some(s)) => (None, s),
+            (Some(u), None) => (Some(u), u.scale()),
+            (None, None) => (Some(Units::M), 1.0),
+        };
+        let model = if self.shell {
+            MassModel::Shell {
+                thickness: self.thickness.unwrap_or(DEFAULT_THICKNESS),
+            }
+        } else if self.hull {
+            MassModel::ConvexHull
+        } else {
+            MassModel::Solid
+        };
+        let density = match (self.mass, self.density) {
+            (Some(m), _) => DensityChoice::TotalMass(m),
+            (None, Some(d)) => DensityChoice::Given(d),
+            (None, None) => DensityChoice::Default,
+        };
+        Setup {
+            file: self.mesh.clone(),
+            units,
+            scale,
+            model,
+            density,
+        }
+    }
+}
+
+/// Runs `kreisel inertia`: loads, integrates, warns, and writes the report.
+///
+/// # Errors
+/// [`CliError::LoadMesh`] for a file that cannot be read or parsed,
+/// [`CliError::Body`] for a body without mass properties (an open mesh
+/// without `--shell` or `--hull`, …), [`CliError::DerivedDensity`],
+/// [`CliError::Write`] when standard output fails.
+pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
+    let report = compute(args.setup())?;
+    let mut stderr = std::io::stderr();
+    for body in &report.bodies {
+        for warning in &body.warnings {
+            // Like main's error line: never fail because stderr is closed.
+            let _ = writeln!(
+                stderr,
+                "kreisel: warning: {}: body '{}': {}",
+                report.setup.file.display(),
+                one_line(&body.name),
+                warning
+            );
+        }
+    }
+    let output = match args.format {
+        Format::Text => text::render(&report),
+        Format::Json => json::render(&report),
+        Format::Urdf => xml::urdf(&report),
+        Format::Sdf => xml::sdf(&report),
+        Format::Mjcf => xml::mjcf(&report),
+    };
+    let mut stdout = std::io::stdout().lock();
+    stdout
+        .write_all(output.as_bytes())
+        .and_then(|()| stdout.flush())
+        .map_err(|source| CliError::Write {
+            output: Stream::Standard,
+            source,
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn positive_values_only() {
+        assert_eq!(parse_density("1000"), Ok(1000.0));
+        assert_eq!(parse_scale(" 1e-3 "), Ok(0.001));
+        for bad in ["0", "-1", "nan", "inf", "-0", "1e999", "x"] {
+            let e = parse_mass(bad).unwrap_err();
+            assert!(
+                e.starts_with("mass (kg) must be a positive finite number"),
+                "{bad}: {e}"
+            );
+        }
+    }
+
+    #[test]
+    fn units_are_scales() {
+        assert_eq!(Units::Mm.scale(), 0.001);
+        assert_eq!(Units::In.scale(), 0.0254);
+        assert_eq!(Units::Cm.symbol(), "cm");
+    }
+}

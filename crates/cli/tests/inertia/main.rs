@@ -1,0 +1,11 @@
+//! Integration tests of `kreisel inertia`, run through the real binary.
+//!
+//! Run with `cargo test -p kreisel-cli --test inertia -- --nocapture` to see
+//! the largest errors measured against the exact reference values.
+
+mod assets;
+mod errors;
+mod meshes;
+mod options;
+mod reference;
+mod support;
