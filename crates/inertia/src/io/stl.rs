@@ -1,0 +1,271 @@
+//! STL, binary and ASCII, parsed here rather than by `stl_io`.
+//!
+//! Binary: an 80-byte header, a little-endian `u32` triangle count `n`, then
+//! `n` records of 50 bytes (normal, three vertices as `f32`, two attribute
+//! bytes). The file length must be exactly `84 + 50·n`: a count that
+//! disagrees with the length (a "lying header", a truncated file, trailing
+//! bytes) is an error, so nothing is ever allocated from the count alone.
+//! Normals and attribute bytes are ignored; winding defines orientation.
+//!
+//! ASCII: `solid [name]`, facets of `facet normal …`, `outer loop`, three
+//! (or more, fan-triangulated) `vertex x y z` lines, `endloop`, `endfacet`,
+//! and `endsolid`. Keywords are case-insensitive, coordinates are parsed as
+//! `f64`, and several solids in one file become several bodies.
+//!
+//! Which one: a file whose length matches its binary count is binary, unless
+//! it starts with `solid` and is entirely printable ASCII text; otherwise a
+//! file starting with `solid` is ASCII. (`stl_io` was not used: it decides by
+//! the `solid ` prefix alone, so binary files whose header starts with
+//! `solid` fail, it rejects a bare `solid` line, reads ASCII as `f32` and
+//! drops the solid's name.)
+
+use glam::DVec3;
+
+use super::{Body, Source, vertex_index};
+use crate::InertiaError;
+
+/// Bytes before the first binary triangle record.
+const HEADER: usize = 84;
+/// Bytes per binary triangle record.
+const RECORD: usize = 50;
+
+/// Loads the solids of an STL file.
+pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
+    let count = binary_count(bytes);
+    let exact = count.is_some_and(|n| binary_len(n) == bytes.len() as u64);
+    let solid = starts_with_solid(bytes);
+    if exact && !(solid && is_text(bytes)) {
+        let (vertices, triangles) = parse_binary(bytes).map_err(|r| src.error(r))?;
+        return Ok(vec![src.body(
+            src.stem().to_owned(),
+            vertices,
+            triangles,
+        )?]);
+    }
+    if solid {
+        let solids = parse_ascii(bytes).map_err(|reason| match count {
+            Some(n) if !is_text(bytes) => src.error(format!(
+                "{reason} (read as binary instead, its header declares {n} triangles, \
+                 which need {} bytes, but the file has {})",
+                binary_len(n),
+                bytes.len()
+            )),
+            _ => src.error(reason),
+        })?;
+        return solids
+            .into_iter()
+            .map(|s| {
+                let name = if s.name.is_empty() {
+                    src.stem().to_owned()
+                } else {
+                    s.name
+                };
+                src.body(name, s.vertices, s.triangles)
+            })
+            .collect();
+    }
+    Err(src.error(match count {
+        _ if bytes.is_empty() => "the file is empty".to_owned(),
+        Some(n) => format!(
+            "binary STL header declares {n} triangles, which need {} bytes, but the file has {} \
+             (and it does not start with 'solid', so it is not ASCII STL)",
+            binary_len(n),
+            bytes.len()
+        ),
+        None => format!(
+            "{} bytes are too few for a binary STL (at least {HEADER}) and the file does not \
+             start with 'solid', so it is not ASCII STL",
+            bytes.len()
+        ),
+    }))
+}
+
+/// The triangle count of a binary header, if the file is long enough to have one.
+fn binary_count(bytes: &[u8]) -> Option<u32> {
+    let c = bytes.get(80..HEADER)?;
+    Some(u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+}
+
+/// The exact length of a binary STL with `n` triangles.
+fn binary_len(n: u32) -> u64 {
+    HEADER as u64 + RECORD as u64 * u64::from(n)
+}
+
+/// Whether the file starts (after blanks) with the keyword `solid`.
+fn starts_with_solid(bytes: &[u8]) -> bool {
+    let start = bytes.iter().position(|b| !b.is_ascii_whitespace());
+    let rest = start.map_or(&[][..], |i| &bytes[i..]);
+    rest.len() >= 5
+        && rest[..5].eq_ignore_ascii_case(b"solid")
+        && rest.get(5).is_none_or(u8::is_ascii_whitespace)
+}
+
+/// Whether every byte is printable ASCII or whitespace.
+fn is_text(bytes: &[u8]) -> bool {
+    bytes
+        .iter()
+        .all(|&b| b.is_ascii_graphic() || b.is_ascii_whitespace())
+}
+
+/// Reads a binary STL whose length has been checked to be `84 + 50·n`.
+fn parse_binary(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
+    let (records, _) = bytes
+        .get(HEADER..)
+        .unwrap_or_default()
+        .as_chunks::<RECORD>();
+    let mut vertices = Vec::with_capacity(records.len() * 3);
+    let mut triangles = Vec::with_capacity(records.len());
+    for (t, record) in records.iter().enumerate() {
+        let first = vertex_index(vertices.len())?;
+        for k in 0..3 {
+            let at = |i: usize| {
+                let o = 12 + 12 * k + 4 * i;
+                f64::from(f32::from_le_bytes([
+                    record[o],
+                    record[o + 1],
+                    record[o + 2],
+                    record[o + 3],
+                ]))
+            };
+            let v = DVec3::new(at(0), at(1), at(2));
+            if !v.is_finite() {
+                return Err(format!(
+                    "triangle {t}, corner {k} has a non-finite coordinate {v}"
+                ));
+            }
+            vertices.push(v);
+        }
+        let last = vertex_index(vertices.len() - 1)?;
+        triangles.push([first, first + 1, last]);
+    }
+    Ok((vertices, triangles))
+}
+
+/// One solid being read.
+struct Solid {
+    name: String,
+    vertices: Vec<DVec3>,
+    triangles: Vec<[u32; 3]>,
+}
+
+/// Reads the solids of an ASCII STL.
+fn parse_ascii(bytes: &[u8]) -> Result<Vec<Solid>, String> {
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        format!(
+            "ASCII STL is not valid text (invalid UTF-8 at byte {})",
+            e.valid_up_to()
+        )
+    })?;
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty());
+    let mut solids = Vec::new();
+    while let Some((n, line)) = lines.next() {
+        let (keyword, rest) = split_keyword(line);
+        if !keyword.eq_ignore_ascii_case("solid") {
+            return Err(format!("line {n}: expected 'solid', found '{line}'"));
+        }
+        let mut solid = Solid {
+            name: rest.to_owned(),
+            vertices: Vec::new(),
+            triangles: Vec::new(),
+        };
+        while read_facet(&mut lines, &mut solid)? {}
+        solids.push(solid);
+    }
+    Ok(solids)
+}
+
+/// Reads one facet into `solid`; `false` at the solid's `endsolid`.
+fn read_facet<'t>(
+    lines: &mut impl Iterator<Item = (usize, &'t str)>,
+    solid: &mut Solid,
+) -> Result<bool, String> {
+    let mut next = |expected: &str| {
+        lines.next().ok_or_else(|| {
+            format!("unexpected end of file: expected {expected} (the file may be truncated)")
+        })
+    };
+    let (n, line) = next("'facet' or 'endsolid'")?;
+    let (keyword, _) = split_keyword(line);
+    if keyword.eq_ignore_ascii_case("endsolid") {
+        return Ok(false);
+    }
+    if !keyword.eq_ignore_ascii_case("facet") {
+        return Err(format!(
+            "line {n}: expected 'facet' or 'endsolid', found '{line}'"
+        ));
+    }
+    let (n, line) = next("'outer loop'")?;
+    let mut words = line.split_whitespace();
+    let outer = words
+        .next()
+        .is_some_and(|w| w.eq_ignore_ascii_case("outer"));
+    let looped = words.next().is_some_and(|w| w.eq_ignore_ascii_case("loop"));
+    if !(outer && looped && words.next().is_none()) {
+        return Err(format!("line {n}: expected 'outer loop', found '{line}'"));
+    }
+    let first = solid.vertices.len();
+    let end = loop {
+        let (n, line) = next("'vertex' or 'endloop'")?;
+        let (keyword, rest) = split_keyword(line);
+        if keyword.eq_ignore_ascii_case("endloop") {
+            break n;
+        }
+        if !keyword.eq_ignore_ascii_case("vertex") {
+            return Err(format!(
+                "line {n}: expected 'vertex x y z' or 'endloop', found '{line}'"
+            ));
+        }
+        let v = parse_vertex(rest).map_err(|r| format!("line {n}: {r}"))?;
+        solid.vertices.push(v);
+    };
+    let corners = solid.vertices.len() - first;
+    if corners < 3 {
+        return Err(format!(
+            "line {end}: facet has {corners} vertices, at least 3 are needed"
+        ));
+    }
+    let a = vertex_index(first)?;
+    for i in first + 1..solid.vertices.len() - 1 {
+        solid
+            .triangles
+            .push([a, vertex_index(i)?, vertex_index(i + 1)?]);
+    }
+    let (n, line) = next("'endfacet'")?;
+    if !split_keyword(line).0.eq_ignore_ascii_case("endfacet") {
+        return Err(format!("line {n}: expected 'endfacet', found '{line}'"));
+    }
+    Ok(true)
+}
+
+/// Splits a trimmed line into its first word and the trimmed rest.
+fn split_keyword(line: &str) -> (&str, &str) {
+    match line.split_once(|c: char| c.is_ascii_whitespace()) {
+        Some((keyword, rest)) => (keyword, rest.trim()),
+        None => (line, ""),
+    }
+}
+
+/// Parses the three coordinates after `vertex`.
+fn parse_vertex(rest: &str) -> Result<DVec3, String> {
+    let mut words = rest.split_whitespace();
+    let mut xyz = [0.0; 3];
+    for c in &mut xyz {
+        let word = words
+            .next()
+            .ok_or_else(|| format!("'vertex {rest}' needs three coordinates"))?;
+        *c = word
+            .parse::<f64>()
+            .map_err(|_| format!("'{word}' is not a number"))?;
+        if !c.is_finite() {
+            return Err(format!("non-finite coordinate '{word}'"));
+        }
+    }
+    if words.next().is_some() {
+        return Err(format!("'vertex {rest}' has more than three coordinates"));
+    }
+    Ok(DVec3::from_array(xyz))
+}
