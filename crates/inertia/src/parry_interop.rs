@@ -62,7 +62,8 @@ pub fn convex_hull(mesh: &TriMesh) -> Result<TriMesh, InertiaError> {
         .map(|&p| normal.dot(p - origin).abs())
         .fold(0.0_f64, f64::max);
     let scale = axis.length() * normal.length() * axis.length();
-    if v.len() < 4 || !(spread > 1e-12 * scale) {
+    // `<=` would let NaN through: compare the other way round.
+    if v.len() < 4 || spread.partial_cmp(&(1e-12 * scale)) != Some(core::cmp::Ordering::Greater) {
         return Err(InertiaError::DegenerateHull {
             reason: format!(
                 "{} points that span no volume (all on one plane or line)",
