@@ -13,7 +13,9 @@
 //! - Principal frames are right-handed; `principal_orientation` maps
 //!   principal-frame coordinates to body (mesh) coordinates.
 #![deny(missing_docs)]
-#![forbid(unsafe_code)]
+// One small module (`solid_kernel`) calls its AVX2/FMA build after a
+// run-time CPU check; everything else is safe code.
+#![deny(unsafe_code)]
 
 mod error;
 pub mod io;
@@ -24,6 +26,7 @@ mod mesh_mass;
 mod parry_interop;
 mod primitives;
 mod principal_axes;
+mod solid_kernel;
 mod tri_mesh;
 
 pub use error::InertiaError;

@@ -4,6 +4,7 @@
 use glam::{DMat3, DVec3};
 
 use crate::mass_properties::check_positive;
+use crate::solid_kernel::{Sums, solid_sums};
 use crate::{InertiaError, MassProperties, TriMesh};
 
 /// Triangles summed into one partial sum before it is added to the total,
@@ -27,9 +28,6 @@ pub struct MeshMoments {
     /// Second moment `∫ r rᵀ` (symmetric).
     pub second: DMat3,
 }
-
-/// Ten running sums: Σd, Σd·s (3), Σd·(sᵢsⱼ + Σₖ aₖᵢaₖⱼ) in the order xx, yy, zz, xy, xz, yz.
-type Sums = [f64; 10];
 
 #[inline]
 fn add(total: &mut Sums, part: &Sums) {
@@ -121,7 +119,8 @@ impl MeshMoments {
     /// # assert!((c - DVec3::splat(0.25)).length() < 1e-15);
     /// ```
     pub fn solid(mesh: &TriMesh) -> Self {
-        let (origin, sums) = integrate(mesh, |a, b, c| a.dot(b.cross(c)));
+        let origin = reference_point(mesh);
+        let sums = solid_sums(mesh.vertices(), origin, mesh.triangles());
         moments(origin, &sums, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0)
     }
 
