@@ -1,159 +1,183 @@
-//! The hot loop of [`crate::MeshMoments::solid`]: four triangles per step in
-//! lanes that the compiler turns into SIMD, with fused multiply-adds where
-//! the CPU has them.
+//! The hot loop of [`crate::MeshMoments::solid`]: the ten sums of the signed
+//! tetrahedra over all triangles.
 //!
-//! This is the one module with `unsafe`: calling the AVX2/FMA build of the
-//! kernel after checking at run time that the CPU supports it. Measured
-//! (BENCHMARKS.md): 13.3 ns per triangle for the plain scalar loop, ≈3 ns
-//! with AVX2 + FMA lanes.
+//! Two builds of the same formulas: a portable scalar loop, and an AVX2/FMA
+//! loop vectorised across the coordinates of each triangle (a corner is one
+//! register `(x, y, z, ·)`, cross products are lane permutations, four
+//! registers accumulate the ten sums). This is the one module with
+//! `unsafe`: calling the AVX2 build after checking at run time that the CPU
+//! supports it. Measured (BENCHMARKS.md, `cargo bench --bench inertia`).
 
 use glam::DVec3;
 
-/// Triangles per step.
-const LANES: usize = 4;
 /// Triangles summed into one partial sum before it is added to the total,
 /// so rounding errors grow like `n/B + B` instead of `n`.
 const BLOCK: usize = 512;
 
-/// Ten running sums: Σd, Σd·s (x, y, z), Σd·(sᵢsⱼ + Σₖ aₖᵢaₖⱼ) for xx, yy,
-/// zz, xy, xz, yz — with `d = a·(b×c)`, `s = a + b + c` per triangle.
+/// Ten running sums, with `d = a·(b×c)` and `s = a + b + c` per triangle
+/// (corners relative to the origin): Σd, Σd·s (x, y, z), and
+/// Σd·(sᵢsⱼ + aᵢaⱼ + bᵢbⱼ + cᵢcⱼ) for xx, yy, zz, xy, xz, yz.
 pub(crate) type Sums = [f64; 10];
 
-type Lanes = [f64; LANES];
-
-// Lane-wise arithmetic as plain `#[inline(always)]` functions: closures
-// would not be inlined into the AVX2 build (they do not inherit its target
-// features), and each call would cost more than the arithmetic.
-
+/// One triangle's ten terms before weighting by `d`, and `d` itself.
 #[inline(always)]
-fn add(a: Lanes, b: Lanes) -> Lanes {
-    core::array::from_fn(|l| a[l] + b[l])
-}
-
-#[inline(always)]
-fn sub(a: Lanes, b: Lanes) -> Lanes {
-    core::array::from_fn(|l| a[l] - b[l])
-}
-
-#[inline(always)]
-fn mul(a: Lanes, b: Lanes) -> Lanes {
-    core::array::from_fn(|l| a[l] * b[l])
-}
-
-/// `a·b + c` lane by lane, fused (one rounding) when `FMA`.
-#[inline(always)]
-fn madd<const FMA: bool>(a: Lanes, b: Lanes, c: Lanes) -> Lanes {
-    core::array::from_fn(|l| {
-        if FMA {
-            a[l].mul_add(b[l], c[l])
-        } else {
-            a[l] * b[l] + c[l]
-        }
-    })
-}
-
-/// Corner `k` of four triangles, relative to `origin`, as x, y, z lanes.
-#[inline(always)]
-fn corner(v: &[DVec3], origin: DVec3, quad: &[[u32; 3]; LANES], k: usize) -> [Lanes; 3] {
-    let mut out = [[0.0; LANES]; 3];
-    for l in 0..LANES {
-        let p = v[quad[l][k] as usize] - origin;
-        out[0][l] = p.x;
-        out[1][l] = p.y;
-        out[2][l] = p.z;
-    }
-    out
-}
-
-/// `sᵢsⱼ + aᵢaⱼ + bᵢbⱼ + cᵢcⱼ`, lane by lane.
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn second<const FMA: bool>(
-    si: Lanes,
-    sj: Lanes,
-    ai: Lanes,
-    aj: Lanes,
-    bi: Lanes,
-    bj: Lanes,
-    ci: Lanes,
-    cj: Lanes,
-) -> Lanes {
-    madd::<FMA>(
-        si,
-        sj,
-        madd::<FMA>(ai, aj, madd::<FMA>(bi, bj, mul(ci, cj))),
+fn terms(a: DVec3, b: DVec3, c: DVec3) -> (f64, [f64; 9]) {
+    let d = a.dot(b.cross(c));
+    let s = a + b + c;
+    let q = |i: usize, j: usize| s[i] * s[j] + a[i] * a[j] + b[i] * b[j] + c[i] * c[j];
+    (
+        d,
+        [
+            s.x,
+            s.y,
+            s.z,
+            q(0, 0),
+            q(1, 1),
+            q(2, 2),
+            q(0, 1),
+            q(0, 2),
+            q(1, 2),
+        ],
     )
 }
 
-/// One step: four triangles' contributions added to `acc`.
-#[inline(always)]
-fn step<const FMA: bool>(
-    acc: &mut [Lanes; 10],
-    v: &[DVec3],
-    origin: DVec3,
-    quad: &[[u32; 3]; LANES],
-) {
-    let [ax, ay, az] = corner(v, origin, quad, 0);
-    let [bx, by, bz] = corner(v, origin, quad, 1);
-    let [cx, cy, cz] = corner(v, origin, quad, 2);
-    // d = a · (b × c): six times the signed volume of (origin, a, b, c).
-    let nx = sub(mul(by, cz), mul(bz, cy));
-    let ny = sub(mul(bz, cx), mul(bx, cz));
-    let nz = sub(mul(bx, cy), mul(by, cx));
-    let d = madd::<FMA>(ax, nx, madd::<FMA>(ay, ny, mul(az, nz)));
-    let (sx, sy, sz) = (
-        add(add(ax, bx), cx),
-        add(add(ay, by), cy),
-        add(add(az, bz), cz),
-    );
-    let q = second::<FMA>;
-    let terms = [
-        sx,
-        sy,
-        sz,
-        q(sx, sx, ax, ax, bx, bx, cx, cx),
-        q(sy, sy, ay, ay, by, by, cy, cy),
-        q(sz, sz, az, az, bz, bz, cz, cz),
-        q(sx, sy, ax, ay, bx, by, cx, cy),
-        q(sx, sz, ax, az, bx, bz, cx, cz),
-        q(sy, sz, ay, az, by, bz, cy, cz),
-    ];
-    acc[0] = add(acc[0], d);
-    for (a, t) in acc[1..].iter_mut().zip(terms) {
-        *a = madd::<FMA>(d, t, *a);
-    }
-}
-
-/// The sums over all triangles, blockwise, four lanes at a time.
-#[inline(always)]
-fn sums<const FMA: bool>(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
+/// The portable build: one triangle at a time.
+fn sums_scalar(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
     let mut total = [0.0; 10];
     for block in triangles.chunks(BLOCK) {
-        let mut acc = [[0.0; LANES]; 10];
-        let mut quads = block.chunks_exact(LANES);
-        for quad in &mut quads {
-            // chunks_exact yields slices of exactly LANES triangles.
-            let quad: &[[u32; 3]; LANES] = quad.try_into().unwrap_or(&[[0; 3]; LANES]);
-            step::<FMA>(&mut acc, v, origin, quad);
+        let mut acc = [0.0; 10];
+        for &[i, j, k] in block {
+            let (d, t) = terms(
+                v[i as usize] - origin,
+                v[j as usize] - origin,
+                v[k as usize] - origin,
+            );
+            acc[0] += d;
+            for (a, t) in acc[1..].iter_mut().zip(t) {
+                *a += d * t;
+            }
         }
-        // Pad the rest with [0, 0, 0]: a = b = c gives d = 0 and adds nothing.
-        let rest = quads.remainder();
-        if !rest.is_empty() {
-            let mut pad = [[0u32; 3]; LANES];
-            pad[..rest.len()].copy_from_slice(rest);
-            step::<FMA>(&mut acc, v, origin, &pad);
-        }
-        for (t, lanes) in total.iter_mut().zip(acc) {
-            *t += lanes.iter().sum::<f64>();
+        for (t, a) in total.iter_mut().zip(acc) {
+            *t += a;
         }
     }
     total
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn sums_avx2_fma(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
-    sums::<true>(v, origin, triangles)
+mod avx2 {
+    //! AVX2 + FMA. The only `unsafe` besides the dispatch: a masked load
+    //! of a vertex's three coordinates, whose index `TriMesh` has checked.
+
+    #![allow(unsafe_code)]
+
+    use core::arch::x86_64::*;
+
+    use super::{BLOCK, Sums};
+    use glam::DVec3;
+
+    /// Vertex `i` minus the origin as `(x, y, z, 0)`: one masked load of
+    /// the three coordinates (it never touches the bytes after them).
+    ///
+    /// # Safety
+    /// `3i + 3 ≤ flat.len()`: every index of a [`crate::TriMesh`] is in
+    /// range (checked when it is built).
+    #[inline]
+    #[target_feature(enable = "avx2,fma")]
+    unsafe fn corner(flat: &[f64], origin: __m256d, i: u32) -> __m256d {
+        debug_assert!(3 * i as usize + 3 <= flat.len());
+        let mask = _mm256_set_epi64x(0, -1, -1, -1);
+        // SAFETY: lanes 0..3 read flat[3i..3i+3], in bounds by the caller's
+        // promise; the masked-off lane 3 is not read.
+        let p = unsafe { _mm256_maskload_pd(flat.as_ptr().add(3 * i as usize), mask) };
+        _mm256_sub_pd(p, origin)
+    }
+
+    /// Lanes `(y, z, x, ·)`.
+    #[inline]
+    #[target_feature(enable = "avx2,fma")]
+    fn yzx(a: __m256d) -> __m256d {
+        _mm256_permute4x64_pd::<0b11_00_10_01>(a)
+    }
+
+    /// Lanes `(z, x, y, ·)`.
+    #[inline]
+    #[target_feature(enable = "avx2,fma")]
+    fn zxy(a: __m256d) -> __m256d {
+        _mm256_permute4x64_pd::<0b11_01_00_10>(a)
+    }
+
+    /// Lane `k` of a register.
+    #[inline]
+    #[target_feature(enable = "avx2,fma")]
+    fn lane(a: __m256d, k: usize) -> f64 {
+        let lo = _mm256_castpd256_pd128(a);
+        let hi = _mm256_extractf128_pd::<1>(a);
+        match k {
+            0 => _mm_cvtsd_f64(lo),
+            1 => _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo)),
+            _ => _mm_cvtsd_f64(hi),
+        }
+    }
+
+    /// The AVX2 build of [`super::sums_scalar`].
+    #[target_feature(enable = "avx2,fma")]
+    pub(super) fn sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
+        let flat: &[f64] = bytemuck::cast_slice(v);
+        let o = _mm256_set_pd(0.0, origin.z, origin.y, origin.x);
+        let mut total = [0.0; 10];
+        for block in triangles.chunks(BLOCK) {
+            let zero = _mm256_setzero_pd();
+            let (mut volume, mut first, mut diagonal, mut off) = (zero, zero, zero, zero);
+            for &[i, j, k] in block {
+                // SAFETY: the indices come from a TriMesh, so they are in range.
+                let (a, b, c) =
+                    unsafe { (corner(flat, o, i), corner(flat, o, j), corner(flat, o, k)) };
+                let (a1, b1, c1) = (yzx(a), yzx(b), yzx(c));
+                // m = b ∘ c.yzx − b.yzx ∘ c = (b × c).zxy, so
+                // d = a · (b × c) = Σᵢ (a.zxy ∘ m)ᵢ, summed into every lane
+                // by adding its two rotations (no extract or broadcast).
+                let m = _mm256_fmsub_pd(b, c1, _mm256_mul_pd(b1, c));
+                let am = _mm256_mul_pd(zxy(a), m);
+                let dd = _mm256_add_pd(_mm256_add_pd(am, yzx(am)), zxy(am));
+                let s = _mm256_add_pd(_mm256_add_pd(a, b), c);
+                // (sᵢsᵢ + …) and (sᵢsⱼ + …) with j = i + 1 (mod 3)
+                let sq = _mm256_fmadd_pd(
+                    s,
+                    s,
+                    _mm256_fmadd_pd(a, a, _mm256_fmadd_pd(b, b, _mm256_mul_pd(c, c))),
+                );
+                // s.yzx from the rotated corners: additions instead of a permutation.
+                let s1 = _mm256_add_pd(_mm256_add_pd(a1, b1), c1);
+                let cross = _mm256_fmadd_pd(
+                    s,
+                    s1,
+                    _mm256_fmadd_pd(a, a1, _mm256_fmadd_pd(b, b1, _mm256_mul_pd(c, c1))),
+                );
+                volume = _mm256_add_pd(volume, dd);
+                first = _mm256_fmadd_pd(dd, s, first);
+                diagonal = _mm256_fmadd_pd(dd, sq, diagonal);
+                off = _mm256_fmadd_pd(dd, cross, off);
+            }
+            // `off` holds (xy, yz, zx); Sums wants xy, xz, yz.
+            let part = [
+                lane(volume, 0),
+                lane(first, 0),
+                lane(first, 1),
+                lane(first, 2),
+                lane(diagonal, 0),
+                lane(diagonal, 1),
+                lane(diagonal, 2),
+                lane(off, 0),
+                lane(off, 2),
+                lane(off, 1),
+            ];
+            for (t, p) in total.iter_mut().zip(part) {
+                *t += p;
+            }
+        }
+        total
+    }
 }
 
 /// The ten sums of a mesh's triangles about `origin` (every index must be
@@ -162,30 +186,28 @@ fn sums_avx2_fma(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
 pub(crate) fn solid_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: `sums_avx2_fma` only needs AVX2 and FMA, which the CPU
-        // has (checked just above); it is otherwise safe code.
-        return unsafe { sums_avx2_fma(v, origin, triangles) };
+        // SAFETY: `avx2::sums` needs only AVX2 and FMA, which the CPU has
+        // (checked just above); it is otherwise safe code.
+        return unsafe { avx2::sums(v, origin, triangles) };
     }
-    sums::<false>(v, origin, triangles)
+    sums_scalar(v, origin, triangles)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// The plain and the fused kernels agree, and both match a direct sum.
+    /// Both builds match a direct per-triangle sum, the last vertex included
+    /// (the padded load).
     #[test]
-    fn lanes_padding_and_fma_agree_with_direct_sum() {
+    fn builds_agree_with_direct_sum() {
         let v: Vec<DVec3> = (0..40)
             .map(|i| {
                 let t = i as f64;
                 DVec3::new(t.sin(), (1.3 * t).cos(), (0.7 * t).sin() * 2.0)
             })
             .collect();
-        // 37 triangles: 9 full steps and a padded one.
-        let tris: Vec<[u32; 3]> = (0..37u32)
-            .map(|i| [i, (i + 1) % 40, (i * 7 + 3) % 40])
-            .collect();
+        let tris: Vec<[u32; 3]> = (0..37u32).map(|i| [i, (i + 1) % 40, 39 - i % 5]).collect();
         let origin = DVec3::new(0.1, -0.2, 0.3);
         let mut direct = [0.0; 10];
         for &[i, j, k] in &tris {
@@ -197,7 +219,7 @@ mod tests {
             let d = a.dot(b.cross(c));
             let s = a + b + c;
             let q = |i: usize, j: usize| s[i] * s[j] + a[i] * a[j] + b[i] * b[j] + c[i] * c[j];
-            let terms = [
+            let t = [
                 1.0,
                 s.x,
                 s.y,
@@ -209,12 +231,12 @@ mod tests {
                 q(0, 2),
                 q(1, 2),
             ];
-            for (acc, t) in direct.iter_mut().zip(terms) {
+            for (acc, t) in direct.iter_mut().zip(t) {
                 *acc += d * t;
             }
         }
         for fast in [
-            sums::<false>(&v, origin, &tris),
+            sums_scalar(&v, origin, &tris),
             solid_sums(&v, origin, &tris),
         ] {
             for (x, y) in fast.iter().zip(&direct) {
