@@ -35,6 +35,16 @@ pub enum InertiaError {
         /// What is wrong, as precisely as the parser says.
         reason: String,
     },
+    /// A body read from a file fails a mesh check (the inner error says which).
+    #[error("{}: body '{body}': {source}", path.display())]
+    InFile {
+        /// The file.
+        path: PathBuf,
+        /// The body's name in the file.
+        body: String,
+        /// What is wrong with the body's mesh.
+        source: Box<InertiaError>,
+    },
     /// A mesh without vertices or triangles.
     #[error("mesh is empty ({vertices} vertices, {triangles} triangles)")]
     EmptyMesh {

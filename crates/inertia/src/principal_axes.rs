@@ -104,9 +104,11 @@ fn jacobi_eigen(a: DMat3) -> ([f64; 3], [DVec3; 3]) {
             if apq == 0.0 {
                 continue;
             }
-            // Off-diagonal negligible against both diagonal entries: drop it.
+            // An off-diagonal at the rounding level of the diagonal is noise
+            // (a backward error of a few ulps): drop it rather than let it
+            // turn a symmetric top's axes by 45°.
             let scale = m[p][p].abs() + m[q][q].abs();
-            if apq.abs() <= f64::EPSILON * 1e-3 * scale {
+            if apq.abs() <= 2.0 * f64::EPSILON * scale {
                 m[p][q] = 0.0;
                 m[q][p] = 0.0;
                 continue;
@@ -198,6 +200,19 @@ mod tests {
         let p = PrincipalAxes::from_tensor(DMat3::IDENTITY * 0.4);
         assert_eq!(p.axes, DMat3::IDENTITY);
         assert_eq!(p.orientation, DQuat::IDENTITY);
+    }
+
+    /// Regression: the mesh of a symmetric top has off-diagonals of ~1e-17
+    /// relative (rounding); they must not turn the axes by 45°.
+    #[test]
+    fn rounding_noise_keeps_a_symmetric_top_axis_aligned() {
+        let mut t = DMat3::from_diagonal(DVec3::new(7.8e-6, 7.8e-6, 1.26e-5));
+        t.x_axis.y = 1.05e-22;
+        t.y_axis.x = 1.05e-22;
+        t.y_axis.z = 4.0e-22;
+        t.z_axis.y = 4.0e-22;
+        let p = PrincipalAxes::from_tensor(t);
+        assert_eq!(p.axes, DMat3::IDENTITY);
     }
 
     #[test]

@@ -233,7 +233,11 @@ impl<'a> Source<'a> {
                 name,
                 mesh: mesh.merge_duplicate_vertices(),
             }),
-            Err(e) => Err(self.error(format!("body '{name}': {e}"))),
+            Err(e) => Err(InertiaError::InFile {
+                path: self.path.to_path_buf(),
+                body: name,
+                source: Box::new(e),
+            }),
         }
     }
 }
