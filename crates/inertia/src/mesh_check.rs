@@ -332,28 +332,7 @@ mod tests {
     use super::*;
 
     fn cube(offset: DVec3, scale: f64) -> (Vec<DVec3>, Vec<[u32; 3]>) {
-        let v: Vec<DVec3> = (0..8)
-            .map(|i| {
-                offset
-                    + DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64)
-                        * scale
-            })
-            .collect();
-        let t = vec![
-            [0, 2, 1],
-            [1, 2, 3],
-            [4, 5, 6],
-            [5, 7, 6],
-            [0, 1, 4],
-            [1, 5, 4],
-            [2, 6, 3],
-            [3, 6, 7],
-            [0, 4, 2],
-            [2, 4, 6],
-            [1, 3, 5],
-            [3, 7, 5],
-        ];
-        (v, t)
+        crate::tri_mesh::box_mesh(offset, offset + DVec3::splat(scale)).into_parts()
     }
 
     #[test]

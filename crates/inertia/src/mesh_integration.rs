@@ -196,33 +196,7 @@ impl MeshMoments {
 mod tests {
     use super::*;
 
-    /// An axis-aligned box from `lo` to `hi`, outward wound.
-    fn box_mesh(lo: DVec3, hi: DVec3) -> TriMesh {
-        let v: Vec<DVec3> = (0..8)
-            .map(|i| {
-                DVec3::new(
-                    if i & 1 == 0 { lo.x } else { hi.x },
-                    if i & 2 == 0 { lo.y } else { hi.y },
-                    if i & 4 == 0 { lo.z } else { hi.z },
-                )
-            })
-            .collect();
-        let t = vec![
-            [0, 2, 1],
-            [1, 2, 3],
-            [4, 5, 6],
-            [5, 7, 6],
-            [0, 1, 4],
-            [1, 5, 4],
-            [2, 6, 3],
-            [3, 6, 7],
-            [0, 4, 2],
-            [2, 4, 6],
-            [1, 3, 5],
-            [3, 7, 5],
-        ];
-        TriMesh::new(v, t)
-    }
+    use crate::tri_mesh::box_mesh;
 
     #[test]
     fn box_matches_closed_form_far_from_origin() {

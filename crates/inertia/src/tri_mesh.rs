@@ -195,6 +195,37 @@ impl TriMesh {
     }
 }
 
+/// An axis-aligned box from `lo` to `hi` as 12 outward-wound triangles
+/// (vertex `i` has bit 0, 1, 2 selecting `hi` in x, y, z), for unit tests.
+#[cfg(test)]
+pub(crate) fn box_mesh(lo: DVec3, hi: DVec3) -> TriMesh {
+    let pick = |i: usize, bit: usize, lo: f64, hi: f64| if i & bit == 0 { lo } else { hi };
+    let v: Vec<DVec3> = (0..8)
+        .map(|i| {
+            DVec3::new(
+                pick(i, 1, lo.x, hi.x),
+                pick(i, 2, lo.y, hi.y),
+                pick(i, 4, lo.z, hi.z),
+            )
+        })
+        .collect();
+    let t = vec![
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6],
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7],
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5],
+    ];
+    TriMesh::new(v, t)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

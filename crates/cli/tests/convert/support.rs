@@ -3,24 +3,13 @@
 
 use std::collections::HashMap;
 use std::f64::consts::{PI, TAU};
-use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
 
 use glam::{DQuat, DVec3};
 
-/// The binary under test.
-pub const KREISEL: &str = env!("CARGO_BIN_EXE_kreisel");
-
-/// The result of one run of the binary.
-pub struct Run {
-    /// Exit status (`None` when killed by a signal).
-    pub code: Option<i32>,
-    /// Standard output.
-    pub stdout: String,
-    /// Standard error.
-    pub stderr: String,
-}
+#[path = "../common/run.rs"]
+mod run;
+pub use run::{KREISEL, Run, kreisel};
 
 impl Run {
     /// Asserts success and returns the output lines as numbers, each line
@@ -53,31 +42,6 @@ pub fn parse_rows(text: &str, width: usize) -> Vec<Vec<f64>> {
             row
         })
         .collect()
-}
-
-/// Runs `kreisel` with `args`, feeding `stdin` (from a thread, so large
-/// inputs and outputs cannot deadlock).
-pub fn kreisel(args: &[&str], stdin: impl Into<Vec<u8>>) -> Run {
-    let stdin = stdin.into();
-    let mut child = Command::new(KREISEL)
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn kreisel");
-    let mut pipe = child.stdin.take().expect("stdin pipe");
-    // The child may stop reading early (at an error): ignore write failures.
-    let writer = std::thread::spawn(move || {
-        let _ = pipe.write_all(&stdin);
-    });
-    let output = child.wait_with_output().expect("wait for kreisel");
-    writer.join().expect("stdin writer thread");
-    Run {
-        code: output.status.code(),
-        stdout: String::from_utf8(output.stdout).expect("stdout is UTF-8"),
-        stderr: String::from_utf8(output.stderr).expect("stderr is UTF-8"),
-    }
 }
 
 /// `kreisel convert --from FROM --to TO [extra...]`.

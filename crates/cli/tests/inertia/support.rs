@@ -3,23 +3,13 @@
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use glam::{DMat3, DQuat, DVec3};
 use serde_json::Value;
 
-/// The binary under test.
-pub const KREISEL: &str = env!("CARGO_BIN_EXE_kreisel");
-
-/// The result of one run of the binary.
-pub struct Run {
-    /// Exit status (`None` when killed by a signal).
-    pub code: Option<i32>,
-    /// Standard output.
-    pub stdout: String,
-    /// Standard error.
-    pub stderr: String,
-}
+#[path = "../common/run.rs"]
+mod run;
+pub use run::Run;
 
 impl Run {
     /// Asserts exit status 0 and returns standard output parsed as JSON.
@@ -52,17 +42,10 @@ impl Run {
 
 /// Runs `kreisel inertia PATH ARGS...`.
 pub fn inertia(path: &Path, args: &[&str]) -> Run {
-    let output = Command::new(KREISEL)
-        .arg("inertia")
-        .arg(path)
-        .args(args)
-        .output()
-        .expect("run kreisel");
-    Run {
-        code: output.status.code(),
-        stdout: String::from_utf8(output.stdout).expect("stdout is UTF-8"),
-        stderr: String::from_utf8(output.stderr).expect("stderr is UTF-8"),
-    }
+    let path = path.to_str().expect("test paths are UTF-8");
+    let mut all = vec!["inertia", path];
+    all.extend_from_slice(args);
+    run::kreisel(&all, Vec::new())
 }
 
 /// A path relative to the workspace root.
