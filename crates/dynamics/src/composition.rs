@@ -1,0 +1,125 @@
+//! Symmetric compositions of the second-order splitting to orders 4, 6 and 8.
+
+// Coefficients are written with all the digits the papers publish.
+#![allow(clippy::excessive_precision)]
+
+use glam::DVec3;
+
+use crate::splitting::SymmetricTopSplitting;
+use crate::{FreeBodyIntegrator, PrincipalState};
+
+/// Coefficients of a symmetric composition: the first half, then the middle.
+///
+/// ```text
+/// Ψₕ = Φ(γ₁h) ∘ … ∘ Φ(γₛh) ∘ Φ(γ_mid h) ∘ Φ(γₛh) ∘ … ∘ Φ(γ₁h),   2 Σγᵢ + γ_mid = 1
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CompositionCoefficients {
+    /// γ₁ … γₛ.
+    pub half: &'static [f64],
+    /// The middle coefficient.
+    pub middle: f64,
+}
+
+/// Suzuki (Phys. Lett. A 146:319, 1990), order 4, 5 stages:
+/// γ = 1/(4 − 4^{1/3}) four times, middle 1 − 4γ.
+pub const SUZUKI_4: CompositionCoefficients = CompositionCoefficients {
+    half: &[0.414_490_771_794_375_7, 0.414_490_771_794_375_7],
+    middle: -0.657_963_087_177_502_8,
+};
+
+/// Kahan & Li (Math. Comp. 66:1089, 1997), order 6, 9 stages.
+pub const KAHAN_LI_6: CompositionCoefficients = CompositionCoefficients {
+    half: &[
+        0.392_161_444_007_314_139_28,
+        0.332_599_136_789_359_438_60,
+        -0.706_246_172_557_639_359_81,
+        0.082_213_596_293_550_800_23,
+    ],
+    middle: 0.798_543_990_934_829_963_40,
+};
+
+/// Kahan & Li (Math. Comp. 66:1089, 1997), order 8, 17 stages.
+pub const KAHAN_LI_8: CompositionCoefficients = CompositionCoefficients {
+    half: &[
+        0.130_202_483_088_890_080_88,
+        0.561_162_981_775_108_384_56,
+        -0.389_474_962_644_847_286_41,
+        0.158_841_906_555_155_600_90,
+        -0.395_903_894_133_237_577_34,
+        0.184_539_640_978_315_707_09,
+        0.258_374_387_686_322_047_29,
+        0.295_011_723_609_310_298_87,
+    ],
+    middle: -0.605_508_533_830_034_511_70,
+};
+
+/// A symmetric composition of [`SymmetricTopSplitting`].
+#[derive(Debug, Clone, Copy)]
+pub struct Composition {
+    name: &'static str,
+    order: u32,
+    coefficients: &'static CompositionCoefficients,
+}
+
+impl Composition {
+    /// A composition method with its registry name and order.
+    ///
+    /// ```text
+    /// Ψₕ = Φ(γ₁h) ∘ … ∘ Φ(γ_mid h) ∘ … ∘ Φ(γ₁h)
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{Composition, FreeBodyIntegrator, SUZUKI_4};
+    /// let m = Composition::new("splitting4", 4, &SUZUKI_4);
+    /// assert_eq!(m.order(), 4);
+    /// ```
+    pub const fn new(
+        name: &'static str,
+        order: u32,
+        coefficients: &'static CompositionCoefficients,
+    ) -> Self {
+        Self {
+            name,
+            order,
+            coefficients,
+        }
+    }
+}
+
+impl FreeBodyIntegrator for Composition {
+    fn name(&self) -> &'static str {
+        self.name
+    }
+
+    fn order(&self) -> u32 {
+        self.order
+    }
+
+    fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {
+        let base = SymmetricTopSplitting;
+        let c = self.coefficients;
+        for &g in c.half {
+            base.step(moments, state, g * h);
+        }
+        base.step(moments, state, c.middle * h);
+        for &g in c.half.iter().rev() {
+            base.step(moments, state, g * h);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coefficients_sum_to_one() {
+        for c in [SUZUKI_4, KAHAN_LI_6, KAHAN_LI_8] {
+            let sum = 2.0 * c.half.iter().sum::<f64>() + c.middle;
+            assert!((sum - 1.0).abs() < 1e-15, "{sum}");
+        }
+        let g = 1.0 / (4.0 - 4f64.powf(1.0 / 3.0));
+        assert!((SUZUKI_4.half[0] - g).abs() < 1e-16);
+    }
+}

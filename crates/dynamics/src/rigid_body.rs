@@ -1,0 +1,130 @@
+//! A rigid body's rotational inertia: principal moments and the principal frame.
+
+use glam::{DMat3, DQuat, DVec3};
+use kreisel_inertia::{MassProperties, PrincipalAxes};
+
+use crate::DynamicsError;
+
+/// The rotational inertia of a rigid body about its centre of mass.
+///
+/// Integrators work in the principal frame, where the inertia tensor is
+/// `diag(I₁, I₂, I₃)`; `body_from_principal` maps principal-frame
+/// coordinates to the body frame the user works in (identity when the body
+/// axes are principal axes).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigidBody {
+    moments: DVec3,
+    body_from_principal: DQuat,
+}
+
+/// Relative slack allowed in the triangle inequality `I₁ + I₂ ≥ I₃` (flat
+/// bodies meet it with equality, up to rounding).
+const TRIANGLE_SLACK: f64 = 1e-12;
+
+impl RigidBody {
+    /// A body whose body axes are principal axes, with moments `(I₁, I₂, I₃)`.
+    ///
+    /// ```text
+    /// Iₖ > 0,   Iᵢ + Iⱼ ≥ Iₖ (each pair, to 1e-12 relative)
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::UnphysicalInertia`] for a moment that is not positive
+    /// and finite, or moments breaking the triangle inequality.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::RigidBody;
+    /// assert!(RigidBody::try_from_principal_moments(DVec3::new(1.0, 2.0, 3.0)).is_ok());
+    /// assert!(RigidBody::try_from_principal_moments(DVec3::new(1.0, 1.0, 3.0)).is_err());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_from_principal_moments(moments: DVec3) -> Result<Self, DynamicsError> {
+        let bad = |reason| DynamicsError::UnphysicalInertia {
+            moments: moments.to_array(),
+            reason,
+        };
+        if !moments.to_array().iter().all(|m| m.is_finite() && *m > 0.0) {
+            return Err(bad("every principal moment must be positive and finite"));
+        }
+        let [a, b, c] = moments.to_array();
+        let largest = a.max(b).max(c);
+        if a + b + c - largest < largest * (1.0 - TRIANGLE_SLACK) {
+            return Err(bad("the triangle inequality I₁ + I₂ ≥ I₃ is broken"));
+        }
+        Ok(Self {
+            moments,
+            body_from_principal: DQuat::IDENTITY,
+        })
+    }
+
+    /// A body from its inertia tensor about the centre of mass, in body axes.
+    ///
+    /// ```text
+    /// I = R diag(I₁, I₂, I₃) Rᵀ,   R = body_from_principal
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::InertiaTensor`] for a tensor that is not finite,
+    /// symmetric and positive definite, and the checks of
+    /// [`RigidBody::try_from_principal_moments`].
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec3};
+    /// use kreisel_dynamics::RigidBody;
+    /// let r = DMat3::from_quat(DQuat::from_rotation_z(0.3));
+    /// let tensor = r * DMat3::from_diagonal(DVec3::new(1.0, 2.0, 2.5)) * r.transpose();
+    /// let body = RigidBody::try_from_inertia_tensor(tensor)?;
+    /// assert!((body.principal_moments() - DVec3::new(1.0, 2.0, 2.5)).length() < 1e-14);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_from_inertia_tensor(tensor: DMat3) -> Result<Self, DynamicsError> {
+        let props = MassProperties::try_new(1.0, DVec3::ZERO, tensor).map_err(|e| {
+            DynamicsError::InertiaTensor {
+                reason: e.to_string(),
+            }
+        })?;
+        Self::from_mass_properties(&props)
+    }
+
+    /// A body from mass properties (the tensor about the centre of mass).
+    ///
+    /// ```text
+    /// (I₁ ≤ I₂ ≤ I₃, R) = principal axes of props.inertia
+    /// ```
+    ///
+    /// # Errors
+    /// As [`RigidBody::try_from_principal_moments`] for the principal moments.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::RigidBody;
+    /// use kreisel_inertia::MassProperties;
+    /// let brick = MassProperties::solid_box(1000.0, DVec3::new(0.1, 0.2, 0.3))?;
+    /// let body = RigidBody::from_mass_properties(&brick).unwrap();
+    /// assert!(body.principal_moments().x < body.principal_moments().z);
+    /// # Ok::<(), kreisel_inertia::InertiaError>(())
+    /// ```
+    pub fn from_mass_properties(props: &MassProperties) -> Result<Self, DynamicsError> {
+        let PrincipalAxes {
+            moments,
+            orientation,
+            ..
+        } = props.principal();
+        let body = Self::try_from_principal_moments(moments)?;
+        Ok(Self {
+            body_from_principal: orientation,
+            ..body
+        })
+    }
+
+    /// Principal moments `(I₁, I₂, I₃)`, kg·m².
+    pub fn principal_moments(&self) -> DVec3 {
+        self.moments
+    }
+
+    /// The rotation from principal-frame to body-frame coordinates.
+    pub fn body_from_principal(&self) -> DQuat {
+        self.body_from_principal
+    }
+}
