@@ -7,6 +7,7 @@
 //!   vectors, all 24 Euler conventions, Euler rates ⇄ angular velocity.
 //! - [`inertia`]: mass, centre of mass, inertia tensor and principal axes of
 //!   primitives, point masses, compounds and closed triangle meshes.
+//! - [`dynamics`]: the torque-free rigid body: integrators, invariants.
 //!
 //! ```
 //! use kreisel::kinematics::{EulerSequence, glam::DVec3};
@@ -18,6 +19,7 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub use kreisel_dynamics as dynamics;
 pub use kreisel_inertia as inertia;
 pub use kreisel_kinematics as kinematics;
 
