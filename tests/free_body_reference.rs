@@ -112,8 +112,35 @@ fn measured_convergence_orders() {
 
 #[test]
 fn methods_listed_in_the_registry_all_exist() {
-    for name in METHODS {
-        assert_eq!(method(name).unwrap().name(), name);
+    for name in METHODS.iter().filter(|&&n| n != "auto") {
+        assert_eq!(method(name).unwrap().name(), *name);
+    }
+    assert!(method("auto").is_ok());
+}
+
+/// The default method's accuracy goal (issue #4): ≤ 1e-11 rad at dt = 0.01
+/// and ≤ 1e-9 rad at dt = 0.1, over the whole reference horizon, on every
+/// scenario (near the separatrix and at 1000:1 inertia ratios included).
+#[test]
+fn default_method_meets_the_accuracy_goal() {
+    let auto = method("auto").unwrap();
+    for scenario in [
+        "rapier",
+        "hlw",
+        "near_separatrix_7",
+        "near_separatrix_12",
+        "ratio_1000",
+        "ratio_1000b",
+        "symmetric",
+        "sphere",
+    ] {
+        let r = load(scenario);
+        let t_end = r.samples.last().unwrap().0.min(20.0);
+        for (h, goal) in [(0.01, 1e-11), (0.1, 1e-9)] {
+            let (e, el) = error_at(auto.as_ref(), &r, t_end, h);
+            eprintln!("{scenario:>18}: dt = {h}: attitude {e:.2e} rad, L {el:.2e} at t = {t_end}");
+            assert!(e <= goal && el <= goal, "{scenario} dt = {h}: {e:e}");
+        }
     }
 }
 

@@ -37,7 +37,7 @@ mod state;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use error::DynamicsError;
-pub use integrator::{FreeBodyIntegrator, METHODS, integrate, method};
+pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, integrate, method};
 pub use rigid_body::RigidBody;
 pub use rk4::Rk4;
 pub use splitting::{AxisStrang, SymmetricTopSplitting};
