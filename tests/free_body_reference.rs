@@ -5,47 +5,11 @@
 
 mod common;
 
-use std::path::PathBuf;
+use common::free_body::{Reference, load};
 
 use kreisel::dynamics::{FreeBodyIntegrator, METHODS, PrincipalState, integrate, method};
-use kreisel::kinematics::glam::{DQuat, DVec3};
+use kreisel::kinematics::glam::DVec3;
 use kreisel::kinematics::rotation_angle_between;
-
-/// A reference trajectory: principal moments and samples (t, q, L).
-struct Reference {
-    moments: DVec3,
-    samples: Vec<(f64, DQuat, DVec3)>,
-}
-
-fn load(name: &str) -> Reference {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/free_body")
-        .join(format!("{name}.csv"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let mut moments = None;
-    let mut samples = Vec::new();
-    for line in text.lines() {
-        if let Some(rest) = line.strip_prefix("# I = (") {
-            let v: Vec<f64> = rest
-                .trim_end_matches(')')
-                .split(',')
-                .map(|x| x.trim().parse().unwrap())
-                .collect();
-            moments = Some(DVec3::new(v[0], v[1], v[2]));
-        } else if !line.starts_with('#') && !line.starts_with('t') && !line.is_empty() {
-            let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
-            samples.push((
-                v[0],
-                DQuat::from_xyzw(v[2], v[3], v[4], v[1]),
-                DVec3::new(v[5], v[6], v[7]),
-            ));
-        }
-    }
-    Reference {
-        moments: moments.expect("an `# I = (…)` line"),
-        samples,
-    }
-}
 
 /// Attitude error (rad) and relative L error at the sample nearest `t_end`,
 /// integrating with step `h` from the first sample.

@@ -2,6 +2,7 @@
 //! and meshes of primitive solids ([`shapes`]).
 #![allow(dead_code)]
 
+pub mod free_body;
 pub mod shapes;
 
 use std::path::PathBuf;
