@@ -190,6 +190,31 @@ pub enum CliError {
         /// The total volume of the bodies, m³.
         volume: f64,
     },
+    /// The scene file of `kreisel simulate` cannot be read.
+    #[error("cannot read scene file {}: {source}", path.display())]
+    ReadScene {
+        /// The path as given.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// A problem in the scene file: `SCENE:LINE: message` (`SCENE: message`
+    /// for a problem of the file as a whole).
+    #[error("{}{}: {message}", path.display(), line.map(|l| format!(":{l}")).unwrap_or_default())]
+    Scene {
+        /// The scene file as given.
+        path: PathBuf,
+        /// The 1-based line of the offending key or table, when there is one.
+        line: Option<u64>,
+        /// What is wrong, naming the key (one line).
+        message: String,
+    },
+    /// `--method` names no known method.
+    #[error("--method: {message}")]
+    Method {
+        /// What is wrong, listing the known methods.
+        message: String,
+    },
 }
 
 /// Why the mass properties of one body of a mesh file cannot be computed.

@@ -12,6 +12,7 @@ mod error;
 mod inertia;
 mod numbers;
 mod representation;
+mod simulate;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -25,7 +26,8 @@ const AFTER_HELP: &str = "\
 Examples:
   echo '0 0 1.5707963267948966' | kreisel convert --from rotvec --to quat
   kreisel inertia part.stl --units mm --density 2700
-  kreisel inertia assets/t_handle.obj --format urdf";
+  kreisel inertia assets/t_handle.obj --format urdf
+  kreisel simulate scene.toml --output run.csv";
 
 /// Rigid-body rotations from the command line.
 #[derive(Debug, Parser)]
@@ -50,6 +52,9 @@ enum Command {
     /// Mass, centre of mass, inertia tensor and principal axes of a mesh file
     /// (STL, OBJ, PLY, glTF), as text, JSON, URDF, SDFormat or MJCF
     Inertia(inertia::InertiaArgs),
+    /// Integrate the torque-free rotation of the bodies of a TOML scene and
+    /// write their states as CSV
+    Simulate(simulate::SimulateArgs),
 }
 
 /// Runs the chosen subcommand.
@@ -57,6 +62,7 @@ fn dispatch(command: &Command) -> Result<(), CliError> {
     match command {
         Command::Convert(args) => convert::run(args),
         Command::Inertia(args) => inertia::run(args),
+        Command::Simulate(args) => simulate::run(args),
     }
 }
 
@@ -152,5 +158,25 @@ mod tests {
         }
         let help = Cli::command().render_help().to_string();
         assert!(help.contains("kreisel inertia"), "{help}");
+    }
+
+    #[test]
+    fn parses_simulate_arguments() {
+        let parse = |args: &[&str]| {
+            let mut all = vec!["kreisel", "simulate"];
+            all.extend_from_slice(args);
+            Cli::try_parse_from(all)
+        };
+        let cli = parse(&["s.toml", "--method", "rk4", "--output", "o.csv"]).unwrap();
+        let Command::Simulate(args) = cli.command else {
+            panic!("not simulate");
+        };
+        assert_eq!(args.scene.as_deref(), Some(std::path::Path::new("s.toml")));
+        assert_eq!(args.method.as_deref(), Some("rk4"));
+        assert!(!args.list_methods);
+        // --list-methods needs no scene; anything else does.
+        assert!(parse(&["--list-methods"]).is_ok());
+        assert_eq!(parse(&[]).unwrap_err().exit_code(), 2);
+        assert_eq!(parse(&["--method", "rk4"]).unwrap_err().exit_code(), 2);
     }
 }

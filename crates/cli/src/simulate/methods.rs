@@ -1,0 +1,140 @@
+//! The integration methods by name: `auto`, the library's registry, and a
+//! one-line description of each for `--list-methods`.
+
+#![forbid(unsafe_code)]
+
+use std::io::{self, Write};
+
+use kreisel_dynamics::{FreeBodyIntegrator, METHODS, method};
+
+/// The name that stands for the recommended method (the default).
+pub const AUTO: &str = "auto";
+
+/// What `auto` runs: the library's choice (`kreisel_dynamics::AUTO`, the
+/// 8th-order composition of the exact-rotation splitting).
+pub const DEFAULT_METHOD: &str = kreisel_dynamics::AUTO;
+
+/// One line about each method of the registry, shown by `--list-methods`.
+const DESCRIPTIONS: [(&str, &str); 6] = [
+    (
+        "rk4",
+        "classical Runge-Kutta on L and q, the baseline; energy, |L| and |q| drift",
+    ),
+    (
+        "strang",
+        "five exact rotations about the principal axes, Strang-composed",
+    ),
+    (
+        "splitting",
+        "exact symmetric top plus one exact axis rotation (Dullweber, Leimkuhler, McLachlan)",
+    ),
+    (
+        "splitting4",
+        "Suzuki's 5-stage symmetric composition of splitting",
+    ),
+    (
+        "splitting6",
+        "Kahan and Li's 9-stage symmetric composition of splitting",
+    ),
+    (
+        "splitting8",
+        "Kahan and Li's 17-stage symmetric composition of splitting",
+    ),
+];
+
+/// The registry's names without `auto` (listed first, separately).
+fn registry() -> impl Iterator<Item = &'static str> {
+    METHODS.into_iter().filter(|&name| name != AUTO)
+}
+
+/// Every name accepted by `method` and `--method`, comma-separated.
+pub fn known_names() -> String {
+    let mut names = vec![AUTO];
+    names.extend(registry());
+    names.join(", ")
+}
+
+/// The integrator called `name` (`auto` is [`DEFAULT_METHOD`]).
+///
+/// # Errors
+/// A message naming the method and listing the known ones.
+pub fn integrator(name: &str) -> Result<Box<dyn FreeBodyIntegrator>, String> {
+    let resolved = if name == AUTO { DEFAULT_METHOD } else { name };
+    match method(resolved) {
+        Ok(integrator) => Ok(integrator),
+        Err(_) => Err(format!(
+            "unknown method `{name}` (known: {})",
+            known_names()
+        )),
+    }
+}
+
+/// The description of a registry method (a placeholder for a method added
+/// to the library but not yet to the table).
+fn description(name: &str) -> &'static str {
+    DESCRIPTIONS
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map_or("(no description yet)", |(_, d)| d)
+}
+
+/// Writes one line per method: name, order, description; `auto` first,
+/// marked as the default.
+///
+/// # Errors
+/// The writer's errors.
+pub fn write_list<W: Write + ?Sized>(out: &mut W) -> io::Result<()> {
+    writeln!(out, "{:<12}{:>5}  DESCRIPTION", "NAME", "ORDER")?;
+    let order = |name: &str| method(name).map_or(0, |m| m.order());
+    writeln!(
+        out,
+        "{AUTO:<12}{:>5}  the default; runs {DEFAULT_METHOD} (the highest order)",
+        order(DEFAULT_METHOD)
+    )?;
+    for name in registry() {
+        writeln!(out, "{name:<12}{:>5}  {}", order(name), description(name))?;
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_registry_method_is_described_and_resolves() {
+        for name in registry() {
+            assert_ne!(description(name), "(no description yet)", "{name}");
+            assert_eq!(integrator(name).unwrap().name(), name);
+        }
+        assert_eq!(integrator(AUTO).unwrap().name(), DEFAULT_METHOD);
+        assert_eq!(
+            DEFAULT_METHOD, "splitting8",
+            "update the help and descriptions"
+        );
+        assert_eq!(DESCRIPTIONS.len(), registry().count());
+    }
+
+    #[test]
+    fn unknown_method_lists_the_known_ones() {
+        let e = integrator("euler").err().unwrap();
+        assert!(
+            e.starts_with("unknown method `euler` (known: auto, rk4,"),
+            "{e}"
+        );
+        assert!(e.contains("splitting8"), "{e}");
+    }
+
+    #[test]
+    fn list_has_a_line_per_method() {
+        let mut out = Vec::new();
+        write_list(&mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert_eq!(text.lines().count(), 2 + registry().count());
+        assert!(
+            text.contains("auto            8  the default; runs splitting8"),
+            "{text}"
+        );
+        assert!(text.contains("rk4             4  classical"), "{text}");
+    }
+}

@@ -1,0 +1,292 @@
+//! The scene file: TOML text → a checked [`Scene`], or one error naming the
+//! file, the line and the key.
+//!
+//! serde reads the text into raw structs (unknown keys, missing keys and
+//! wrong types are its errors, with toml's span of the offending key or
+//! table); every value is kept with its span, so the checks that follow
+//! (positive, finite, physical) can name the line too.
+
+#![forbid(unsafe_code)]
+
+use std::ops::Range;
+use std::path::Path;
+
+use glam::DVec3;
+use serde::Deserialize;
+use toml::Spanned;
+
+use super::body::{RawBody, SimBody};
+use super::methods;
+use super::schedule::{INTERVAL_TOLERANCE, MAX_STEPS, Schedule, ScheduleProblem};
+use crate::error::{CliError, one_line};
+use crate::numbers::Shortest;
+
+/// The whole file as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScene {
+    simulation: Spanned<RawSimulation>,
+    #[serde(default)]
+    body: Vec<Spanned<RawBody>>,
+}
+
+/// The `[simulation]` table as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSimulation {
+    duration: Spanned<f64>,
+    dt: Spanned<f64>,
+    method: Option<Spanned<String>>,
+    output_interval: Option<Spanned<f64>>,
+    gravity: Option<Spanned<[f64; 3]>>,
+}
+
+/// A checked scene, ready to run.
+#[derive(Debug, Clone)]
+pub struct Scene {
+    /// The steps and the rows written.
+    pub schedule: Schedule,
+    /// The `method` key, a known name; `None` when not given.
+    pub method: Option<String>,
+    /// Gravitational acceleration, m/s² (zero when not given).
+    pub gravity: DVec3,
+    /// The bodies in file order, with distinct names.
+    pub bodies: Vec<SimBody>,
+}
+
+/// The scene's path and text: turns spans into line numbers for errors.
+#[derive(Debug, Clone, Copy)]
+pub struct SceneFile<'a> {
+    /// The path as given on the command line.
+    pub path: &'a Path,
+    /// The whole text.
+    pub text: &'a str,
+}
+
+impl SceneFile<'_> {
+    /// The 1-based line holding byte `offset`.
+    fn line_of(&self, offset: usize) -> u64 {
+        let end = offset.min(self.text.len());
+        1 + self.text.as_bytes()[..end]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count() as u64
+    }
+
+    /// An error at the start of `span` (`None`: the file as a whole).
+    pub fn error(&self, span: Option<Range<usize>>, message: &str) -> CliError {
+        CliError::Scene {
+            path: self.path.to_owned(),
+            line: span.map(|s| self.line_of(s.start)),
+            message: one_line(message),
+        }
+    }
+}
+
+/// Checks of the values of one table, each error prefixed with its context
+/// (`body `handle`: `).
+#[derive(Debug, Clone)]
+pub struct Keys<'a> {
+    file: SceneFile<'a>,
+    prefix: String,
+}
+
+impl<'a> Keys<'a> {
+    /// Checks whose errors start with `prefix`.
+    pub fn new(file: SceneFile<'a>, prefix: String) -> Self {
+        Self { file, prefix }
+    }
+
+    /// An error at the line of `span`.
+    pub fn fail_at(&self, span: Range<usize>, message: &str) -> CliError {
+        self.file
+            .error(Some(span), &format!("{}{message}", self.prefix))
+    }
+
+    /// An error at the line of `value`.
+    pub fn fail<T>(&self, value: &Spanned<T>, message: &str) -> CliError {
+        self.fail_at(value.span(), message)
+    }
+
+    /// The value of `key`, which must be positive and finite.
+    pub fn positive(&self, key: &str, value: &Spanned<f64>) -> Result<f64, CliError> {
+        let v = *value.get_ref();
+        if v.is_finite() && v > 0.0 {
+            Ok(v)
+        } else {
+            let message = format!("`{key}` must be positive and finite, got {}", Shortest(v));
+            Err(self.fail(value, &message))
+        }
+    }
+
+    /// The value of `key`, which must be finite numbers.
+    pub fn finite<const N: usize>(
+        &self,
+        key: &str,
+        value: &Spanned<[f64; N]>,
+    ) -> Result<[f64; N], CliError> {
+        let v = *value.get_ref();
+        if v.iter().all(|x| x.is_finite()) {
+            Ok(v)
+        } else {
+            Err(self.fail(value, &format!("`{key}` must be finite numbers")))
+        }
+    }
+
+    /// The value of `key`, a vector of three finite numbers.
+    pub fn vector(&self, key: &str, value: &Spanned<[f64; 3]>) -> Result<DVec3, CliError> {
+        self.finite(key, value).map(DVec3::from_array)
+    }
+}
+
+/// Reads and checks a scene; mesh paths are relative to the scene's folder.
+///
+/// # Errors
+/// [`CliError::Scene`] for the first problem found, naming its line and key
+/// when there is one. Mesh files are loaded here, so their errors too.
+pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
+    let file = SceneFile { path, text };
+    let raw: RawScene =
+        toml::from_str(text).map_err(|e| file.error(e.span(), &toml_message(&e)))?;
+    let sim = raw.simulation.get_ref();
+    let keys = Keys::new(file, String::new());
+    let duration = keys.positive("duration", &sim.duration)?;
+    let dt = keys.positive("dt", &sim.dt)?;
+    let interval = match &sim.output_interval {
+        Some(v) => Some(keys.positive("output_interval", v)?),
+        None => None,
+    };
+    let schedule = Schedule::new(duration, dt, interval).map_err(|problem| match problem {
+        ScheduleProblem::TooManySteps { ratio } => keys.fail(
+            &sim.dt,
+            &format!(
+                "`duration` / `dt` = {} steps is more than the limit of {MAX_STEPS}; \
+                 increase `dt` or shorten `duration`",
+                Shortest(ratio.ceil())
+            ),
+        ),
+        ScheduleProblem::IntervalNotMultiple { ratio } => keys.fail(
+            sim.output_interval.as_ref().map_or(&sim.dt, |v| v),
+            &format!(
+                "`output_interval` must be a whole multiple of `dt` \
+                 (within {INTERVAL_TOLERANCE:e} relative), but it is {} times `dt`",
+                Shortest(ratio)
+            ),
+        ),
+    })?;
+    let method = match &sim.method {
+        Some(name) => match methods::integrator(name.get_ref()) {
+            Ok(_) => Some(name.get_ref().clone()),
+            Err(message) => return Err(keys.fail(name, &format!("`method`: {message}"))),
+        },
+        None => None,
+    };
+    let gravity = match &sim.gravity {
+        Some(g) => keys.vector("gravity", g)?,
+        None => DVec3::ZERO,
+    };
+    if raw.body.is_empty() {
+        let message = "the scene has no bodies: add a [[body]] table";
+        return Err(file.error(None, message));
+    }
+    let folder = path.parent().unwrap_or(Path::new(""));
+    let mut bodies: Vec<SimBody> = Vec::with_capacity(raw.body.len());
+    for (n, raw_body) in raw.body.iter().enumerate() {
+        let body = SimBody::from_raw(file, raw_body, n + 1, folder)?;
+        if bodies.iter().any(|other| other.name == body.name) {
+            let span = raw_body.get_ref().name_span().unwrap_or(raw_body.span());
+            let message = format!("body name `{}` is used twice; names must differ", body.name);
+            return Err(file.error(Some(span), &message));
+        }
+        bodies.push(body);
+    }
+    Ok(Scene {
+        schedule,
+        method,
+        gravity,
+        bodies,
+    })
+}
+
+/// toml's message, prefixed with the dotted key it concerns when toml
+/// knows it (`body.mass`: invalid type: …).
+fn toml_message(error: &toml::de::Error) -> String {
+    // Without the input, toml's Display appends the key path as "in `a.b`".
+    let mut bare = error.clone();
+    bare.set_input(None);
+    let shown = bare.to_string();
+    let key = shown
+        .lines()
+        .find_map(|line| line.strip_prefix("in `")?.strip_suffix('`'));
+    let message = error.message();
+    match key {
+        Some("body") if message.starts_with("invalid type: map") => {
+            format!("`body`: {message}: write [[body]], one table per body")
+        }
+        Some(key) if !key.is_empty() => format!("`{key}`: {message}"),
+        _ => message.to_owned(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn error(text: &str) -> String {
+        match parse(Path::new("s.toml"), text) {
+            Ok(_) => panic!("accepted:\n{text}"),
+            Err(e) => e.to_string(),
+        }
+    }
+
+    const SIM: &str = "[simulation]\nduration = 1.0\ndt = 0.1\n";
+
+    #[test]
+    fn reads_a_minimal_scene() {
+        let text =
+            format!("{SIM}[[body]]\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0, 1, 0]\n");
+        let scene = parse(Path::new("s.toml"), &text).unwrap();
+        assert_eq!(scene.schedule.steps(), 10);
+        assert_eq!((scene.method, scene.gravity), (None, DVec3::ZERO));
+        assert_eq!(scene.bodies[0].name, "body1");
+    }
+
+    #[test]
+    fn errors_name_line_and_key() {
+        let e = error("[simulation]\nduration = 1.0\ndt = 0.1\nspeed = 2\n");
+        assert!(
+            e.starts_with("s.toml:4: `simulation`: unknown field `speed`"),
+            "{e}"
+        );
+        let e = error("[simulation]\nduration = 1.0\ndt = -0.1\n");
+        assert_eq!(e, "s.toml:3: `dt` must be positive and finite, got -0.1");
+        let e = error("[simulation]\nduration = 1.0\ndt = 0.1\nmethod = \"euler\"\n");
+        assert!(
+            e.starts_with("s.toml:4: `method`: unknown method `euler` (known: auto,"),
+            "{e}"
+        );
+        let e = error(SIM);
+        assert_eq!(e, "s.toml: the scene has no bodies: add a [[body]] table");
+        let e = error("[simulation]\nduration = 1e10\ndt = 1\n");
+        assert!(
+            e.starts_with("s.toml:3: `duration` / `dt` = 10000000000 steps"),
+            "{e}"
+        );
+        let e = error("[simulation]\nduration = 1\ndt = 0.1\noutput_interval = 0.25\n");
+        assert!(
+            e.starts_with("s.toml:4: `output_interval` must be a whole multiple"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn body_names_must_differ() {
+        let body =
+            "[[body]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 1]\nangular_velocity = [0, 0, 1]\n";
+        let e = error(&format!("{SIM}{body}{body}"));
+        assert!(
+            e.starts_with("s.toml:10: body name `a` is used twice"),
+            "{e}"
+        );
+    }
+}

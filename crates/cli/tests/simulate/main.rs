@@ -1,0 +1,11 @@
+//! Integration tests of `kreisel simulate`, run through the real binary:
+//! the CSV's shape, the physics against closed forms and reference periods,
+//! mesh bodies and gravity, and one-line errors for bad scenes.
+//!
+//! Run with `cargo test -p kreisel-cli --test simulate -- --nocapture` to see
+//! the measured errors and flip intervals.
+
+mod errors;
+mod output;
+mod physics;
+mod support;
