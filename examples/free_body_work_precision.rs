@@ -23,7 +23,14 @@ fn main() {
     let &(t_end, q_ref, _) = r.samples.last().unwrap_or(&r.samples[0]);
     println!("| method | dt (s) | steps | attitude error at t = {t_end} s (rad) | ns per step |");
     println!("|---|---|---|---|---|");
-    for name in ["rk4", "strang", "splitting", "splitting4", "splitting6", "splitting8"] {
+    for name in [
+        "rk4",
+        "strang",
+        "splitting",
+        "splitting4",
+        "splitting6",
+        "splitting8",
+    ] {
         let m = method(name).unwrap_or_else(|e| panic!("{e}"));
         for steps_per_second in [10.0, 20.0, 60.0, 100.0, 1000.0] {
             let h = 1.0 / steps_per_second;
@@ -33,7 +40,8 @@ fn main() {
                     world_from_principal: q0,
                     l_principal: l0,
                 };
-                integrate(m.as_ref(), r.moments, &mut s, h, steps).unwrap_or_else(|e| panic!("{e}"));
+                integrate(m.as_ref(), r.moments, &mut s, h, steps)
+                    .unwrap_or_else(|e| panic!("{e}"));
                 s
             };
             let error = rotation_angle_between(run().world_from_principal, q_ref);
@@ -46,7 +54,10 @@ fn main() {
                 })
                 .collect();
             times.sort_by(f64::total_cmp);
-            println!("| {name} | 1/{steps_per_second} | {steps} | {error:.2e} | {:.0} |", times[2]);
+            println!(
+                "| {name} | 1/{steps_per_second} | {steps} | {error:.2e} | {:.0} |",
+                times[2]
+            );
         }
     }
 }
