@@ -145,6 +145,7 @@ fn conservation_over_a_million_steps() {
         };
         let mut fit = [0.0f64; 5]; // Σt, ΣΔE, Σt², ΣtΔE, n
         let (mut first_half, mut second_half, mut worst_l): (f64, f64, f64) = (0.0, 0.0, 0.0);
+        let l_world0 = s.l_world();
         const STEPS: u32 = 1_000_000;
         for k in 1..=STEPS {
             m.step(r.moments, &mut s, h);
@@ -172,6 +173,11 @@ fn conservation_over_a_million_steps() {
             worst_l < 2e-12 * l0.length(),
             "{name}: |L| drifted by {worst_l:e}"
         );
+        // Regression: L_world evaluated with the (slowly de-normalised)
+        // attitude drifted linearly, 4e-10 after 10⁶ steps of splitting8.
+        let dl_world = (s.l_world() - l_world0).length() / l0.length();
+        eprintln!("{name}: L_world drift {dl_world:.2e}");
+        assert!(dl_world < 2e-12, "{name}: L_world drifted by {dl_world:e}");
         assert!(
             second_half <= 1.05 * first_half + 1e-13 * e0,
             "{name}: energy error grows"

@@ -98,9 +98,14 @@ impl PrincipalState {
     /// Angular momentum in world axes (constant for a free body).
     ///
     /// ```text
-    /// L_w = q_wp L_p q_wp⁻¹
+    /// L_w = q̂ L_p q̂⁻¹,   q̂ = q_wp / |q_wp|
     /// ```
+    ///
+    /// The attitude is normalised for the evaluation only (the state is not
+    /// changed): after 10⁷ exact rotations `|q|` has wandered from 1 by
+    /// rounding, and a unit-quaternion formula would report that as a drift
+    /// of `L_w`.
     pub fn l_world(&self) -> DVec3 {
-        self.world_from_principal * self.l_principal
+        self.world_from_principal.normalize() * self.l_principal
     }
 }
