@@ -27,12 +27,14 @@
 #![forbid(unsafe_code)]
 
 mod composition;
+pub mod elliptic;
 mod error;
 mod integrator;
 mod rigid_body;
 mod rk4;
 #[doc(hidden)]
 pub mod splitting;
+mod stability;
 mod state;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
@@ -41,4 +43,5 @@ pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, integrate, method};
 pub use rigid_body::RigidBody;
 pub use rk4::Rk4;
 pub use splitting::{AxisStrang, SymmetricTopSplitting};
+pub use stability::{AxisStability, EllipticMotion, axis_stability, elliptic_motion};
 pub use state::PrincipalState;

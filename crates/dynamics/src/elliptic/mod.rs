@@ -93,7 +93,7 @@
 mod agm;
 mod carlson;
 mod complete;
-mod dd;
+pub(crate) mod dd;
 mod incomplete;
 mod jacobi;
 

@@ -1,0 +1,155 @@
+//! Stability of steady rotation about a principal axis (notes §3.7) and the
+//! exact period of the body-frame motion (Landau & Lifshitz, *Mechanics*, §37).
+
+use glam::DVec3;
+
+use crate::elliptic::complete_k_complementary;
+use crate::elliptic::dd::Dd;
+
+/// The linearised behaviour of a small perturbation of steady spin about a
+/// principal axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AxisStability {
+    /// The perturbation oscillates with this angular frequency (rad/s): the
+    /// axis of the largest or smallest moment.
+    Stable {
+        /// Angular frequency of the oscillation, rad/s.
+        frequency: f64,
+    },
+    /// The perturbation grows like `e^{λ t}`: the intermediate axis.
+    Unstable {
+        /// The growth rate λ, 1/s.
+        growth_rate: f64,
+    },
+    /// λ² = 0: two equal moments (symmetric body) or no spin; the linear
+    /// analysis does not decide.
+    Neutral,
+}
+
+/// Linear stability of steady rotation at rate `omega` about principal axis `axis`.
+///
+/// ```text
+/// λ² = Ω² (I_a − I_b)(I_c − I_a) / (I_b I_c),   (a, b, c) = (axis, axis+1, axis+2) mod 3
+/// λ² > 0: unstable, growth rate λ;   λ² < 0: stable, frequency √(−λ²)
+/// ```
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{axis_stability, AxisStability};
+/// let moments = DVec3::new(1.0, 2.0, 3.0);
+/// // The intermediate axis is unstable: λ² = 1·(2−3)(1−2)/(3·1) = 1/3.
+/// match axis_stability(moments, 1, 1.0) {
+///     AxisStability::Unstable { growth_rate } => assert!((growth_rate - (1.0f64 / 3.0).sqrt()).abs() < 1e-15),
+///     other => panic!("{other:?}"),
+/// }
+/// assert!(matches!(axis_stability(moments, 2, 1.0), AxisStability::Stable { .. }));
+/// ```
+pub fn axis_stability(moments: DVec3, axis: usize, omega: f64) -> AxisStability {
+    let m = moments.to_array();
+    let (a, b, c) = (axis % 3, (axis + 1) % 3, (axis + 2) % 3);
+    let lambda2 = omega * omega * (m[a] - m[b]) * (m[c] - m[a]) / (m[b] * m[c]);
+    if lambda2 > 0.0 {
+        AxisStability::Unstable {
+            growth_rate: lambda2.sqrt(),
+        }
+    } else if lambda2 < 0.0 {
+        AxisStability::Stable {
+            frequency: (-lambda2).sqrt(),
+        }
+    } else {
+        AxisStability::Neutral
+    }
+}
+
+/// The periodic body-frame motion of a free asymmetric body, in the terms
+/// of its elliptic-function solution.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EllipticMotion {
+    /// Index of the principal axis the angular momentum circulates about
+    /// (the smallest or the largest moment).
+    pub axis: usize,
+    /// The frequency scale λ of `sn(λt | m)`, 1/s.
+    pub lambda: f64,
+    /// The complementary parameter `m_c = 1 − m` (0 on the separatrix).
+    pub complementary_parameter: f64,
+    /// Period of ω(t) in the body frame, `4K/λ`, s.
+    pub period: f64,
+    /// Time between successive sign changes of the components that change
+    /// sign (the flips of the Dzhanibekov effect), `2K/λ`, s.
+    pub half_period: f64,
+}
+
+/// The elliptic motion of a free body with angular momentum `l_principal`,
+/// or `None` for steady rotation about a principal axis, the separatrix, or a
+/// body with two equal moments (whose motion is a uniform precession).
+///
+/// ```text
+/// sort I₁ < I₂ < I₃;  Δⱼ = Σₖ Lₖ² (Iₖ − Iⱼ)/Iₖ = L² − 2EIⱼ  (in double-double: Δ₂ cancels)
+/// Δ₁ = L² − 2EI₁,  Δ₂ = L² − 2EI₂,  Δ₃ = 2EI₃ − L²
+/// Δ₂ > 0 (about I₃):  λ² = (I₃−I₂)Δ₁/(I₁I₂I₃),  m_c = (I₃−I₁)Δ₂/((I₃−I₂)Δ₁)
+/// Δ₂ < 0 (about I₁):  λ² = (I₂−I₁)Δ₃/(I₁I₂I₃),  m_c = (I₃−I₁)(−Δ₂)/((I₂−I₁)Δ₃)
+/// period = 4K(m)/λ,   K from m_c (accurate next to the separatrix)
+/// ```
+///
+/// Landau & Lifshitz, *Mechanics*, §37.
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::elliptic_motion;
+/// // Hairer–Lubich–Wanner's body: L circulates about the minor axis, period 22.5825742… s.
+/// let m = elliptic_motion(DVec3::new(0.5, 0.85, 1.0), DVec3::new(1.1f64.cos(), 0.0, 1.1f64.sin())).unwrap();
+/// assert_eq!(m.axis, 0);
+/// assert!((m.period - 22.582574242509807).abs() < 1e-12);
+/// ```
+pub fn elliptic_motion(moments: DVec3, l_principal: DVec3) -> Option<EllipticMotion> {
+    let m = moments.to_array();
+    let l = l_principal.to_array();
+    let mut idx = [0, 1, 2];
+    idx.sort_by(|&i, &j| m[i].total_cmp(&m[j]));
+    let [i1, i2, i3] = idx.map(|k| m[k]);
+    let [l1, l2, l3] = idx.map(|k| l[k]);
+    if !(i1 < i2 && i2 < i3) {
+        return None;
+    }
+    // Δ₂ is a difference of two terms that nearly cancel next to the
+    // separatrix: evaluate all three in double-double from the exact inputs,
+    // so m_c keeps full relative accuracy however small it is.
+    let term = |l: f64, ik: f64, ij: f64| {
+        let l = Dd::from_f64(l);
+        l.mul(l)
+            .mul(Dd::from_f64(ik).add(Dd::from_f64(ij).neg()))
+            .div(Dd::from_f64(ik))
+    };
+    let d1 = term(l2, i2, i1).add(term(l3, i3, i1)).to_f64();
+    let d2 = term(l1, i1, i2).add(term(l3, i3, i2)).to_f64();
+    let d3 = term(l1, i1, i3).neg().add(term(l2, i2, i3).neg()).to_f64();
+    let product = i1 * i2 * i3;
+    let (axis, lambda2, mc) = if d2 > 0.0 {
+        (
+            idx[2],
+            (i3 - i2) * d1 / product,
+            (i3 - i1) * d2 / ((i3 - i2) * d1),
+        )
+    } else if d2 < 0.0 {
+        (
+            idx[0],
+            (i2 - i1) * d3 / product,
+            (i3 - i1) * -d2 / ((i2 - i1) * d3),
+        )
+    } else {
+        return None;
+    };
+    let lambda = lambda2.sqrt();
+    // m_c = 1: steady spin about the axis itself (no motion to time).
+    if !(lambda > 0.0 && mc > 0.0 && mc < 1.0 + 1e-15) {
+        return None;
+    }
+    let k = complete_k_complementary(mc.min(1.0));
+    Some(EllipticMotion {
+        axis,
+        lambda,
+        complementary_parameter: mc,
+        period: 4.0 * k / lambda,
+        half_period: 2.0 * k / lambda,
+    })
+}
