@@ -143,8 +143,8 @@ fn open_input(path: Option<&Path>) -> Result<(Box<dyn BufRead>, Stream), CliErro
 }
 
 /// Standard output, or the file at `path` (created or truncated), unless it
-/// is the input file.
-fn open_output(
+/// is the input file (shared by the subcommands that write a stream).
+pub(crate) fn open_output(
     path: Option<&Path>,
     input: Option<&Path>,
 ) -> Result<(Box<dyn Write>, Stream), CliError> {

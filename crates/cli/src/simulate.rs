@@ -15,9 +15,9 @@ mod progress;
 mod scene;
 mod schedule;
 
-use std::fs::{self, File};
+use std::fs;
 use std::io::{self, BufWriter, Write};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use kreisel_dynamics::{FreeBodyIntegrator, PrincipalState};
 
@@ -150,7 +150,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             methods::integrator(name).map_err(|message| CliError::Method { message })?
         }
     };
-    let (writer, output) = open_output(args.output.as_deref(), scene_path)?;
+    let (writer, output) = crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
     let mut progress = Progress::new(
         scene.schedule.steps(),
         Progress::wanted(output == Stream::Standard),
@@ -179,26 +179,6 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
         output: output.clone(),
         source,
     }
-}
-
-/// Standard output, or the file at `path` (created or truncated) unless it
-/// is the scene file.
-fn open_output(path: Option<&Path>, scene: &Path) -> Result<(Box<dyn Write>, Stream), CliError> {
-    let Some(path) = path else {
-        return Ok((Box::new(io::stdout().lock()), Stream::Standard));
-    };
-    if let (Ok(a), Ok(b)) = (fs::canonicalize(scene), fs::canonicalize(path))
-        && a == b
-    {
-        return Err(CliError::OutputIsInput {
-            path: path.to_owned(),
-        });
-    }
-    let file = File::create(path).map_err(|source| CliError::CreateOutput {
-        path: path.to_owned(),
-        source,
-    })?;
-    Ok((Box::new(file), Stream::File(path.to_owned())))
 }
 
 /// Steps every body through the schedule, writing the rows it asks for.
