@@ -1,6 +1,9 @@
 //! Running the `kreisel` binary from a test, shared by the test targets
 //! (`#[path]`-included, so each target gets its own copy of the module).
 
+// Each test target uses its own subset of these helpers.
+#![allow(dead_code)]
+
 use std::io::Write;
 use std::process::{Command, Stdio};
 
@@ -15,6 +18,26 @@ pub struct Run {
     pub stdout: String,
     /// Standard error.
     pub stderr: String,
+}
+
+impl Run {
+    /// Asserts a failure with exit status `code` and one `kreisel: error:`
+    /// line on standard error (and nothing on standard output); returns it.
+    pub fn error_line(&self, code: i32) -> &str {
+        assert_eq!(
+            self.code,
+            Some(code),
+            "stdout: {}\nstderr: {}",
+            self.stdout,
+            self.stderr
+        );
+        assert!(!self.stderr.contains("panicked"), "{}", self.stderr);
+        assert!(self.stdout.is_empty(), "stdout: {}", self.stdout);
+        let lines: Vec<&str> = self.stderr.lines().collect();
+        assert_eq!(lines.len(), 1, "stderr: {}", self.stderr);
+        assert!(lines[0].starts_with("kreisel: error: "), "{}", lines[0]);
+        lines[0]
+    }
 }
 
 /// Runs `kreisel` with `args`, feeding `stdin` (from a thread, so large

@@ -85,24 +85,6 @@ impl Run {
         assert!(self.stderr.is_empty(), "stderr: {}", self.stderr);
         parse_csv(&self.stdout)
     }
-
-    /// Asserts a failure with exit status `code` and one `kreisel: error:`
-    /// line on standard error (and nothing on standard output); returns it.
-    pub fn error_line(&self, code: i32) -> &str {
-        assert_eq!(
-            self.code,
-            Some(code),
-            "stdout: {}\nstderr: {}",
-            self.stdout,
-            self.stderr
-        );
-        assert!(!self.stderr.contains("panicked"), "{}", self.stderr);
-        assert!(self.stdout.is_empty(), "stdout: {}", self.stdout);
-        let lines: Vec<&str> = self.stderr.lines().collect();
-        assert_eq!(lines.len(), 1, "stderr: {}", self.stderr);
-        assert!(lines[0].starts_with("kreisel: error: "), "{}", lines[0]);
-        lines[0]
-    }
 }
 
 /// The rows of CSV text whose first line must be [`HEADER`].
