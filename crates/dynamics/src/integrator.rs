@@ -52,7 +52,7 @@ pub fn integrate(
 
 /// The names the registry knows: `auto`, then the methods in order of
 /// increasing accuracy per cost.
-pub const METHODS: [&str; 7] = [
+pub const METHODS: [&str; 12] = [
     "auto",
     "rk4",
     "strang",
@@ -60,6 +60,11 @@ pub const METHODS: [&str; 7] = [
     "splitting4",
     "splitting6",
     "splitting8",
+    "dmv",
+    "pdmv4",
+    "pdmv6",
+    "pdmv8",
+    "pdmv10",
 ];
 
 /// What `auto` resolves to: the 8th-order composition of the exact-rotation
@@ -92,6 +97,11 @@ pub fn method(name: &str) -> Result<Box<dyn FreeBodyIntegrator>, DynamicsError> 
         "splitting4" => Box::new(Composition::new("splitting4", 4, &SUZUKI_4)),
         "splitting6" => Box::new(Composition::new("splitting6", 6, &KAHAN_LI_6)),
         "splitting8" => Box::new(Composition::new("splitting8", 8, &KAHAN_LI_8)),
+        "dmv" => Box::new(crate::MoserVeselov),
+        "pdmv4" => Box::new(crate::PreprocessedMoserVeselov::ORDER_4),
+        "pdmv6" => Box::new(crate::PreprocessedMoserVeselov::ORDER_6),
+        "pdmv8" => Box::new(crate::PreprocessedMoserVeselov::ORDER_8),
+        "pdmv10" => Box::new(crate::PreprocessedMoserVeselov::ORDER_10),
         _ => {
             return Err(DynamicsError::UnknownMethod {
                 name: name.to_owned(),

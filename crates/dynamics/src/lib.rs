@@ -30,6 +30,8 @@ mod composition;
 pub mod elliptic;
 mod error;
 mod integrator;
+mod moser_veselov;
+mod moser_veselov_preprocessed;
 mod rigid_body;
 mod rk4;
 #[doc(hidden)]
@@ -40,6 +42,8 @@ mod state;
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use error::DynamicsError;
 pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, integrate, method};
+pub use moser_veselov::MoserVeselov;
+pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;
 pub use rigid_body::RigidBody;
 pub use rk4::Rk4;
 pub use splitting::{AxisStrang, SymmetricTopSplitting};
