@@ -13,6 +13,59 @@ pub trait FreeBodyIntegrator {
     fn order(&self) -> u32;
     /// Advances `state` by `h` seconds for principal moments `moments`.
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64);
+
+    /// One body from `state`, to be advanced step after step: what
+    /// [`integrate`] and `kreisel simulate` use. By default each
+    /// [`Propagator::advance`] is one [`FreeBodyIntegrator::step`]; a method
+    /// with per-body set-up (the exact solution) prepares it here once.
+    fn propagator<'a>(&'a self, moments: DVec3, state: PrincipalState) -> Box<dyn Propagator + 'a> {
+        Box::new(Stepping {
+            method: self,
+            moments,
+            state,
+        })
+    }
+}
+
+/// One body advanced by an integrator, step after step.
+///
+/// ```text
+/// xₙ₊₁ = Φₕ(xₙ)
+/// ```
+///
+/// ```
+/// use glam::{DQuat, DVec3};
+/// use kreisel_dynamics::{method, PrincipalState};
+/// let s0 = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 0.0, 2.0) };
+/// let strang = method("strang")?;
+/// let mut body = strang.propagator(DVec3::new(1.0, 1.0, 2.0), s0);
+/// body.advance(0.5);
+/// body.advance(0.5);
+/// assert!(kreisel_kinematics::rotation_angle_between(body.state().world_from_principal, DQuat::from_rotation_z(1.0)) < 1e-15);
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+pub trait Propagator {
+    /// Advances the body by `h` seconds.
+    fn advance(&mut self, h: f64);
+    /// The current state.
+    fn state(&self) -> PrincipalState;
+}
+
+/// The default propagator: repeated steps of a method.
+struct Stepping<'a, M: ?Sized> {
+    method: &'a M,
+    moments: DVec3,
+    state: PrincipalState,
+}
+
+impl<M: FreeBodyIntegrator + ?Sized> Propagator for Stepping<'_, M> {
+    fn advance(&mut self, h: f64) {
+        self.method.step(self.moments, &mut self.state, h);
+    }
+
+    fn state(&self) -> PrincipalState {
+        self.state
+    }
 }
 
 /// Advances `state` by `steps` steps of size `h`.
@@ -44,16 +97,19 @@ pub fn integrate(
     if !(h.is_finite() && h > 0.0) {
         return Err(DynamicsError::InvalidStep { h });
     }
+    let mut body = method.propagator(moments, *state);
     for _ in 0..steps {
-        method.step(moments, state, h);
+        body.advance(h);
     }
+    *state = body.state();
     Ok(())
 }
 
 /// The names the registry knows: `auto`, then the methods in order of
 /// increasing accuracy per cost.
-pub const METHODS: [&str; 12] = [
+pub const METHODS: [&str; 13] = [
     "auto",
+    "exact",
     "rk4",
     "strang",
     "splitting",
@@ -92,6 +148,7 @@ pub fn method(name: &str) -> Result<Box<dyn FreeBodyIntegrator>, DynamicsError> 
     Ok(match name {
         "auto" => return method(AUTO),
         "rk4" => Box::new(crate::Rk4),
+        "exact" => Box::new(crate::ExactFlow),
         "strang" => Box::new(AxisStrang),
         "splitting" => Box::new(SymmetricTopSplitting),
         "splitting4" => Box::new(Composition::new("splitting4", 4, &SUZUKI_4)),

@@ -29,6 +29,7 @@
 mod composition;
 pub mod elliptic;
 mod error;
+mod exact;
 mod integrator;
 mod moser_veselov;
 mod moser_veselov_preprocessed;
@@ -41,7 +42,8 @@ mod state;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use error::DynamicsError;
-pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, integrate, method};
+pub use exact::{ExactFlow, ExactPropagator, ExactSolution};
+pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};
 pub use moser_veselov::MoserVeselov;
 pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;
 pub use rigid_body::RigidBody;

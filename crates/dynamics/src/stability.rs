@@ -111,18 +111,7 @@ pub fn elliptic_motion(moments: DVec3, l_principal: DVec3) -> Option<EllipticMot
     if !(i1 < i2 && i2 < i3) {
         return None;
     }
-    // Δ₂ is a difference of two terms that nearly cancel next to the
-    // separatrix: evaluate all three in double-double from the exact inputs,
-    // so m_c keeps full relative accuracy however small it is.
-    let term = |l: f64, ik: f64, ij: f64| {
-        let l = Dd::from_f64(l);
-        l.mul(l)
-            .mul(Dd::from_f64(ik).add(Dd::from_f64(ij).neg()))
-            .div(Dd::from_f64(ik))
-    };
-    let d1 = term(l2, i2, i1).add(term(l3, i3, i1)).to_f64();
-    let d2 = term(l1, i1, i2).add(term(l3, i3, i2)).to_f64();
-    let d3 = term(l1, i1, i3).neg().add(term(l2, i2, i3).neg()).to_f64();
+    let [d1, d2, d3] = energy_deltas([i1, i2, i3], [l1, l2, l3]);
     let product = i1 * i2 * i3;
     let (axis, lambda2, mc) = if d2 > 0.0 {
         (
@@ -152,4 +141,29 @@ pub fn elliptic_motion(moments: DVec3, l_principal: DVec3) -> Option<EllipticMot
         period: 4.0 * k / lambda,
         half_period: 2.0 * k / lambda,
     })
+}
+
+/// The three differences `|L² − 2E Iⱼ|` of a body with sorted moments
+/// `I₁ < I₂ < I₃`, signed as `[Δ₁ ≥ 0, Δ₂, Δ₃ ≥ 0]`.
+///
+/// ```text
+/// Δ₁ = L² − 2EI₁,  Δ₂ = L² − 2EI₂,  Δ₃ = 2EI₃ − L²,   Δⱼ = ±Σₖ Lₖ² (Iₖ − Iⱼ)/Iₖ
+/// ```
+///
+/// Δ₂ is a difference of two terms that nearly cancel next to the
+/// separatrix: all three are evaluated in double-double from the exact
+/// inputs, so each keeps full relative accuracy however small it is.
+pub(crate) fn energy_deltas(moments: [f64; 3], l: [f64; 3]) -> [f64; 3] {
+    let [i1, i2, i3] = moments;
+    let [l1, l2, l3] = l;
+    let term = |l: f64, ik: f64, ij: f64| {
+        let l = Dd::from_f64(l);
+        l.mul(l)
+            .mul(Dd::from_f64(ik).add(Dd::from_f64(ij).neg()))
+            .div(Dd::from_f64(ik))
+    };
+    let d1 = term(l2, i2, i1).add(term(l3, i3, i1)).to_f64();
+    let d2 = term(l1, i1, i2).add(term(l3, i3, i2)).to_f64();
+    let d3 = term(l1, i1, i3).neg().add(term(l2, i2, i3).neg()).to_f64();
+    [d1, d2, d3]
 }
