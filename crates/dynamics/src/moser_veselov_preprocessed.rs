@@ -20,79 +20,141 @@ use glam::DVec3;
 use crate::moser_veselov::dmv_step;
 use crate::{FreeBodyIntegrator, PrincipalState};
 
-/// Corrections of the inverse moments: `s = 1 + Σₙ Σᵢ sₙᵢ x^(n−i) yⁱ`,
-/// `d = Σₙ Σᵢ dₙᵢ x^(n−i) yⁱ`, `n = 1 … terms`, `x = h²|L|²/2`, `y = h² H`.
+/// Number of coefficients of `s` (and of `d`) through degree 4.
+const COEFFICIENTS: usize = 14;
+
+/// The coefficients of the corrections of the inverse moments,
+/// `s = 1 + Σₙ Σᵢ sₙᵢ x^(n−i) yⁱ`, `d = Σₙ Σᵢ dₙᵢ x^(n−i) yⁱ` for
+/// `n = 1 … terms`, `x = h²|L|²/2`, `y = h² H`: they depend on the
+/// moments only. Stored degree by degree: `x, y, x², xy, y², x³, …, y⁴`.
 ///
 /// The coefficients are those of Hairer & Vilmart (2006, §3 and their
 /// DMV10 code), written with power sums of the moments: `P = I₁I₂I₃`,
 /// `σₖ = Σ Iᵢᵏ`, `ρₖ = Σ Iᵢ⁻ᵏ`, `τₐᵦ = Σ_{i≠j} Iᵢᵃ/Iⱼᵇ = σₐρᵦ − Σ Iᵢ^(a−b)`.
-fn corrections(moments: DVec3, x: f64, y: f64, terms: usize) -> (f64, f64) {
-    if terms == 0 {
-        return (1.0, 0.0);
+/// Divisions by `P` are multiplications by `q = 1/P`, and the rational
+/// constants are folded at compile time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Series {
+    /// How many degrees are used (0 … 4: order 2 … 10); the coefficients
+    /// of the others are zero.
+    terms: usize,
+    s: [f64; COEFFICIENTS],
+    d: [f64; COEFFICIENTS],
+}
+
+impl Series {
+    fn new(m: DVec3, terms: usize) -> Self {
+        let mut c = Self {
+            terms,
+            s: [0.0; COEFFICIENTS],
+            d: [0.0; COEFFICIENTS],
+        };
+        if terms == 0 {
+            return c;
+        }
+        let p = m.x * m.y * m.z;
+        let q = 1.0 / p;
+        let r = q * DVec3::new(m.y * m.z, m.z * m.x, m.x * m.y);
+        let sum = |v: DVec3| v.element_sum();
+        let (s1, s2, s3, s4) = (sum(m), sum(m * m), sum(m * m * m), sum(m * m * m * m));
+        let (r1, r2, r3, r4) = (sum(r), sum(r * r), sum(r * r * r), sum(r * r * r * r));
+        let (t11, t12, t21) = (s1 * r1 - 3.0, s1 * r2 - r1, s2 * r1 - s1);
+        let (t13, t31, t22) = (s1 * r3 - r2, s3 * r1 - s2, s2 * r2 - 3.0);
+        let (p2, q2) = (p * p, q * q);
+        let (q3, q4) = (q2 * q, q2 * q2);
+        // n = 1 (order 4).
+        c.s[..2].copy_from_slice(&[s1 * q * (1.0 / 6.0), -r1 * (1.0 / 3.0)]);
+        c.d[..2].copy_from_slice(&[-q * (1.0 / 3.0), s1 * q * (1.0 / 6.0)]);
+        if terms == 1 {
+            return c;
+        }
+        // n = 2 (order 6).
+        c.s[2..5].copy_from_slice(&[
+            (s2 * q - r1) * q * (1.0 / 30.0),
+            (1.0 - t11) * q * (1.0 / 30.0),
+            (3.0 * s1 * q + 2.0 * r2) * (1.0 / 60.0),
+        ]);
+        c.d[2..5].copy_from_slice(&[
+            -s1 * q2 * (1.0 / 60.0),
+            r1 * q * (1.0 / 10.0) - s2 * q2 * (1.0 / 60.0),
+            -(9.0 + t11) * q * (1.0 / 60.0),
+        ]);
+        if terms == 2 {
+            return c;
+        }
+        // n = 3 (order 8).
+        c.s[5..9].copy_from_slice(&[
+            (4.0 * p + 17.0 * s3 - 15.0 * p * t11) * q3 * (1.0 / 2520.0),
+            (9.0 * s1 + 10.0 * p * r2 - 6.0 * t21) * q2 * (1.0 / 420.0),
+            ((6.0 * t12 - 100.0 * r1) * p + 53.0 * s2) * q2 * (1.0 / 2520.0),
+            (15.0 - p * r3 - 2.0 * t11) * q * (1.0 / 630.0),
+        ]);
+        c.d[5..9].copy_from_slice(&[
+            (34.0 * p * r1 - 19.0 * s2) * q3 * (1.0 / 2520.0),
+            (s3 + 2.0 * p * t11 - 85.0 * p) * q3 * (1.0 / 1260.0),
+            (47.0 * s1 + 13.0 * t21 - 38.0 * p * r2) * q2 * (1.0 / 2520.0),
+            (9.0 * p * r1 + p * t12 - 11.0 * s2) * q2 * (1.0 / 1260.0),
+        ]);
+        if terms == 3 {
+            return c;
+        }
+        // n = 4 (order 10).
+        c.s[9..].copy_from_slice(&[
+            (62.0 * s4 - 94.0 * p * t21 + 66.0 * p2 * r2 + 81.0 * p * s1) * q4 * (1.0 / 45360.0),
+            (-77.0 * t31 + 75.0 * p * t12 + 214.0 * s2 - 240.0 * p * r1) * q3 * (1.0 / 22680.0),
+            (26.0 * p * t22 + 55.0 * s3 + 204.0 * p - 50.0 * p2 * r3 - 59.0 * p * t11)
+                * q3
+                * (1.0 / 7560.0),
+            (137.0 * p * r2 - p * t13 + 3.0 * s1 - 69.0 * t21) * q2 * (1.0 / 11340.0),
+            (2.0 * p2 * r4 + 5.0 * p * t12 - 171.0 * p * r1 + 159.0 * s2) * q2 * (1.0 / 45360.0),
+        ]);
+        c.d[9..].copy_from_slice(&[
+            (60.0 * t11 * p - 61.0 * s3 - 247.0 * p) * q4 * (1.0 / 45360.0),
+            (54.0 * p * s1 - s4 + 218.0 * p * t21 - 426.0 * p2 * r2) * q4 * (1.0 / 45360.0),
+            (125.0 * p * r1 - 5.0 * t31 - 130.0 * s2 + 4.0 * p * t12) * q3 * (1.0 / 7560.0),
+            (67.0 * s3 - 735.0 * p - 15.0 * p * t22 + 87.0 * p * t11 + 34.0 * p2 * r3)
+                * q3
+                * (1.0 / 22680.0),
+            (165.0 * s1 - p * t13 - 9.0 * t21 - 145.0 * p * r2) * q2 * (1.0 / 45360.0),
+        ]);
+        c
     }
-    let m = moments;
-    let r = DVec3::ONE / m;
-    let p = m.x * m.y * m.z;
-    let sum = |v: DVec3| v.element_sum();
-    let (s1, s2) = (sum(m), sum(m * m));
-    let (r1, r2) = (sum(r), sum(r * r));
-    let t11 = s1 * r1 - 3.0;
-    // n = 1 (order 4).
-    let mut s = 1.0 + s1 / (6.0 * p) * x - r1 / 3.0 * y;
-    let mut d = -1.0 / (3.0 * p) * x + s1 / (6.0 * p) * y;
-    if terms == 1 {
-        return (s, d);
+
+    /// `(s, d)` at `x = h²|L|²/2`, `y = h² H`; unused degrees have zero
+    /// coefficients. The degrees are summed separately (short dependency
+    /// chains), smallest last.
+    #[inline]
+    fn eval(&self, x: f64, y: f64) -> (f64, f64) {
+        if self.terms == 0 {
+            return (1.0, 0.0);
+        }
+        let (xx, xy, yy) = (x * x, x * y, y * y);
+        let m = [
+            x,
+            y,
+            xx,
+            xy,
+            yy,
+            xx * x,
+            xx * y,
+            x * yy,
+            yy * y,
+            xx * xx,
+            xx * xy,
+            xx * yy,
+            xy * yy,
+            yy * yy,
+        ];
+        let block = |c: &[f64; COEFFICIENTS]| {
+            let d1 = c[0] * m[0] + c[1] * m[1];
+            let d2 = c[2] * m[2] + c[3] * m[3] + c[4] * m[4];
+            let d3 = (c[5] * m[5] + c[6] * m[6]) + (c[7] * m[7] + c[8] * m[8]);
+            let d4 =
+                (c[9] * m[9] + c[10] * m[10]) + (c[11] * m[11] + c[12] * m[12]) + c[13] * m[13];
+            ((d4 + d3) + d2) + d1
+        };
+        (1.0 + block(&self.s), block(&self.d))
     }
-    let (xx, xy, yy) = (x * x, x * y, y * y);
-    let p2 = p * p;
-    // n = 2 (order 6).
-    s += (s2 / p - r1) / (30.0 * p) * xx
-        + (1.0 - t11) / (30.0 * p) * xy
-        + (3.0 * s1 / p + 2.0 * r2) / 60.0 * yy;
-    d += -s1 / (60.0 * p2) * xx + (r1 / (10.0 * p) - s2 / (60.0 * p2)) * xy
-        - (9.0 + t11) / (60.0 * p) * yy;
-    if terms == 2 {
-        return (s, d);
-    }
-    let (s3, r3) = (sum(m * m * m), sum(r * r * r));
-    let t12 = s1 * r2 - r1;
-    let t21 = s2 * r1 - s1;
-    let p3 = p2 * p;
-    let (x3, x2y, xy2, y3) = (xx * x, xx * y, x * yy, yy * y);
-    // n = 3 (order 8).
-    s += (4.0 * p + 17.0 * s3 - 15.0 * p * t11) / (2520.0 * p3) * x3
-        + (9.0 * s1 + 10.0 * p * r2 - 6.0 * t21) / (420.0 * p2) * x2y
-        + ((6.0 * t12 - 100.0 * r1) * p + 53.0 * s2) / (2520.0 * p2) * xy2
-        + (15.0 - p * r3 - 2.0 * t11) / (630.0 * p) * y3;
-    d += (34.0 * p * r1 - 19.0 * s2) / (2520.0 * p3) * x3
-        + (s3 + 2.0 * p * t11 - 85.0 * p) / (1260.0 * p3) * x2y
-        + (47.0 * s1 + 13.0 * t21 - 38.0 * p * r2) / (2520.0 * p2) * xy2
-        + (9.0 * p * r1 + p * t12 - 11.0 * s2) / (1260.0 * p2) * y3;
-    if terms == 3 {
-        return (s, d);
-    }
-    let (s4, r4) = (sum(m * m * m * m), sum(r * r * r * r));
-    let t13 = s1 * r3 - r2;
-    let t31 = s3 * r1 - s2;
-    let t22 = s2 * r2 - 3.0;
-    let p4 = p2 * p2;
-    let (x4, x3y, x2y2, xy3, y4) = (xx * xx, x3 * y, xx * yy, x * y3, yy * yy);
-    // n = 4 (order 10).
-    s += (62.0 * s4 - 94.0 * p * t21 + 66.0 * p2 * r2 + 81.0 * p * s1) / (45360.0 * p4) * x4
-        + (-77.0 * t31 + 75.0 * p * t12 + 214.0 * s2 - 240.0 * p * r1) / (22680.0 * p3) * x3y
-        + (26.0 * p * t22 + 55.0 * s3 + 204.0 * p - 50.0 * p2 * r3 - 59.0 * p * t11)
-            / (7560.0 * p3)
-            * x2y2
-        + (137.0 * p * r2 - p * t13 + 3.0 * s1 - 69.0 * t21) / (11340.0 * p2) * xy3
-        + (2.0 * p2 * r4 + 5.0 * p * t12 - 171.0 * p * r1 + 159.0 * s2) / (45360.0 * p2) * y4;
-    d += (60.0 * t11 * p - 61.0 * s3 - 247.0 * p) / (45360.0 * p4) * x4
-        + (54.0 * p * s1 - s4 + 218.0 * p * t21 - 426.0 * p2 * r2) / (45360.0 * p4) * x3y
-        + (125.0 * p * r1 - 5.0 * t31 - 130.0 * s2 + 4.0 * p * t12) / (7560.0 * p3) * x2y2
-        + (67.0 * s3 - 735.0 * p - 15.0 * p * t22 + 87.0 * p * t11 + 34.0 * p2 * r3)
-            / (22680.0 * p3)
-            * xy3
-        + (165.0 * s1 - p * t13 - 9.0 * t21 - 145.0 * p * r2) / (45360.0 * p2) * y4;
-    (s, d)
 }
 
 /// The preprocessed discrete Moser–Veselov algorithm of order 2, 4, 6, 8
@@ -120,9 +182,12 @@ fn corrections(moments: DVec3, x: f64, y: f64, terms: usize) -> (f64, f64) {
 /// }
 /// assert!(kreisel_kinematics::rotation_angle_between(s.world_from_principal, DQuat::from_rotation_z(1.0)) < 1e-11);
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PreprocessedMoserVeselov {
     order: u32,
+    /// Moments and their series coefficients, if prepared by
+    /// [`PreprocessedMoserVeselov::for_body`].
+    prepared: Option<(DVec3, Series)>,
 }
 
 impl PreprocessedMoserVeselov {
@@ -136,7 +201,10 @@ impl PreprocessedMoserVeselov {
     /// use kreisel_dynamics::{FreeBodyIntegrator, PreprocessedMoserVeselov};
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_4.order(), 4);
     /// ```
-    pub const ORDER_4: Self = Self { order: 4 };
+    pub const ORDER_4: Self = Self {
+        order: 4,
+        prepared: None,
+    };
     /// PDMV of order 6 (`"pdmv6"`): `s`, `d` to `O(h⁴)`.
     ///
     /// ```text
@@ -147,7 +215,10 @@ impl PreprocessedMoserVeselov {
     /// use kreisel_dynamics::{FreeBodyIntegrator, PreprocessedMoserVeselov};
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_6.name(), "pdmv6");
     /// ```
-    pub const ORDER_6: Self = Self { order: 6 };
+    pub const ORDER_6: Self = Self {
+        order: 6,
+        prepared: None,
+    };
     /// PDMV of order 8 (`"pdmv8"`): `s`, `d` to `O(h⁶)`.
     ///
     /// ```text
@@ -158,7 +229,10 @@ impl PreprocessedMoserVeselov {
     /// use kreisel_dynamics::{FreeBodyIntegrator, PreprocessedMoserVeselov};
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_8.order(), 8);
     /// ```
-    pub const ORDER_8: Self = Self { order: 8 };
+    pub const ORDER_8: Self = Self {
+        order: 8,
+        prepared: None,
+    };
     /// PDMV of order 10 (`"pdmv10"`): `s`, `d` to `O(h⁸)`.
     ///
     /// ```text
@@ -169,7 +243,10 @@ impl PreprocessedMoserVeselov {
     /// use kreisel_dynamics::{FreeBodyIntegrator, PreprocessedMoserVeselov};
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_10.name(), "pdmv10");
     /// ```
-    pub const ORDER_10: Self = Self { order: 10 };
+    pub const ORDER_10: Self = Self {
+        order: 10,
+        prepared: None,
+    };
 
     /// The method of the given order: 2, 4, 6, 8 or 10 (`None` otherwise).
     ///
@@ -184,7 +261,10 @@ impl PreprocessedMoserVeselov {
     /// ```
     pub const fn new(order: u32) -> Option<Self> {
         match order {
-            2 | 4 | 6 | 8 | 10 => Some(Self { order }),
+            2 | 4 | 6 | 8 | 10 => Some(Self {
+                order,
+                prepared: None,
+            }),
             _ => None,
         }
     }
@@ -211,12 +291,60 @@ impl PreprocessedMoserVeselov {
     /// assert!(dev > 1e-4 && dev < 1e-2);
     /// ```
     pub fn modified_inverse_moments(&self, moments: DVec3, l: DVec3, h: f64) -> DVec3 {
+        let (s, d) = self.scale_and_shift(moments, l, h);
+        s / moments + d
+    }
+
+    /// The same method with the moment-only part of the corrections
+    /// (Hairer & Vilmart 2006, §3: about 150 operations for order 10)
+    /// computed once for `moments`. Steps with these moments give the same
+    /// results bit for bit, only faster; steps with other moments compute
+    /// the coefficients as usual.
+    ///
+    /// ```text
+    /// sₙᵢ, dₙᵢ = functions of (I₁, I₂, I₃) only
+    /// ```
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::{FreeBodyIntegrator, PreprocessedMoserVeselov, PrincipalState};
+    /// let m = DVec3::new(1.0, 2.0, 3.0);
+    /// let fast = PreprocessedMoserVeselov::ORDER_10.for_body(m);
+    /// let s0 = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.01, 2.0, 0.0) };
+    /// let (mut a, mut b) = (s0, s0);
+    /// for _ in 0..100 {
+    ///     fast.step(m, &mut a, 0.05);
+    ///     PreprocessedMoserVeselov::ORDER_10.step(m, &mut b, 0.05);
+    /// }
+    /// assert_eq!(a, b);
+    /// ```
+    pub fn for_body(self, moments: DVec3) -> Self {
+        Self {
+            prepared: Some((moments, Series::new(moments, self.terms()))),
+            ..self
+        }
+    }
+
+    /// Degrees of the corrections: `order/2 − 1`.
+    fn terms(&self) -> usize {
+        (self.order / 2).saturating_sub(1) as usize
+    }
+
+    /// `(s, d)` of [`Self::modified_inverse_moments`].
+    #[inline]
+    fn scale_and_shift(&self, moments: DVec3, l: DVec3, h: f64) -> (f64, f64) {
+        if self.terms() == 0 {
+            return (1.0, 0.0);
+        }
+        let m = moments;
+        let r = DVec3::new(m.y * m.z, m.z * m.x, m.x * m.y) * (1.0 / (m.x * m.y * m.z));
         let h2 = h * h;
         let x = 0.5 * h2 * l.length_squared();
-        let y = 0.5 * h2 * (l * l / moments).element_sum();
-        let terms = (self.order / 2).saturating_sub(1) as usize;
-        let (s, d) = corrections(moments, x, y, terms);
-        s / moments + d
+        let y = 0.5 * h2 * (l * l * r).element_sum();
+        match self.prepared {
+            Some((prepared, series)) if prepared == moments => series.eval(x, y),
+            _ => Series::new(moments, self.terms()).eval(x, y),
+        }
     }
 }
 
@@ -236,7 +364,7 @@ impl FreeBodyIntegrator for PreprocessedMoserVeselov {
     }
 
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {
-        let inv = self.modified_inverse_moments(moments, state.l_principal, h);
-        dmv_step(inv, state, h);
+        let (s, d) = self.scale_and_shift(moments, state.l_principal, h);
+        dmv_step(moments, s, d, state, h);
     }
 }

@@ -263,3 +263,28 @@ fn degenerate_inputs_do_not_panic() {
     MoserVeselov.step(DVec3::new(1.0, 2.0, 3.0), &mut s, 0.1);
     assert_eq!(s.world_from_principal, DQuat::IDENTITY);
 }
+
+/// `for_body` is a pure speed-up: bit-identical steps for its moments, and
+/// for other moments the coefficients are computed as without it.
+#[test]
+fn prepared_coefficients_change_nothing() {
+    let r = load("ratio_1000b");
+    let (_, q0, l0) = r.samples[0];
+    let s0 = PrincipalState {
+        world_from_principal: q0,
+        l_principal: l0,
+    };
+    for order in [4, 6, 8, 10] {
+        let plain = PreprocessedMoserVeselov::new(order).unwrap();
+        let prepared = plain.for_body(r.moments);
+        let elsewhere = plain.for_body(DVec3::new(1.0, 2.0, 3.0));
+        let (mut a, mut b, mut c) = (s0, s0, s0);
+        for _ in 0..500 {
+            plain.step(r.moments, &mut a, 0.01);
+            prepared.step(r.moments, &mut b, 0.01);
+            elsewhere.step(r.moments, &mut c, 0.01);
+        }
+        assert_eq!(a, b, "order {order}");
+        assert_eq!(a, c, "order {order}");
+    }
+}
