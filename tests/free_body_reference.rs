@@ -93,6 +93,7 @@ fn default_method_meets_the_accuracy_goal() {
         "hlw",
         "near_separatrix_7",
         "near_separatrix_12",
+        "separatrix",
         "ratio_1000",
         "ratio_1000b",
         "symmetric",

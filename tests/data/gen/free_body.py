@@ -234,6 +234,11 @@ SCENARIOS = [
     dict(name="ratio_1000b", I=(1.0, 999.0, 1000.0), omega0=(0.5, 0.01, 0.02), q0=ratio_q0(),
          t_end=5, dt=(1, 10),
          note="flat disc-like body, I3/I1 = 1000; q0 = normalised (0.9, 0.1, -0.3, 0.2)"),
+    dict(name="separatrix", I=(3.0, 4.0, 6.0), omega0=(0.5, 0.2, 0.25), q0=ratio_q0(),
+         t_end=20, dt=(1, 2), closed=False,
+         note="exactly on the separatrix: L0 = (1.5, 0.8, 1.5) gives |L|^2 = 2 E I2 in exact "
+              "arithmetic (L1 = L3 with (I2-I1)/I1 = (I3-I2)/I3 = 1/3); L tends to the saddle +e2; "
+              "no elliptic closed form (m = 1), checked by the two Taylor runs only"),
     dict(name="symmetric", I=(1.0, 1.0, 2.0), omega0=(0.3, 0.0, 5.0), q0=IDENT,
          t_end=20, dt=(1, 2),
          note="symmetric top I1 = I2: closed form q(t) = exp(t L_world/(2 I1)) q0 exp(-Omega t e3/2), "
@@ -546,7 +551,9 @@ def run_scenario(sc):
     with mp.workdps(CHECK_DPS):
         I, L0, q0 = initial_state(sc)
         times = [mpf(t) for t in times_f]
-        if I[0] < I[1] < I[2]:
+        if not sc.get("closed", True):
+            closed = stB
+        elif I[0] < I[1] < I[2]:
             P = elliptic_params(I, L0)
             closed, qerr = elliptic_attitude(I, L0, q0, P, times)
             res["P"] = P

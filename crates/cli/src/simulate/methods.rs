@@ -11,11 +11,15 @@ use kreisel_dynamics::{FreeBodyIntegrator, METHODS, method};
 pub const AUTO: &str = "auto";
 
 /// What `auto` runs: the library's choice (`kreisel_dynamics::AUTO`, the
-/// 8th-order composition of the exact-rotation splitting).
+/// exact solution).
 pub const DEFAULT_METHOD: &str = kreisel_dynamics::AUTO;
 
 /// One line about each method of the registry, shown by `--list-methods`.
-const DESCRIPTIONS: [(&str, &str); 6] = [
+const DESCRIPTIONS: [(&str, &str); 12] = [
+    (
+        "exact",
+        "the exact solution: uniform rotation, symmetric-top closed form, or Jacobi elliptic functions",
+    ),
     (
         "rk4",
         "classical Runge-Kutta on L and q, the baseline; energy, |L| and |q| drift",
@@ -39,6 +43,26 @@ const DESCRIPTIONS: [(&str, &str); 6] = [
     (
         "splitting8",
         "Kahan and Li's 17-stage symmetric composition of splitting",
+    ),
+    (
+        "dmv",
+        "discrete Moser-Veselov (implicit, conserves |L|, L_world and a modified energy)",
+    ),
+    (
+        "pdmv4",
+        "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 4",
+    ),
+    (
+        "pdmv6",
+        "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 6",
+    ),
+    (
+        "pdmv8",
+        "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 8",
+    ),
+    (
+        "pdmv10",
+        "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 10",
     ),
 ];
 
@@ -85,10 +109,15 @@ fn description(name: &str) -> &'static str {
 /// The writer's errors.
 pub fn write_list<W: Write + ?Sized>(out: &mut W) -> io::Result<()> {
     writeln!(out, "{:<12}{:>5}  DESCRIPTION", "NAME", "ORDER")?;
-    let order = |name: &str| method(name).map_or(0, |m| m.order());
+    // The exact solution has no order: it is shown as `exact`.
+    let order = |name: &str| match method(name).map(|m| m.order()) {
+        Ok(u32::MAX) => "exact".to_owned(),
+        Ok(p) => p.to_string(),
+        Err(_) => "?".to_owned(),
+    };
     writeln!(
         out,
-        "{AUTO:<12}{:>5}  the default; runs {DEFAULT_METHOD} (the highest order)",
+        "{AUTO:<12}{:>5}  the default; runs {DEFAULT_METHOD} (no truncation error at any dt)",
         order(DEFAULT_METHOD)
     )?;
     for name in registry() {
@@ -108,10 +137,7 @@ mod tests {
             assert_eq!(integrator(name).unwrap().name(), name);
         }
         assert_eq!(integrator(AUTO).unwrap().name(), DEFAULT_METHOD);
-        assert_eq!(
-            DEFAULT_METHOD, "splitting8",
-            "update the help and descriptions"
-        );
+        assert_eq!(DEFAULT_METHOD, "exact", "update the help and descriptions");
         assert_eq!(DESCRIPTIONS.len(), registry().count());
     }
 
@@ -119,7 +145,7 @@ mod tests {
     fn unknown_method_lists_the_known_ones() {
         let e = integrator("euler").err().unwrap();
         assert!(
-            e.starts_with("unknown method `euler` (known: auto, rk4,"),
+            e.starts_with("unknown method `euler` (known: auto, exact, rk4,"),
             "{e}"
         );
         assert!(e.contains("splitting8"), "{e}");
@@ -132,7 +158,7 @@ mod tests {
         let text = String::from_utf8(out).unwrap();
         assert_eq!(text.lines().count(), 2 + registry().count());
         assert!(
-            text.contains("auto            8  the default; runs splitting8"),
+            text.contains("auto        exact  the default; runs exact"),
             "{text}"
         );
         assert!(text.contains("rk4             4  classical"), "{text}");

@@ -99,7 +99,7 @@ fn simulation_table_errors() {
         &[
             "`method`",
             "unknown method `euler`",
-            "auto, rk4",
+            "auto, exact, rk4",
             "splitting8",
         ],
     );
@@ -272,7 +272,9 @@ fn whole_file_and_option_errors() {
     let run = kreisel(&["simulate", "/no/such/scene.toml", "--method", "leapfrog"]);
     let line = run.error_line(1);
     assert!(
-        line.starts_with("kreisel: error: --method: unknown method `leapfrog` (known: auto, rk4,"),
+        line.starts_with(
+            "kreisel: error: --method: unknown method `leapfrog` (known: auto, exact, rk4,"
+        ),
         "{line}"
     );
     // The output may not overwrite the scene.

@@ -38,10 +38,33 @@ fn quick_two_sum(a: f64, b: f64) -> (f64, f64) {
     (s, b - (s - a))
 }
 
-/// `a · b = p + e` exactly (barring over/underflow).
+/// `a · b = p + e` exactly (barring over/underflow): one FMA where the
+/// target has it, Dekker's product of Veltkamp halves otherwise (the
+/// portable `f64::mul_add` falls back to a software FMA ~20× slower).
+#[cfg(target_feature = "fma")]
 fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
     (p, a.mul_add(b, -p))
+}
+
+/// `a · b = p + e` exactly (barring over/underflow): Dekker (1971).
+#[cfg(not(target_feature = "fma"))]
+fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    let p = a * b;
+    let (a_hi, a_lo) = split(a);
+    let (b_hi, b_lo) = split(b);
+    let e = ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo;
+    (p, e)
+}
+
+/// Veltkamp's split of `x` into two 26-bit halves, `x = hi + lo` exactly
+/// (for |x| < 2⁹⁹⁶).
+#[cfg(not(target_feature = "fma"))]
+fn split(x: f64) -> (f64, f64) {
+    const FACTOR: f64 = 134_217_729.0; // 2²⁷ + 1
+    let t = FACTOR * x;
+    let hi = t - (t - x);
+    (hi, x - hi)
 }
 
 impl Dd {

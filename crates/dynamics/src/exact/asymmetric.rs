@@ -161,8 +161,8 @@ impl Asymmetric {
         l[b] = self.amplitude[1] * sn;
         l[a] = self.amplitude[2] * dn;
         let l = DVec3::from_array(l);
-        let psi = self.omega_bar.mul_add(t_hi, self.omega_bar * t_lo)
-            + self.kappa_over_lambda * (p - self.p0);
+        let psi =
+            self.omega_bar * t_hi + self.omega_bar * t_lo + self.kappa_over_lambda * (p - self.p0);
         let (s, co) = (0.5 * psi).sin_cos();
         let spin = DQuat::from_xyzw(s * self.e.x, s * self.e.y, s * self.e.z, co);
         let q = self.frame * spin * self.shortest_rotation(l / self.l_norm);

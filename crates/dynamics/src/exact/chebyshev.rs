@@ -165,11 +165,11 @@ fn clenshaw(c: &[DVec4; N], x: f64) -> DVec4 {
     let two_x = DVec4::splat(2.0 * x);
     let (mut b1, mut b2) = (DVec4::ZERO, DVec4::ZERO);
     for ck in c[1..].iter().rev() {
-        let b0 = two_x.mul_add(b1, *ck - b2);
+        let b0 = two_x * b1 + (*ck - b2);
         b2 = b1;
         b1 = b0;
     }
-    DVec4::splat(x).mul_add(b1, c[0] - b2)
+    DVec4::splat(x) * b1 + (c[0] - b2)
 }
 
 #[cfg(test)]
