@@ -44,6 +44,13 @@ impl PiecewiseChebyshev {
     pub(crate) fn fit(end: f64, f: impl Fn(f64) -> DVec4) -> PiecewiseChebyshev {
         let nodes: [f64; N] =
             std::array::from_fn(|j| (std::f64::consts::PI * (j as f64 + 0.5) / N as f64).cos());
+        // cos(πk(j + ½)/N), scaled by 1/N (k = 0) or 2/N: the transform's matrix.
+        let transform: [[f64; N]; N] = std::array::from_fn(|k| {
+            let scale = if k == 0 { 1.0 } else { 2.0 } / N as f64;
+            std::array::from_fn(|j| {
+                scale * (std::f64::consts::PI * (k * (2 * j + 1)) as f64 / (2 * N) as f64).cos()
+            })
+        });
         let mut table = PiecewiseChebyshev {
             breaks: vec![0.0],
             coefficients: Vec::new(),
@@ -51,7 +58,7 @@ impl PiecewiseChebyshev {
         // Depth-first over [a, b] keeps the pieces in ascending order.
         let mut stack = vec![(0.0, end)];
         while let Some((a, b)) = stack.pop() {
-            let c = fit_piece(a, b, &nodes, &f);
+            let c = fit_piece(a, b, &nodes, &transform, &f);
             let tail = c[N - 1].abs().max(c[N - 2].abs()).max_element();
             if tail > TOLERANCE && b - a > end * MIN_FRACTION {
                 let mid = 0.5 * (a + b);
@@ -140,18 +147,19 @@ impl PiecewiseChebyshev {
 }
 
 /// Chebyshev coefficients of `f` on `[a, b]` from its values at the nodes.
-fn fit_piece(a: f64, b: f64, nodes: &[f64; N], f: &impl Fn(f64) -> DVec4) -> [DVec4; N] {
+fn fit_piece(
+    a: f64,
+    b: f64,
+    nodes: &[f64; N],
+    transform: &[[f64; N]; N],
+    f: &impl Fn(f64) -> DVec4,
+) -> [DVec4; N] {
     let values: [DVec4; N] = std::array::from_fn(|j| f(0.5 * (a + b) + 0.5 * (b - a) * nodes[j]));
     std::array::from_fn(|k| {
-        let sum = values.iter().enumerate().fold(DVec4::ZERO, |acc, (j, v)| {
-            let angle = std::f64::consts::PI * (k * (2 * j + 1)) as f64 / (2 * N) as f64;
-            acc + *v * angle.cos()
-        });
-        sum * if k == 0 {
-            1.0 / N as f64
-        } else {
-            2.0 / N as f64
-        }
+        values
+            .iter()
+            .zip(&transform[k])
+            .fold(DVec4::ZERO, |acc, (v, w)| acc + *v * *w)
     })
 }
 
