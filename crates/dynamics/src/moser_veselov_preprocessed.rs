@@ -18,7 +18,7 @@
 use glam::DVec3;
 
 use crate::moser_veselov::dmv_step;
-use crate::{FreeBodyIntegrator, PrincipalState};
+use crate::{FreeBodyIntegrator, PrincipalState, Propagator};
 
 /// Number of coefficients of `s` (and of `d`) through degree 4.
 const COEFFICIENTS: usize = 14;
@@ -366,5 +366,32 @@ impl FreeBodyIntegrator for PreprocessedMoserVeselov {
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {
         let (s, d) = self.scale_and_shift(moments, state.l_principal, h);
         dmv_step(moments, s, d, state, h);
+    }
+
+    /// Steps of [`PreprocessedMoserVeselov::for_body`]: the same results,
+    /// the moment-only coefficients computed once.
+    fn propagator<'a>(&'a self, moments: DVec3, state: PrincipalState) -> Box<dyn Propagator + 'a> {
+        Box::new(Prepared {
+            method: self.for_body(moments),
+            moments,
+            state,
+        })
+    }
+}
+
+/// One body stepped by a PDMV prepared for its moments.
+struct Prepared {
+    method: PreprocessedMoserVeselov,
+    moments: DVec3,
+    state: PrincipalState,
+}
+
+impl Propagator for Prepared {
+    fn advance(&mut self, h: f64) {
+        self.method.step(self.moments, &mut self.state, h);
+    }
+
+    fn state(&self) -> PrincipalState {
+        self.state
     }
 }

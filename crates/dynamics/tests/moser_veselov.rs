@@ -265,7 +265,8 @@ fn degenerate_inputs_do_not_panic() {
 }
 
 /// `for_body` is a pure speed-up: bit-identical steps for its moments, and
-/// for other moments the coefficients are computed as without it.
+/// for other moments the coefficients are computed as without it; and
+/// `integrate`, which prepares them through the propagator, agrees too.
 #[test]
 fn prepared_coefficients_change_nothing() {
     let r = load("ratio_1000b");
@@ -286,5 +287,8 @@ fn prepared_coefficients_change_nothing() {
         }
         assert_eq!(a, b, "order {order}");
         assert_eq!(a, c, "order {order}");
+        let mut d = s0;
+        kreisel_dynamics::integrate(&plain, r.moments, &mut d, 0.01, 500).unwrap();
+        assert_eq!(a, d, "order {order}: integrate (prepared propagator)");
     }
 }
