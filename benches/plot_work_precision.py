@@ -49,16 +49,25 @@ def main(argv):
                 )
             )
 
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = plt.subplots(figsize=(10, 6))
+    # Distinct colours and markers for any number of methods (tab20 has 20).
+    colours = plt.get_cmap("tab20").colors
+    markers = "o^vsDP*Xhd<>p"
+    kreisel_methods = [m for m in series if m != "rapier"]
     for method, points in series.items():
         points.sort(key=lambda p: -p[0])
         x = [p[1] for p in points]
         # A zero error (exact to the last bit) cannot go on a log axis.
         y = [max(p[2], 1e-17) for p in points]
-        style = dict(marker="s", linestyle="--", color="black") if method == "rapier" else dict(marker="o")
-        label = "rapier3d-f64 (1000 bodies)" if method == "rapier" else method
+        if method == "rapier":
+            style = dict(marker="s", linestyle="--", color="black", linewidth=2)
+            label = "rapier3d-f64 (1000 bodies)"
+        else:
+            i = kreisel_methods.index(method)
+            style = dict(marker=markers[i % len(markers)], color=colours[(2 * i) % 20 + (i // 10) % 2])
+            label = method
         (line,) = ax.plot(x, y, label=label, **style)
-        for (dt, xi, yi) in zip([p[0] for p in points], x, y):
+        for dt, xi, yi in zip([p[0] for p in points], x, y):
             ax.annotate(
                 f"1/{round(1 / dt)}",
                 (xi, yi),
@@ -74,7 +83,7 @@ def main(argv):
     ax.set_title("Free rigid body, rapier's scenario: I = (1, 2, 3), ω₀ = (0.01, 1, 0), 100 s")
     ax.grid(True, which="major", alpha=0.4)
     ax.grid(True, which="minor", alpha=0.1)
-    ax.legend(fontsize=8, loc="best")
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     fig.savefig(out, metadata={"Date": None})
     print(f"wrote {out}")
