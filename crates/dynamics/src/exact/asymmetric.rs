@@ -55,8 +55,10 @@ pub(crate) struct Asymmetric {
     amplitude: [f64; 3],
     lambda: f64,
     tau0: f64,
-    /// The quarter period K (unused on the separatrix).
+    /// The quarter period K, 1/K and 1/(4K) (unused on the separatrix).
     quarter: f64,
+    inverse_quarter: f64,
+    inverse_period: f64,
     /// sn, cn, dn, P on [0, K]; `None` on the separatrix.
     table: Option<PiecewiseChebyshev>,
     /// `c = |A_a|/|L|` and `√(1 − c²)` (for the separatrix closed form).
@@ -132,6 +134,8 @@ impl Asymmetric {
             lambda,
             tau0,
             quarter,
+            inverse_quarter: 1.0 / quarter,
+            inverse_period: 0.25 / quarter,
             table,
             c: cc,
             sqrt_one_minus_c2,
@@ -181,13 +185,18 @@ impl Asymmetric {
         };
         let k = self.quarter;
         let period = 4.0 * k;
-        // Reduce to [0, 4K) with the multiple of the period removed exactly.
-        let n = (tau.to_f64() / period).floor();
+        // Reduce to [0, 4K) with the multiple of the period removed exactly
+        // (a truncating cast instead of `floor`, a libm call on baseline x86-64).
+        let ratio = tau.hi * self.inverse_period;
+        let mut n = ratio as i64 as f64;
+        if n > ratio {
+            n -= 1.0;
+        }
         let mut r = tau.add(Dd::from_f64(period).mul(Dd::from_f64(-n))).to_f64();
         if r < 0.0 {
             r += period;
         }
-        let quarter_index = ((r / k) as usize).min(3);
+        let quarter_index = ((r * self.inverse_quarter) as usize).min(3);
         let rho = r - quarter_index as f64 * k;
         let (x, s_sign, c_sign, p_sign) = match quarter_index {
             0 => (rho, 1.0, 1.0, 1.0),

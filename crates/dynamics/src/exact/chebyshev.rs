@@ -37,6 +37,14 @@ pub(crate) struct PiecewiseChebyshev {
     breaks: Vec<f64>,
     /// Coefficients `c₀ … c_{N−1}` of each piece, one lane per function.
     coefficients: Vec<[DVec4; N]>,
+    /// Centre and inverse half-width of each piece.
+    centre: Vec<(f64, f64)>,
+    /// The first piece of each cell of a uniform grid of the smallest piece
+    /// width: a lookup and at most one comparison find a piece, with no
+    /// search (the pieces are adaptive, the grid is not).
+    grid: Vec<u32>,
+    /// Cells per unit of τ.
+    cells_per_unit: f64,
 }
 
 impl PiecewiseChebyshev {
@@ -54,6 +62,9 @@ impl PiecewiseChebyshev {
         let mut table = PiecewiseChebyshev {
             breaks: vec![0.0],
             coefficients: Vec::new(),
+            centre: Vec::new(),
+            grid: Vec::new(),
+            cells_per_unit: 0.0,
         };
         // Depth-first over [a, b] keeps the pieces in ascending order.
         let mut stack = vec![(0.0, end)];
@@ -67,9 +78,35 @@ impl PiecewiseChebyshev {
             } else {
                 table.breaks.push(b);
                 table.coefficients.push(c);
+                table.centre.push((0.5 * (a + b), 2.0 / (b - a)));
             }
         }
+        table.index();
         table
+    }
+
+    /// Builds the uniform grid over the pieces.
+    fn index(&mut self) {
+        let end = self.breaks[self.breaks.len() - 1];
+        let smallest = self
+            .breaks
+            .windows(2)
+            .map(|ab| ab[1] - ab[0])
+            .fold(f64::INFINITY, f64::min);
+        // Bisection makes every width end·2⁻ʲ: `end/smallest` cells of the
+        // smallest width tile [0, end] (at most 1/MIN_FRACTION of them).
+        let cells = (end / smallest).round().max(1.0) as usize;
+        self.cells_per_unit = cells as f64 / end;
+        let mut piece = 0;
+        self.grid = (0..cells)
+            .map(|cell| {
+                let start = cell as f64 / self.cells_per_unit;
+                while piece + 1 < self.coefficients.len() && self.breaks[piece + 1] <= start {
+                    piece += 1;
+                }
+                piece as u32
+            })
+            .collect();
     }
 
     /// The number of pieces.
@@ -137,11 +174,13 @@ impl PiecewiseChebyshev {
     #[inline]
     pub(crate) fn eval(&self, tau: f64) -> DVec4 {
         let last = self.coefficients.len() - 1;
-        let piece = self.breaks[1..last + 1]
-            .partition_point(|&b| b <= tau)
-            .min(last);
-        let (a, b) = (self.breaks[piece], self.breaks[piece + 1]);
-        let x = ((2.0 * tau - a - b) / (b - a)).clamp(-1.0, 1.0);
+        let cell = ((tau * self.cells_per_unit) as usize).min(self.grid.len() - 1);
+        let mut piece = self.grid[cell] as usize;
+        if piece < last && self.breaks[piece + 1] <= tau {
+            piece += 1;
+        }
+        let (centre, inverse_half_width) = self.centre[piece];
+        let x = ((tau - centre) * inverse_half_width).clamp(-1.0, 1.0);
         clenshaw(&self.coefficients[piece], x)
     }
 }
