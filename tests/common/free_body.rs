@@ -1,11 +1,12 @@
 //! Shared test problems: the free-body reference trajectories under
 //! `tests/data/free_body/` (made by `python3 tests/data/gen/free_body.py`),
-//! used by tests, the free-body bench and the work-precision example.
+//! used by tests (the root package's and kreisel-dynamics'), the free-body
+//! bench and the work-precision example.
 #![allow(dead_code)]
 
 use std::path::PathBuf;
 
-use kreisel::kinematics::glam::{DQuat, DVec3};
+use glam::{DQuat, DVec3};
 
 /// A reference trajectory: principal moments and samples (t, q, L).
 pub struct Reference {
@@ -17,7 +18,13 @@ pub struct Reference {
 
 /// Loads `tests/data/free_body/NAME.csv`.
 pub fn load(name: &str) -> Reference {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    // The workspace root, also when included by a member crate's tests.
+    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let root = manifest
+        .ancestors()
+        .find(|dir| dir.join("tests/data/free_body").is_dir())
+        .unwrap_or(&manifest);
+    let path = root
         .join("tests/data/free_body")
         .join(format!("{name}.csv"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

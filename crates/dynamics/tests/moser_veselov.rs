@@ -10,44 +10,10 @@ use kreisel_dynamics::{
 };
 use kreisel_kinematics::rotation_angle_between;
 
-/// A reference trajectory: principal moments and samples (t, q, L).
-struct Reference {
-    moments: DVec3,
-    samples: Vec<(f64, DQuat, DVec3)>,
-}
+#[path = "../../../tests/common/free_body.rs"]
+mod free_body;
 
-/// Loads `tests/data/free_body/NAME.csv` (`# I = (a, b, c)`, then rows
-/// `t,qw,qx,qy,qz,Lx,Ly,Lz` after a header starting with `t`).
-fn load(name: &str) -> Reference {
-    let path = format!(
-        "{}/../../tests/data/free_body/{name}.csv",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let mut moments = None;
-    let mut samples = Vec::new();
-    for line in text.lines() {
-        if let Some(rest) = line.strip_prefix("# I = (") {
-            let v: Vec<f64> = rest
-                .trim_end_matches(')')
-                .split(',')
-                .map(|x| x.trim().parse().unwrap())
-                .collect();
-            moments = Some(DVec3::new(v[0], v[1], v[2]));
-        } else if !line.starts_with('#') && !line.starts_with('t') && !line.is_empty() {
-            let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
-            samples.push((
-                v[0],
-                DQuat::from_xyzw(v[2], v[3], v[4], v[1]),
-                DVec3::new(v[5], v[6], v[7]),
-            ));
-        }
-    }
-    Reference {
-        moments: moments.expect("an `# I = (…)` line"),
-        samples,
-    }
-}
+use free_body::{Reference, load};
 
 /// Every method of this file, lowest order first.
 fn methods() -> Vec<Box<dyn FreeBodyIntegrator>> {

@@ -11,6 +11,7 @@ use glam::{DQuat, DVec3};
 use self::asymmetric::Asymmetric;
 use crate::elliptic::dd::Dd;
 use crate::integrator::Propagator;
+use crate::splitting::{axis_flow, casimir_flow};
 use crate::{DynamicsError, FreeBodyIntegrator, PrincipalState, RigidBody};
 
 /// The exact torque-free motion from an initial state, evaluated at any time.
@@ -60,13 +61,14 @@ enum Motion {
         l: DVec3,
         omega: DVec3,
     },
-    /// Casimir rotation about L₀ at rate 1/I_p, then about axis `axis`.
+    /// The Casimir rotation about L₀ (moment I_p), then the rotation about
+    /// `axis` of `H = c L_axis²/2`: the splitting's two exact flows, which
+    /// commute here.
     Symmetric {
-        q0: DQuat,
-        l0: DVec3,
-        inv_perpendicular: f64,
+        start: PrincipalState,
+        perpendicular: f64,
         axis: usize,
-        rate: f64,
+        c: f64,
     },
     Asymmetric(Box<Asymmetric>),
 }
@@ -126,11 +128,13 @@ impl ExactSolution {
             };
             let perpendicular = moments[(axis + 1) % 3];
             Motion::Symmetric {
-                q0,
-                l0: l,
-                inv_perpendicular: 1.0 / perpendicular,
+                start: PrincipalState {
+                    world_from_principal: q0,
+                    l_principal: l,
+                },
+                perpendicular,
                 axis,
-                rate: (1.0 / moments[axis] - 1.0 / perpendicular) * l[axis],
+                c: 1.0 / moments[axis] - 1.0 / perpendicular,
             }
         } else {
             match Asymmetric::new(moments, q0, l) {
@@ -160,25 +164,15 @@ impl ExactSolution {
                 *l,
             ),
             Motion::Symmetric {
-                q0,
-                l0,
-                inv_perpendicular,
+                start,
+                perpendicular,
                 axis,
-                rate,
+                c,
             } => {
-                let casimir =
-                    kreisel_kinematics::quat_from_rotation_vector(*l0 * (t * inv_perpendicular));
-                let theta = rate * t;
-                let (s, c) = theta.sin_cos();
-                let (sh, ch) = (0.5 * theta).sin_cos();
-                let (j, k) = ((axis + 1) % 3, (axis + 2) % 3);
-                let mut l = l0.to_array();
-                l[j] = c * l0[j] + s * l0[k];
-                l[k] = -s * l0[j] + c * l0[k];
-                let mut v = [0.0; 3];
-                v[*axis] = sh;
-                let spin = DQuat::from_xyzw(v[0], v[1], v[2], ch);
-                (*q0 * casimir * spin, DVec3::from_array(l))
+                let mut s = *start;
+                casimir_flow(*perpendicular, &mut s, t);
+                axis_flow(*axis, *c, &mut s, t);
+                (s.world_from_principal, s.l_principal)
             }
             Motion::Asymmetric(a) => a.eval(t_hi, t_lo),
         };
