@@ -31,6 +31,17 @@ pub enum DynamicsError {
         /// The step size given, s.
         h: f64,
     },
+    /// A heavy-top parameter or initial condition outside its domain
+    /// (a moment of inertia that is not positive, a non-finite number, …).
+    #[error("heavy top: {parameter} = {value}: {reason}")]
+    InvalidTop {
+        /// The parameter's name as the user wrote it (e.g. `"i1"`, `"theta0"`).
+        parameter: &'static str,
+        /// The value given.
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// A method name that the registry does not know.
     #[error("unknown method `{name}` (known: {known})")]
     UnknownMethod {
