@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod free_body;
+pub mod heavy_top;
 pub mod shapes;
 
 use std::path::PathBuf;

@@ -40,6 +40,7 @@ mod composition;
 pub mod elliptic;
 mod error;
 mod exact;
+mod heavy_top;
 mod integrator;
 mod moser_veselov;
 mod moser_veselov_preprocessed;
@@ -53,6 +54,10 @@ mod state;
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use error::DynamicsError;
 pub use exact::{ExactFlow, ExactPropagator, ExactSolution};
+pub use heavy_top::{
+    HEAVY_TOP_METHODS, HeavyTop, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
+    heavy_top_method, integrate_heavy_top,
+};
 pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};
 pub use moser_veselov::MoserVeselov;
 pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;

@@ -1,0 +1,91 @@
+//! One stepping interface for the heavy-top integrators, and their registry.
+
+use super::HeavyTop;
+use super::rk4::HeavyTopRk4;
+use super::splitting::HeavyTopSplitting;
+use crate::{DynamicsError, PrincipalState};
+
+/// A one-step method for the heavy top.
+pub trait HeavyTopIntegrator {
+    /// The method's registry name (e.g. `"strang"`).
+    fn name(&self) -> &'static str;
+    /// The order of the method (global error `O(hᵖ)`).
+    fn order(&self) -> u32;
+    /// Advances `state` by `h` seconds.
+    fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64);
+}
+
+/// Advances `state` by `steps` steps of size `h`.
+///
+/// ```text
+/// x(t₀ + n h) ≈ Φₕⁿ x(t₀)
+/// ```
+///
+/// # Errors
+/// [`DynamicsError::InvalidStep`] for `h` that is not positive and finite.
+///
+/// ```
+/// use glam::{DQuat, DVec3};
+/// use kreisel_dynamics::{HeavyTop, PrincipalState, heavy_top_method, integrate_heavy_top};
+/// let top = HeavyTop::try_from_principal(DVec3::new(0.02, 0.02, 0.01), DVec3::new(0.0, 0.0, 0.1), 1.0, DVec3::new(0.0, 0.0, -9.81))?;
+/// let mut s = PrincipalState { world_from_principal: DQuat::from_rotation_x(0.3), l_principal: DVec3::new(0.0, 0.0, 0.5) };
+/// let e0 = top.energy(&s);
+/// integrate_heavy_top(heavy_top_method("splitting8")?.as_ref(), &top, &mut s, 1e-3, 1000)?;
+/// assert!((top.energy(&s) - e0).abs() < 1e-13 * e0);
+/// assert!(integrate_heavy_top(heavy_top_method("rk4")?.as_ref(), &top, &mut s, -1.0, 1).is_err());
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+pub fn integrate_heavy_top(
+    method: &dyn HeavyTopIntegrator,
+    top: &HeavyTop,
+    state: &mut PrincipalState,
+    h: f64,
+    steps: usize,
+) -> Result<(), DynamicsError> {
+    if !(h.is_finite() && h > 0.0) {
+        return Err(DynamicsError::InvalidStep { h });
+    }
+    for _ in 0..steps {
+        method.step(top, state, h);
+    }
+    Ok(())
+}
+
+/// The names the heavy-top registry knows: `auto`, the RK4 baseline, the
+/// Strang splitting and its compositions.
+pub const HEAVY_TOP_METHODS: [&str; 6] = [
+    "auto",
+    "rk4",
+    "strang",
+    "splitting4",
+    "splitting6",
+    "splitting8",
+];
+
+/// The heavy-top integrator registered under `name`.
+///
+/// # Errors
+/// [`DynamicsError::UnknownMethod`] listing the known names.
+///
+/// ```
+/// use kreisel_dynamics::heavy_top_method;
+/// assert_eq!(heavy_top_method("splitting6")?.order(), 6);
+/// assert!(heavy_top_method("exact").is_err());
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+pub fn heavy_top_method(name: &str) -> Result<Box<dyn HeavyTopIntegrator>, DynamicsError> {
+    Ok(match name {
+        "auto" => Box::new(HeavyTopSplitting::ORDER_8),
+        "rk4" => Box::new(HeavyTopRk4),
+        "strang" => Box::new(HeavyTopSplitting::STRANG),
+        "splitting4" => Box::new(HeavyTopSplitting::ORDER_4),
+        "splitting6" => Box::new(HeavyTopSplitting::ORDER_6),
+        "splitting8" => Box::new(HeavyTopSplitting::ORDER_8),
+        _ => {
+            return Err(DynamicsError::UnknownMethod {
+                name: name.to_owned(),
+                known: HEAVY_TOP_METHODS.join(", "),
+            });
+        }
+    })
+}
