@@ -55,7 +55,7 @@ pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI
 pub use error::DynamicsError;
 pub use exact::{ExactFlow, ExactPropagator, ExactSolution};
 pub use heavy_top::{
-    HEAVY_TOP_METHODS, HeavyTop, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
+    HEAVY_TOP_METHODS, HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
     heavy_top_method, integrate_heavy_top,
 };
 pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};

@@ -3,7 +3,7 @@
 use super::HeavyTop;
 use super::rk4::HeavyTopRk4;
 use super::splitting::HeavyTopSplitting;
-use crate::{DynamicsError, PrincipalState};
+use crate::{DynamicsError, PrincipalState, Propagator};
 
 /// A one-step method for the heavy top.
 pub trait HeavyTopIntegrator {
@@ -13,6 +13,38 @@ pub trait HeavyTopIntegrator {
     fn order(&self) -> u32;
     /// Advances `state` by `h` seconds.
     fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64);
+
+    /// One top from `state`, to be advanced step after step (what
+    /// `kreisel simulate` uses): each [`Propagator::advance`] is one
+    /// [`HeavyTopIntegrator::step`].
+    fn propagator<'a>(
+        &'a self,
+        top: &'a HeavyTop,
+        state: PrincipalState,
+    ) -> Box<dyn Propagator + 'a> {
+        Box::new(Stepping {
+            method: self,
+            top,
+            state,
+        })
+    }
+}
+
+/// Repeated steps of a heavy-top method.
+struct Stepping<'a, M: ?Sized> {
+    method: &'a M,
+    top: &'a HeavyTop,
+    state: PrincipalState,
+}
+
+impl<M: HeavyTopIntegrator + ?Sized> Propagator for Stepping<'_, M> {
+    fn advance(&mut self, h: f64) {
+        self.method.step(self.top, &mut self.state, h);
+    }
+
+    fn state(&self) -> PrincipalState {
+        self.state
+    }
 }
 
 /// Advances `state` by `steps` steps of size `h`.
@@ -75,7 +107,7 @@ pub const HEAVY_TOP_METHODS: [&str; 6] = [
 /// ```
 pub fn heavy_top_method(name: &str) -> Result<Box<dyn HeavyTopIntegrator>, DynamicsError> {
     Ok(match name {
-        "auto" => Box::new(HeavyTopSplitting::ORDER_8),
+        "auto" => Box::new(super::HeavyTopAuto),
         "rk4" => Box::new(HeavyTopRk4),
         "strang" => Box::new(HeavyTopSplitting::STRANG),
         "splitting4" => Box::new(HeavyTopSplitting::ORDER_4),

@@ -2,6 +2,7 @@
 //! gravity (notes §3.10 for the symmetric case; here any inertia tensor and
 //! any centre of mass), and its integrators.
 
+mod auto;
 mod free_flow;
 mod integrator;
 mod rk4;
@@ -10,6 +11,7 @@ mod splitting;
 use glam::{DQuat, DVec3};
 use kreisel_inertia::MassProperties;
 
+pub use self::auto::HeavyTopAuto;
 pub use self::integrator::{
     HEAVY_TOP_METHODS, HeavyTopIntegrator, heavy_top_method, integrate_heavy_top,
 };
@@ -253,6 +255,60 @@ impl HeavyTop {
     pub fn vertical_momentum(&self, state: &PrincipalState) -> f64 {
         let up = -self.weight_world.normalize_or(DVec3::NEG_Z);
         state.l_world().dot(up)
+    }
+
+    /// The fastest small swing under gravity: the rate the gravity kicks
+    /// must resolve. Gravity turns the body about axes perpendicular to `c`
+    /// only, so the moments about those axes set it.
+    ///
+    /// ```text
+    /// Ω_g² = |W| |c| max{ nᵀ J⁻¹ n : |n| = 1, n ⟂ c }
+    /// ```
+    /// (the small-swing frequency `√(M g l / J)` of a pendulum, taken for
+    /// the axis perpendicular to `c` with the smallest moment).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::HeavyTop;
+    /// // A thin rod pendulum about its end: J = m l²/3 about the swing axes.
+    /// let (m, l) = (1.0, 0.5);
+    /// let j = m * l * l / 3.0;
+    /// let top = HeavyTop::try_from_principal(DVec3::new(j, j, 1e-6), DVec3::new(0.0, 0.0, -l / 2.0), m, DVec3::new(0.0, 0.0, -9.81))?;
+    /// assert!((top.gravity_frequency() - (9.81 * m * l / 2.0 / j).sqrt()).abs() < 1e-12);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn gravity_frequency(&self) -> f64 {
+        let c = self.com_principal;
+        let Some(axis) = c.try_normalize() else {
+            return 0.0;
+        };
+        let inverse = 1.0 / self.body.principal_moments();
+        let u = axis.any_orthonormal_vector();
+        let v = axis.cross(u);
+        let (a, b, d) = (
+            (u * u * inverse).element_sum(),
+            (u * v * inverse).element_sum(),
+            (v * v * inverse).element_sum(),
+        );
+        let largest = 0.5 * (a + d) + (0.25 * (a - d) * (a - d) + b * b).sqrt();
+        (self.weight_world.length() * c.length() * largest).sqrt()
+    }
+
+    /// An upper bound on `|ω|` over the whole motion from `state`, from the
+    /// conserved energy.
+    ///
+    /// ```text
+    /// |ω|² ≤ 2T/J_min,   T = E − V ≤ E + |W| |c|
+    /// ```
+    pub fn angular_speed_bound(&self, state: &PrincipalState) -> f64 {
+        let j_min = self.body.principal_moments().min_element();
+        let t_max = self.energy(state) + self.weight_world.length() * self.com_principal.length();
+        (2.0 * t_max.max(0.0) / j_min).sqrt()
+    }
+
+    /// Whether the free flow is exact (two equal moments) rather than PDMV10.
+    pub fn free_flow_is_exact(&self) -> bool {
+        matches!(self.free, FreeFlow::Symmetric { .. })
     }
 
     /// The exact flow of the gravity part `V(q)` for time `h`: the attitude
