@@ -1,5 +1,6 @@
-//! `kreisel simulate`: integrate the torque-free rotation of the bodies of a
-//! TOML scene and stream their states as CSV, in constant memory.
+//! `kreisel simulate`: integrate the rotation of the bodies of a TOML scene
+//! (torque-free, or heavy tops on a fixed pivot under gravity) and stream
+//! their states as CSV, in constant memory.
 //!
 //! The scene is read and checked first ([`scene::parse`], every error
 //! naming its line and key), then the bodies are stepped together on the
@@ -19,7 +20,7 @@ use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
-use kreisel_dynamics::{FreeBodyIntegrator, PrincipalState};
+use kreisel_dynamics::{FreeBodyIntegrator, HeavyTopIntegrator, PrincipalState};
 
 use self::output::CsvWriter;
 use self::progress::Progress;
@@ -63,16 +64,26 @@ Scene (TOML; SI units, radians):
   angular_velocity = [0.01, 1.0, 0.0]
                              rad/s, body axes (required)
   position = [0, 0, 0]       centre of mass, world axes, m [default: 0]
-  velocity = [0, 0, 0]       its velocity, m/s [default: 0]
+                             (with a pivot: the pivot's position)
+  velocity = [0, 0, 0]       its velocity, m/s [default: 0] (not with a pivot)
+  pivot = [0, 0, -0.04]      a fixed point, body coordinates, m: the body
+                             is a heavy top turning about it under gravity.
+                             For inertia/inertia_tensor bodies measured from
+                             the centre of mass; for mesh bodies in the
+                             mesh's own coordinates [default: none, free]
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
 
 Motion:
-  Bodies do not interact. Each rotates torque-free (gravity exerts no torque
-  about the centre of mass), advanced by the method with step dt; the last
-  step is shortened to end exactly at t = duration. The centre of mass moves
-  exactly: x(t) = x0 + v0 t + g t^2/2.
+  Bodies do not interact. A body without a pivot rotates torque-free
+  (gravity exerts no torque about the centre of mass) and its centre of mass
+  moves exactly: x(t) = x0 + v0 t + g t^2/2. A body with a pivot is a heavy
+  top: it turns about the fixed pivot under the torque of gravity (none
+  without gravity), moved by the heavy-top version of the method (see
+  --list-methods; exact, splitting, dmv and pdmv* have none). Each body is
+  advanced by the method with step dt; the last step is shortened to end
+  exactly at t = duration.
 
 Output (CSV; standard output unless --output):
   t,body,qw,qx,qy,qz,wx,wy,wz,energy,lx,ly,lz
@@ -82,8 +93,10 @@ Output (CSV; standard output unless --output):
              (no sign flips); as the method holds it (rk4 does not renormalise)
   wx..wz     angular velocity in body axes, rad/s
   energy     total energy, J: rotational + m |v|^2/2 - m g.x (the last term
-             only with gravity), constant for an exact solution
+             only with gravity), constant for an exact solution; with a
+             pivot: rotational about the pivot - m g.x (x the centre of mass)
   lx..lz     angular momentum about the centre of mass, world axes, kg m^2/s
+             (about the pivot for a body with one)
   Rows at t = 0, after every step that ends at a multiple of output_interval
   (every step without it), and at t = duration: one row per body each time,
   in scene order. Numbers in shortest round-trip form; rows are written as
@@ -95,6 +108,7 @@ Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
 Examples:
   kreisel simulate spin.toml --output spin.csv
   kreisel simulate spin.toml --method rk4 | head
+  kreisel simulate examples/scenes/heavy_top.toml
   kreisel simulate --list-methods";
 
 /// Arguments of `kreisel simulate`.
@@ -142,13 +156,21 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         source,
     })?;
     let scene = scene::parse(scene_path, &text)?;
+    let name = match (&args.method, &scene.method) {
+        (Some(name), _) | (None, Some(name)) => name.as_str(),
+        (None, None) => AUTO,
+    };
     let integrator = match overridden {
         Some(integrator) => integrator,
-        None => {
-            let name = scene.method.as_deref().unwrap_or(AUTO);
-            // Checked by the scene parser already.
-            methods::integrator(name).map_err(|message| CliError::Method { message })?
-        }
+        // Checked by the scene parser already.
+        None => methods::integrator(name).map_err(|message| CliError::Method { message })?,
+    };
+    // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
+    let heavy = methods::heavy_top_integrator(name).map_err(|message| CliError::Method { message });
+    let heavy = if scene.bodies.iter().any(|b| b.top.is_some()) {
+        Some(heavy?)
+    } else {
+        None
     };
     let (writer, output) = crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
     let mut progress = Progress::new(
@@ -157,7 +179,11 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     );
     let mut csv = CsvWriter::new(BufWriter::with_capacity(BUFFER_BYTES, writer))
         .map_err(|source| write_error(&output, source))?;
-    let simulated = simulate(&scene, integrator.as_ref(), &mut csv, &mut progress);
+    let methods = Methods {
+        free: integrator.as_ref(),
+        heavy: heavy.as_deref(),
+    };
+    let simulated = simulate(&scene, methods, &mut csv, &mut progress);
     progress.finish();
     let flushed = csv.flush();
     simulated
@@ -181,13 +207,21 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
     }
 }
 
+/// The methods of a run: one for free bodies, one for bodies with a pivot
+/// (present when the scene has such bodies).
+#[derive(Clone, Copy)]
+struct Methods<'a> {
+    free: &'a dyn FreeBodyIntegrator,
+    heavy: Option<&'a dyn HeavyTopIntegrator>,
+}
+
 /// Steps every body through the schedule, writing the rows it asks for.
 ///
 /// # Errors
 /// The writer's errors.
 fn simulate<W: Write>(
     scene: &Scene,
-    integrator: &dyn FreeBodyIntegrator,
+    methods: Methods<'_>,
     csv: &mut CsvWriter<W>,
     progress: &mut Progress,
 ) -> io::Result<()> {
@@ -197,7 +231,12 @@ fn simulate<W: Write>(
     let mut propagators: Vec<_> = scene
         .bodies
         .iter()
-        .map(|b| integrator.propagator(b.rigid.principal_moments(), b.initial))
+        .map(|b| match (&b.top, methods.heavy) {
+            (Some(top), Some(heavy)) => heavy.propagator(top, b.initial),
+            _ => methods
+                .free
+                .propagator(b.rigid.principal_moments(), b.initial),
+        })
         .collect();
     csv.rows(scene, &states, 0.0)?;
     for k in 1..=schedule.steps() {

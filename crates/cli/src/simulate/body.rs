@@ -7,7 +7,7 @@ use std::io::Write;
 use std::path::Path;
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{PrincipalState, RigidBody};
+use kreisel_dynamics::{HeavyTop, PrincipalState, RigidBody};
 use kreisel_inertia::io::load_bodies;
 use kreisel_inertia::{MassModel, MassProperties, Material, mesh_mass_properties};
 use kreisel_kinematics::{EulerSequence, try_normalize_quat};
@@ -32,6 +32,7 @@ pub struct RawBody {
     angular_velocity: Spanned<[f64; 3]>,
     position: Option<Spanned<[f64; 3]>>,
     velocity: Option<Spanned<[f64; 3]>>,
+    pivot: Option<Spanned<[f64; 3]>>,
 }
 
 /// `euler = { sequence = "ZXZ", angles = [..] }` as written.
@@ -56,19 +57,23 @@ pub struct SimBody {
     pub name: String,
     /// Mass, kg.
     pub mass: f64,
-    /// Principal moments and the body-from-principal rotation.
+    /// Principal moments and the body-from-principal rotation: about the
+    /// centre of mass, or about the pivot for a body with one.
     pub rigid: RigidBody,
-    /// Attitude and angular momentum at t = 0.
+    /// Attitude and angular momentum (about the pivot if there is one) at t = 0.
     pub initial: PrincipalState,
-    /// Centre of mass at t = 0 in world axes, m.
+    /// Centre of mass at t = 0 in world axes, m (the pivot for a body with one).
     pub position: DVec3,
-    /// Its velocity at t = 0, m/s.
+    /// Its velocity at t = 0, m/s (zero with a pivot).
     pub velocity: DVec3,
+    /// The heavy top, for a body with a `pivot`.
+    pub top: Option<HeavyTop>,
 }
 
 impl SimBody {
     /// Checks body number `number` (1-based, for the default name); mesh
-    /// paths are relative to `folder`.
+    /// paths are relative to `folder`; `gravity` (world axes, m/s²) pulls
+    /// a body with a pivot.
     ///
     /// # Errors
     /// [`CliError::Scene`] naming the line and key of the first problem.
@@ -77,6 +82,7 @@ impl SimBody {
         raw: &Spanned<RawBody>,
         number: usize,
         folder: &Path,
+        gravity: DVec3,
     ) -> Result<Self, CliError> {
         let b = raw.get_ref();
         let name = match &b.name {
@@ -84,20 +90,35 @@ impl SimBody {
             None => format!("body{number}"),
         };
         let keys = Keys::new(file, format!("body `{name}`: "));
-        let (mass, rigid) = mass_and_inertia(&keys, raw, folder)?;
+        let (props, rigid) = mass_and_inertia(&keys, raw, folder)?;
         let attitude = attitude(&keys, b)?;
         let omega = keys.vector("angular_velocity", &b.angular_velocity)?;
         let position = optional_vector(&keys, "position", &b.position)?;
         let velocity = optional_vector(&keys, "velocity", &b.velocity)?;
+        let top = match &b.pivot {
+            Some(pivot) => {
+                if let Some(v) = &b.velocity {
+                    let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
+                    return Err(keys.fail(v, message));
+                }
+                let at = keys.vector("pivot", pivot)?;
+                let top = HeavyTop::try_new(&props, at, gravity)
+                    .map_err(|e| keys.fail(pivot, &format!("`pivot`: {e}")))?;
+                Some(top)
+            }
+            None => None,
+        };
+        let rigid = top.as_ref().map_or(rigid, |top| *top.body());
         let initial = PrincipalState::try_from_omega_body(&rigid, attitude, omega)
             .map_err(|e| keys.fail(&b.angular_velocity, &e.to_string()))?;
         Ok(Self {
             name,
-            mass,
+            mass: props.mass,
             rigid,
             initial,
             position,
             velocity,
+            top,
         })
     }
 
@@ -114,12 +135,18 @@ impl SimBody {
     /// Total energy at time `t` in rotational state `state`.
     ///
     /// ```text
-    /// E = ½ Σ Lₖ²/Iₖ + ½ m |v|² − m g·x
+    /// free:   E = ½ Σ Lₖ²/Iₖ + ½ m |v|² − m g·x
+    /// pivot:  E = ½ Σ Lₖ²/Jₖ − m g·(p + R c)   (J about the pivot p, c the centre of mass from it)
     /// ```
     pub fn energy(&self, state: &PrincipalState, t: f64, gravity: DVec3) -> f64 {
-        let (x, v) = self.centre_of_mass(t, gravity);
-        state.energy(&self.rigid) + 0.5 * self.mass * v.length_squared()
-            - self.mass * gravity.dot(x)
+        match &self.top {
+            Some(top) => top.energy(state) - self.mass * gravity.dot(self.position),
+            None => {
+                let (x, v) = self.centre_of_mass(t, gravity);
+                state.energy(&self.rigid) + 0.5 * self.mass * v.length_squared()
+                    - self.mass * gravity.dot(x)
+            }
+        }
     }
 }
 
@@ -145,13 +172,15 @@ fn optional_vector(
         .map_or(Ok(DVec3::ZERO), |v| keys.vector(key, v))
 }
 
-/// The mass and rotational inertia from exactly one of `inertia`,
-/// `inertia_tensor` and `mesh`.
+/// The mass properties (body axes; the centre of mass at the origin for
+/// `inertia` and `inertia_tensor`, where the mesh puts it for `mesh`) and
+/// the rotational inertia about the centre of mass, from exactly one of
+/// `inertia`, `inertia_tensor` and `mesh`.
 fn mass_and_inertia(
     keys: &Keys<'_>,
     raw: &Spanned<RawBody>,
     folder: &Path,
-) -> Result<(f64, RigidBody), CliError> {
+) -> Result<(MassProperties, RigidBody), CliError> {
     let b = raw.get_ref();
     let given: Vec<(&str, std::ops::Range<usize>)> = [
         ("inertia", b.inertia.as_ref().map(Spanned::span)),
@@ -186,7 +215,7 @@ fn mass_and_inertia(
         let props = mesh_properties(keys, mesh, density, folder)?;
         let rigid = RigidBody::from_mass_properties(&props)
             .map_err(|e| keys.fail(mesh, &format!("`mesh`: {e}")))?;
-        return Ok((props.mass, rigid));
+        return Ok((props, rigid));
     }
     if let Some(density) = &b.density {
         return Err(keys.fail(density, "`density` is only used with `mesh`"));
@@ -195,23 +224,30 @@ fn mass_and_inertia(
         return Err(keys.fail(raw, "`mass` (kg) is missing"));
     };
     let mass = keys.positive("mass", mass)?;
-    let rigid = match (&b.inertia, &b.inertia_tensor) {
+    let (rigid, tensor) = match (&b.inertia, &b.inertia_tensor) {
         (Some(moments), _) => {
-            RigidBody::try_from_principal_moments(DVec3::from_array(*moments.get_ref()))
-                .map_err(|e| keys.fail(moments, &format!("`inertia`: {e}")))?
+            let diagonal = DVec3::from_array(*moments.get_ref());
+            let rigid = RigidBody::try_from_principal_moments(diagonal)
+                .map_err(|e| keys.fail(moments, &format!("`inertia`: {e}")))?;
+            (rigid, DMat3::from_diagonal(diagonal))
         }
         (None, Some(tensor)) => {
             let rows = *tensor.get_ref();
             if !rows.as_flattened().iter().all(|x| x.is_finite()) {
                 return Err(keys.fail(tensor, "`inertia_tensor` must be finite numbers"));
             }
-            RigidBody::try_from_inertia_tensor(DMat3::from_cols_array_2d(&rows).transpose())
-                .map_err(|e| keys.fail(tensor, &format!("`inertia_tensor`: {e}")))?
+            let matrix = DMat3::from_cols_array_2d(&rows).transpose();
+            let rigid = RigidBody::try_from_inertia_tensor(matrix)
+                .map_err(|e| keys.fail(tensor, &format!("`inertia_tensor`: {e}")))?;
+            (rigid, matrix)
         }
         // Ruled out above; kept as an error rather than a panic.
         (None, None) => return Err(keys.fail(raw, &format!("no inertia given: {ONE_OF}"))),
     };
-    Ok((mass, rigid))
+    // Checked above: positive mass, a physical tensor.
+    let props = MassProperties::try_new(mass, DVec3::ZERO, tensor)
+        .map_err(|e| keys.fail(raw, &e.to_string()))?;
+    Ok((props, rigid))
 }
 
 /// The solid mass properties of every body of the mesh file, summed (mesh axes).

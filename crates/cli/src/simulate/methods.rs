@@ -5,7 +5,9 @@
 
 use std::io::{self, Write};
 
-use kreisel_dynamics::{FreeBodyIntegrator, METHODS, method};
+use kreisel_dynamics::{
+    FreeBodyIntegrator, HEAVY_TOP_METHODS, HeavyTopIntegrator, METHODS, heavy_top_method, method,
+};
 
 /// The name that stands for the recommended method (the default).
 pub const AUTO: &str = "auto";
@@ -66,6 +68,34 @@ const DESCRIPTIONS: [(&str, &str); 12] = [
     ),
 ];
 
+/// One line about each heavy-top method (bodies with a `pivot`).
+const HEAVY_TOP_DESCRIPTIONS: [(&str, &str); 6] = [
+    (
+        "auto",
+        "the default; splitting8, sub-stepped where dt exceeds its stability limit",
+    ),
+    (
+        "rk4",
+        "classical Runge-Kutta on L and q with the gravity torque, the baseline",
+    ),
+    (
+        "strang",
+        "half gravity kick, exact free-body flow, half kick (PDMV10 for 3 distinct moments)",
+    ),
+    (
+        "splitting4",
+        "Suzuki's 5-stage symmetric composition of strang",
+    ),
+    (
+        "splitting6",
+        "Kahan and Li's 9-stage symmetric composition of strang",
+    ),
+    (
+        "splitting8",
+        "Kahan and Li's 17-stage symmetric composition of strang",
+    ),
+];
+
 /// The registry's names without `auto` (listed first, separately).
 fn registry() -> impl Iterator<Item = &'static str> {
     METHODS.into_iter().filter(|&name| name != AUTO)
@@ -91,6 +121,19 @@ pub fn integrator(name: &str) -> Result<Box<dyn FreeBodyIntegrator>, String> {
             known_names()
         )),
     }
+}
+
+/// The heavy-top integrator called `name`, for bodies with a `pivot`.
+///
+/// # Errors
+/// A message naming the method and listing the heavy-top ones.
+pub fn heavy_top_integrator(name: &str) -> Result<Box<dyn HeavyTopIntegrator>, String> {
+    heavy_top_method(name).map_err(|_| {
+        format!(
+            "method `{name}` cannot move a body with a `pivot` (a heavy top); use one of {}",
+            HEAVY_TOP_METHODS.join(", ")
+        )
+    })
 }
 
 /// The description of a registry method (a placeholder for a method added
@@ -123,6 +166,11 @@ pub fn write_list<W: Write + ?Sized>(out: &mut W) -> io::Result<()> {
     for name in registry() {
         writeln!(out, "{name:<12}{:>5}  {}", order(name), description(name))?;
     }
+    writeln!(out, "\nBodies with a pivot (heavy top under gravity):")?;
+    for (name, text) in HEAVY_TOP_DESCRIPTIONS {
+        let order = heavy_top_method(name).map_or(0, |m| m.order());
+        writeln!(out, "{name:<12}{order:>5}  {text}")?;
+    }
     Ok(())
 }
 
@@ -142,6 +190,16 @@ mod tests {
     }
 
     #[test]
+    fn every_heavy_top_method_is_described_and_resolves() {
+        assert_eq!(HEAVY_TOP_DESCRIPTIONS.len(), HEAVY_TOP_METHODS.len());
+        for (name, _) in HEAVY_TOP_DESCRIPTIONS {
+            assert_eq!(heavy_top_integrator(name).unwrap().name(), name);
+        }
+        let e = heavy_top_integrator("exact").err().unwrap();
+        assert!(e.contains("use one of auto, rk4, strang"), "{e}");
+    }
+
+    #[test]
     fn unknown_method_lists_the_known_ones() {
         let e = integrator("euler").err().unwrap();
         assert!(
@@ -156,7 +214,13 @@ mod tests {
         let mut out = Vec::new();
         write_list(&mut out).unwrap();
         let text = String::from_utf8(out).unwrap();
-        assert_eq!(text.lines().count(), 2 + registry().count());
+        assert_eq!(
+            text.lines().count(),
+            2 + registry().count() + 2 + HEAVY_TOP_METHODS.len()
+        );
+        assert!(text.contains(
+            "splitting8      8  Kahan and Li's 17-stage symmetric composition of strang"
+        ));
         assert!(
             text.contains("auto        exact  the default; runs exact"),
             "{text}"

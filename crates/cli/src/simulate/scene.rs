@@ -192,13 +192,19 @@ pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
     let folder = path.parent().unwrap_or(Path::new(""));
     let mut bodies: Vec<SimBody> = Vec::with_capacity(raw.body.len());
     for (n, raw_body) in raw.body.iter().enumerate() {
-        let body = SimBody::from_raw(file, raw_body, n + 1, folder)?;
+        let body = SimBody::from_raw(file, raw_body, n + 1, folder, gravity)?;
         if bodies.iter().any(|other| other.name == body.name) {
             let span = raw_body.get_ref().name_span().unwrap_or(raw_body.span());
             let message = format!("body name `{}` is used twice; names must differ", body.name);
             return Err(file.error(Some(span), &message));
         }
         bodies.push(body);
+    }
+    if let Some(name) = &sim.method
+        && bodies.iter().any(|b| b.top.is_some())
+    {
+        methods::heavy_top_integrator(name.get_ref())
+            .map_err(|message| keys.fail(name, &format!("`method`: {message}")))?;
     }
     Ok(Scene {
         schedule,

@@ -6,6 +6,7 @@
 //! the measured errors and flip intervals.
 
 mod errors;
+mod heavy_top;
 mod output;
 mod physics;
 mod support;

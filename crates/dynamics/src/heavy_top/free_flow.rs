@@ -25,7 +25,7 @@ pub(crate) enum FreeFlow {
         c: f64,
     },
     /// PDMV10 prepared for the moments.
-    Pdmv(PreprocessedMoserVeselov),
+    Pdmv(Box<PreprocessedMoserVeselov>),
 }
 
 impl FreeFlow {
@@ -41,7 +41,9 @@ impl FreeFlow {
                     c: 1.0 / m[axis] - 1.0 / perpendicular,
                 }
             }
-            None => FreeFlow::Pdmv(PreprocessedMoserVeselov::ORDER_10.for_body(moments)),
+            None => FreeFlow::Pdmv(Box::new(
+                PreprocessedMoserVeselov::ORDER_10.for_body(moments),
+            )),
         }
     }
 
