@@ -390,3 +390,45 @@ fn bad_input_is_an_error() {
 fn new_panics_on_bad_input() {
     let _ = LagrangeTop::new(-1.0, 1.0, 1.0);
 }
+
+/// One nutation period later θ repeats and φ has advanced by ⟨φ̇⟩T, also
+/// thousands of periods out; a top grazing the vertical (1 − u₂ ≈ 1e-9)
+/// keeps its constants of the motion.
+#[test]
+fn periodicity_long_times_and_grazing_the_vertical() {
+    let r = load("loops");
+    let motion = r.top.try_solve(r.initial).unwrap();
+    let period = motion.nutation_period().unwrap();
+    let rate = motion.mean_precession_rate().unwrap();
+    for t in [0.3, 17.0, 1.0e3, 1.0e4] {
+        let (e0, e1) = (motion.euler_at(t), motion.euler_at(t + period));
+        let tol = 1e-15 * t.max(1.0) * 100.0;
+        assert!((e1.theta - e0.theta).abs() < tol, "{t}");
+        assert!((e1.phi - e0.phi - rate * period).abs() < tol, "{t}");
+    }
+    // φ̇₀ = a/(1 + u₀) would pass exactly through the vertical; a little less
+    // grazes it.
+    let top = LagrangeTop::new(1.25, 0.5, 1.0);
+    let (theta, w3) = (0.4f64, 9.0);
+    let a = 0.5 * w3 / 1.25; // I₃ω₃/I₁
+    let phi_dot = a / (1.0 + theta.cos()) * (1.0 - 1e-9);
+    let init = LagrangeTopInitial {
+        theta,
+        phi_dot,
+        psi_dot: w3 - phi_dot * theta.cos(),
+        ..Default::default()
+    };
+    let motion = top.try_solve(init).unwrap();
+    assert!(motion.theta_min() < 1e-3, "{}", motion.theta_min());
+    let c0 = constants(&top, &motion.euler_at(0.0));
+    let period = motion.nutation_period().unwrap();
+    let mut worst = 0.0f64;
+    for k in 0..300 {
+        let c = constants(&top, &motion.euler_at(period * k as f64 / 97.0));
+        for (x, y) in c.iter().zip(&c0) {
+            worst = worst.max((x - y).abs() / y.abs().max(1.0));
+        }
+    }
+    println!("grazing the vertical: constants of the motion {worst:.1e}");
+    assert!(worst < 1e-12, "{worst:e}");
+}

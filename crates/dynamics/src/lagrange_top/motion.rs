@@ -2,7 +2,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::roots::ShiftedCubic;
+use super::roots::{ShiftedCubic, polish_pole_distance};
 use super::third_kind::{ThirdKind, complete_k};
 use super::{EulerAnglesAndRates, LagrangeTop, LagrangeTopInitial};
 use crate::elliptic::{JacobiElliptic, incomplete_f_complementary};
@@ -139,15 +139,18 @@ impl LagrangeTopMotion {
         if bpa == 0.0 {
             tp.w1 = -one_plus_u0;
         }
+        // α ∓ β = A₀ ∓ β (1 ∓ u₀), without cancellation.
         let one_minus_u2 = if bma == 0.0 {
             0.0
         } else {
-            (one_minus_u0 - tp.w2).max(0.0)
+            let v0 = (one_minus_u0 - tp.w2).max(0.0);
+            polish_pole_distance(v0, a0 - beta * one_minus_u0, beta, bma, a)
         };
         let one_plus_u1 = if bpa == 0.0 {
             0.0
         } else {
-            (one_plus_u0 + tp.w1).max(0.0)
+            let v0 = (one_plus_u0 + tp.w1).max(0.0);
+            polish_pole_distance(v0, a0 + beta * one_plus_u0, -beta, bpa, -a)
         };
         let delta = tp.w2 - tp.w1;
         let kind = if s0 == 0.0 && thd == 0.0 && u0 > 0.0 {

@@ -100,6 +100,53 @@ impl ShiftedCubic {
     }
 }
 
+/// The distance `v ≥ 0` of a turning point from the pole `u = ±1`, polished
+/// by Newton's method on `f` written about that pole, so that `v` keeps
+/// its relative accuracy when the axis comes close to the vertical:
+///
+/// ```text
+/// f(±(1 − v)) = v (2 − v) (α ∓ β ± β v) − ((b ∓ a) ± a v)²
+/// ```
+///
+/// `alpha_pole = α ∓ β` and `b_pole = b ∓ a` must be formed without
+/// cancellation by the caller; `a_signed = ±a`, `beta_signed = ±β`. Starts
+/// from `v0` (the value from the roots about `u₀`) and keeps it unless
+/// Newton converges nearby.
+pub(crate) fn polish_pole_distance(
+    v0: f64,
+    alpha_pole: f64,
+    beta_signed: f64,
+    b_pole: f64,
+    a_signed: f64,
+) -> f64 {
+    if !(v0 > 0.0 && v0 < 0.25) {
+        return v0;
+    }
+    let eval = |v: f64| {
+        let q = alpha_pole + beta_signed * v;
+        let r = b_pole + a_signed * v;
+        let f = v * (2.0 - v) * q - r * r;
+        let d = (2.0 - 2.0 * v) * q + v * (2.0 - v) * beta_signed - 2.0 * a_signed * r;
+        (f, d)
+    };
+    let mut v = v0;
+    for _ in 0..8 {
+        let (f, d) = eval(v);
+        if d == 0.0 || !f.is_finite() {
+            return v0;
+        }
+        let next = v - f / d;
+        if next.is_nan() || next <= 0.0 || (next - v0).abs() > 1e-6 * v0 {
+            return v0;
+        }
+        if next == v {
+            break;
+        }
+        v = next;
+    }
+    v
+}
+
 /// The root of `f` in `[lo, hi]` where `f(lo) ≤ 0 < f(hi)` or
 /// `f(lo) > 0 ≥ f(hi)`: Newton steps kept inside the shrinking bracket,
 /// bisection when a step leaves it, until the iterate stops moving.
