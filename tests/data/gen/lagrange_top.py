@@ -71,6 +71,8 @@ SCENARIOS = [
      (1.25, 0.5, 0.0), (0.2, 0.7, 0.1, 0.8, 0.3, 2.0), 8.0),
     ("hanging", "Mgl < 0: centre of mass below the pivot",
      (1.25, 0.5, -1.0), (0.0, 2.5, 0.0, 0.4, 0.3, 3.0), 10.0),
+    ("through_vertical", "started upright with theta' != 0 (b = a): the axis swings through the vertical",
+     (1.25, 0.5, 1.0), (0.3, 0.0, 0.2, 0.0, 0.5, 8.0), 6.0),
 ]
 
 
@@ -279,6 +281,8 @@ def metadata(sc):
     period_k = 2 * mp.ellipk(m) / nu
     assert abs(period_k - period) < mpf(10) ** (15 - mp.dps) * period, (period, period_k)
     s1, s2 = b - a * u1, b - a * u2
+    if b == a and abs(u2 - 1) < mpf(10) ** (10 - mp.dps):
+        s2 = a / 2  # phi' = (b - a u)/(1 - u^2) = a/(1 + u) at u = 1
     tiny = mpf(10) ** (10 - mp.dps) * (abs(b) + abs(a))
     sign = 0 if min(abs(s1), abs(s2)) < tiny else 1 if s1 * s2 > 0 else -1
     kind = {1: "no_loops", -1: "loops", 0: "cusps"}[sign]

@@ -32,6 +32,10 @@ use crate::DynamicsError;
 
 /// A symmetric heavy top: moments about the pivot and the gravity moment.
 ///
+/// ```text
+/// I₁ = I₂ (about the pivot),  I₃ (symmetry axis, body e₃),  V = Mgl cos θ
+/// ```
+///
 /// ```
 /// use kreisel_dynamics::LagrangeTop;
 /// let top = LagrangeTop::try_new(1.25, 0.5, 1.0)?;
