@@ -441,3 +441,46 @@ fn periodicity_long_times_and_grazing_the_vertical() {
     println!("grazing the vertical: constants of the motion {worst:.1e}");
     assert!(worst < 1e-12, "{worst:e}");
 }
+
+/// No spin, released from rest: a plane pendulum swinging through the
+/// downward vertical (b = a = 0, so u = +1 is a root of f but not a turning
+/// point). u = cos θ repeats twice per swing: the nutation period is half
+/// the pendulum's 4K(sin²(χ₀/2))/√(Mgl/I₁) about the bottom, χ₀ = π − θ₀;
+/// the attitude stays continuous.
+#[test]
+fn spinless_top_is_a_pendulum() {
+    use kreisel_dynamics::elliptic::complete_k;
+    let top = LagrangeTop::new(1.25, 0.5, 1.0);
+    for (theta, psi) in [(0.5f64, 0.0), (2.0, 0.7)] {
+        let motion = top
+            .try_solve(LagrangeTopInitial {
+                phi: 0.3,
+                theta,
+                psi,
+                ..Default::default()
+            })
+            .unwrap();
+        let chi0 = std::f64::consts::PI - theta;
+        let want = 2.0 * complete_k((0.5 * chi0).sin().powi(2)) / (1.0f64 / 1.25).sqrt();
+        let got = motion.nutation_period().unwrap();
+        assert!((got - want).abs() < 1e-13 * want, "{theta}: {got} {want}");
+        assert!((motion.theta_min() - theta).abs() < 1e-15);
+        assert_eq!(motion.theta_max(), std::f64::consts::PI);
+        let mut prev = motion.world_from_body_at(0.0);
+        for k in 1..=1000 {
+            let t = 2.0 * got * k as f64 / 1000.0;
+            let q = motion.world_from_body_at(t);
+            assert!(rotation_angle_between(prev, q) < 0.05, "{t}");
+            // the axis stays in the vertical plane of φ₀ = 0.3
+            let axis = q * glam::DVec3::Z;
+            let normal = glam::DVec3::new(0.3f64.cos(), 0.3f64.sin(), 0.0);
+            assert!(axis.dot(normal).abs() < 1e-14, "{t}");
+            prev = q;
+        }
+        // One nutation period after the release the axis is at θ = 2π − θ₀
+        // on the far side: reported as θ₀ with φ advanced by π.
+        let e = motion.euler_at(got);
+        assert!((e.theta - theta).abs() < 1e-12, "{}", e.theta);
+        assert!((e.phi - (0.3 + std::f64::consts::PI)).abs() < 1e-12);
+    }
+}

@@ -294,10 +294,10 @@ impl LagrangeTopMotion {
             return Some(TopMotionKind::Cusps);
         }
         let rate = |w: f64, at_top: bool| -> f64 {
-            if at_top && self.bma == 0.0 {
+            if at_top && self.through_top {
                 return self.bpa;
             }
-            if !at_top && self.bpa == 0.0 {
+            if !at_top && self.through_bottom {
                 return self.bma;
             }
             let d = self.b0 - self.a * w;

@@ -34,7 +34,7 @@ impl LagrangeTopMotion {
         };
         let udot = 2.0 * self.sigma * d * self.nu * sn * cn * dn;
         let rd = d.sqrt();
-        let (y, ydot) = if self.bma == 0.0 {
+        let (y, ydot) = if self.through_top {
             let (gv, gd) = if self.sigma > 0.0 {
                 (cn, -sn * dn)
             } else {
@@ -45,7 +45,7 @@ impl LagrangeTopMotion {
             let y = omu.sqrt();
             (y, -udot / (2.0 * y))
         };
-        let (x, xdot) = if self.bpa == 0.0 {
+        let (x, xdot) = if self.through_bottom {
             let (hv, hd) = if self.sigma > 0.0 {
                 (sn, cn * dn)
             } else {

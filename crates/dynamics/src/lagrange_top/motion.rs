@@ -71,6 +71,10 @@ pub struct LagrangeTopMotion {
     pub(super) delta: f64,
     pub(super) one_minus_u2: f64,
     pub(super) one_plus_u1: f64,
+    /// `u₂ = 1` exactly (`b = a`): the axis passes through the upward vertical.
+    pub(super) through_top: bool,
+    /// `u₁ = −1` exactly (`b = −a`): the axis passes through the downward vertical.
+    pub(super) through_bottom: bool,
     pub(super) kind: Kind,
     /// +1 for β ≥ 0 (base u₁), −1 for β < 0 (base u₂).
     pub(super) sigma: f64,
@@ -134,24 +138,31 @@ impl LagrangeTopMotion {
             c0: s2 * thd * thd,
         };
         let mut tp = cubic.turning_points(one_plus_u0, one_minus_u0);
-        if bma == 0.0 {
+        // With b = ±a the pole u = ±1 is a root of f: a turning point (the
+        // axis passes through the vertical) if f > 0 next to it, i.e.
+        // f(u)/(1 ∓ u) → 2(α ∓ β) > 0 there; otherwise the third root.
+        // α ∓ β = A₀ ∓ β (1 ∓ u₀), without cancellation.
+        let alpha_minus_beta = a0 - beta * one_minus_u0;
+        let alpha_plus_beta = a0 + beta * one_plus_u0;
+        let through_top = bma == 0.0 && alpha_minus_beta >= 0.0;
+        let through_bottom = bpa == 0.0 && alpha_plus_beta >= 0.0;
+        if through_top {
             tp.w2 = one_minus_u0;
         }
-        if bpa == 0.0 {
+        if through_bottom {
             tp.w1 = -one_plus_u0;
         }
-        // α ∓ β = A₀ ∓ β (1 ∓ u₀), without cancellation.
-        let one_minus_u2 = if bma == 0.0 {
+        let one_minus_u2 = if through_top {
             0.0
         } else {
             let v0 = (one_minus_u0 - tp.w2).max(0.0);
-            polish_pole_distance(v0, a0 - beta * one_minus_u0, beta, bma, a)
+            polish_pole_distance(v0, alpha_minus_beta, beta, bma, a)
         };
-        let one_plus_u1 = if bpa == 0.0 {
+        let one_plus_u1 = if through_bottom {
             0.0
         } else {
             let v0 = (one_plus_u0 + tp.w1).max(0.0);
-            polish_pole_distance(v0, a0 + beta * one_plus_u0, -beta, bpa, -a)
+            polish_pole_distance(v0, alpha_plus_beta, -beta, bpa, -a)
         };
         let delta = tp.w2 - tp.w1;
         let kind = if s0 == 0.0 && thd == 0.0 && u0 > 0.0 {
@@ -191,6 +202,8 @@ impl LagrangeTopMotion {
             delta,
             one_minus_u2,
             one_plus_u1,
+            through_top,
+            through_bottom,
             kind,
             sigma,
             nu,
@@ -214,7 +227,7 @@ impl LagrangeTopMotion {
         // 1 − u at u₁, u₂ and 1 + u at u₁, u₂.
         let (omu1, omu2) = (one_minus_u2 + delta, one_minus_u2);
         let (opu1, opu2) = (one_plus_u1, one_plus_u1 + delta);
-        if bma != 0.0 {
+        if bma != 0.0 && !through_top {
             let (hb, ho) = if sigma > 0.0 {
                 (omu1, omu2)
             } else {
@@ -231,7 +244,7 @@ impl LagrangeTopMotion {
             };
             motion.zeta_y = if s0 != 0.0 { sign(gv) } else { sign(thd * gd) };
         }
-        if bpa != 0.0 {
+        if bpa != 0.0 && !through_bottom {
             let (hb, ho) = if sigma > 0.0 {
                 (opu1, opu2)
             } else {

@@ -56,8 +56,8 @@ impl ShiftedCubic {
     /// The turning points and the third root (module docs).
     pub fn turning_points(&self, one_plus_u0: f64, one_minus_u0: f64) -> TurningPoints {
         if self.c0 > 0.0 {
-            let w1 = bracketed_root(self, -one_plus_u0, 0.0);
-            let w2 = bracketed_root(self, 0.0, one_minus_u0);
+            let w1 = bracketed_root(self, -one_plus_u0, 0.0, true);
+            let w2 = bracketed_root(self, 0.0, one_minus_u0, false);
             let g = -self.c0 / (w1 * w2);
             return TurningPoints { w1, w2, g };
         }
@@ -147,21 +147,28 @@ pub(crate) fn polish_pole_distance(
     v
 }
 
-/// The root of `f` in `[lo, hi]` where `f(lo) ≤ 0 < f(hi)` or
-/// `f(lo) > 0 ≥ f(hi)`: Newton steps kept inside the shrinking bracket,
-/// bisection when a step leaves it, until the iterate stops moving.
-fn bracketed_root(cubic: &ShiftedCubic, lo: f64, hi: f64) -> f64 {
-    let (flo, _) = cubic.eval(lo);
-    let (fhi, _) = cubic.eval(hi);
-    // Rounding may put f(±1) = −(b ∓ a)² ≈ 0 on the wrong side: the root is
-    // then the end point itself.
-    if lo != 0.0 && flo >= 0.0 {
-        return lo;
+/// The turning point in `[lo, hi]`, where `f(lo) ≤ 0 < f(hi)` (`rising`,
+/// the end `hi = 0` is `u₀`) or `f(lo) > 0 ≥ f(hi)`: Newton steps kept
+/// inside the shrinking bracket, bisection when a step leaves it, until the
+/// iterate stops moving.
+///
+/// The other end is a pole `u = ±1`, where `f = −(b ∓ a)²` may be 0 (or
+/// rounded to ≥ 0). The pole is the turning point itself only if `f` has
+/// the sign of the motion next to it; if `f` dips below 0 there (the pole
+/// is the third root, e.g. `b = a = 0` with too little energy to reach the
+/// top), the turning point is inside and the bisection finds it.
+fn bracketed_root(cubic: &ShiftedCubic, lo: f64, hi: f64, rising: bool) -> f64 {
+    if rising {
+        let (flo, dlo) = cubic.eval(lo);
+        if flo >= 0.0 && dlo >= 0.0 {
+            return lo;
+        }
+    } else {
+        let (fhi, dhi) = cubic.eval(hi);
+        if fhi >= 0.0 && dhi <= 0.0 {
+            return hi;
+        }
     }
-    if hi != 0.0 && fhi >= 0.0 {
-        return hi;
-    }
-    let rising = flo < fhi;
     let (mut a, mut b) = (lo, hi);
     let mut x = 0.5 * (lo + hi);
     for _ in 0..200 {
