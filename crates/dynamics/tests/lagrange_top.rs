@@ -484,3 +484,65 @@ fn spinless_top_is_a_pendulum() {
         assert!((e.phi - (0.3 + std::f64::consts::PI)).abs() < 1e-12);
     }
 }
+
+/// A grid of tops and initial conditions, including the poles (θ₀ = π is
+/// the f64 nearest π, within the 1e-14 rad snap), zero rates and all signs
+/// of Mgl: every result is finite, `euler_at` and `world_from_body_at` agree,
+/// and E, p_φ, p_ψ hold.
+#[test]
+fn grid_of_edge_cases_stays_finite_and_conservative() {
+    let pi = std::f64::consts::PI;
+    let mut worst = (0.0f64, String::new());
+    for mgl in [-1.0, 0.0, 1.0] {
+        let top = LagrangeTop::new(1.25, 0.5, mgl);
+        for theta in [0.0, 1e-8, 0.5, 0.5 * pi, 3.0, pi - 1e-8, pi] {
+            for phi_dot in [-2.0, 0.0, 3.0] {
+                for theta_dot in [-2.0, 0.0, 3.0] {
+                    for psi_dot in [-2.0, 0.0, 3.0] {
+                        let init = LagrangeTopInitial {
+                            phi: 0.1,
+                            theta,
+                            psi: 0.2,
+                            phi_dot,
+                            theta_dot,
+                            psi_dot,
+                        };
+                        let motion = top.try_solve(init).unwrap();
+                        let c0 = constants(&top, &motion.euler_at(0.0));
+                        let scale = c0.iter().fold(1.0f64, |m, c| m.max(c.abs()));
+                        for t in [0.0, 0.7, 3.1, 25.0] {
+                            let e = motion.euler_at(t);
+                            let q = motion.world_from_body_at(t);
+                            let w = motion.omega_body_at(t);
+                            assert!(
+                                [e.phi, e.theta, e.psi, e.phi_dot, e.theta_dot, e.psi_dot]
+                                    .iter()
+                                    .all(|x| x.is_finite())
+                                    && q.is_finite()
+                                    && w.is_finite(),
+                                "{init:?} {t}: {e:?}"
+                            );
+                            let qe = DQuat::from_rotation_z(e.phi)
+                                * DQuat::from_rotation_x(e.theta)
+                                * DQuat::from_rotation_z(e.psi);
+                            assert!(rotation_angle_between(q, qe) < 1e-12, "{init:?} {t}");
+                            assert!((0.0..=pi).contains(&e.theta), "{init:?} {t}");
+                            let c = constants(&top, &e);
+                            for (x, y) in c.iter().zip(&c0) {
+                                let d = (x - y).abs() / scale;
+                                if d > worst.0 {
+                                    worst = (d, format!("{init:?} mgl {mgl} t {t}"));
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!(
+        "grid: constants of the motion {:.1e} at {}",
+        worst.0, worst.1
+    );
+    assert!(worst.0 < 1e-12, "{worst:?}");
+}

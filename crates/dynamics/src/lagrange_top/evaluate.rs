@@ -110,14 +110,16 @@ impl LagrangeTopMotion {
         let mut e = self.signed_euler(t);
         let pi = std::f64::consts::PI;
         if e.theta < 0.0 || e.theta > pi {
-            e.theta = if e.theta < 0.0 {
-                -e.theta
+            // Rx(θ) = Rx(θ mod 2π); past π, (φ, θ, ψ) ≡ (φ + π, 2π − θ, ψ − π).
+            let r = e.theta.rem_euclid(2.0 * pi);
+            if r > pi {
+                e.theta = 2.0 * pi - r;
+                e.phi += pi;
+                e.psi -= pi;
+                e.theta_dot = -e.theta_dot;
             } else {
-                2.0 * pi - e.theta
-            };
-            e.phi += pi;
-            e.psi -= pi;
-            e.theta_dot = -e.theta_dot;
+                e.theta = r;
+            }
         }
         e
     }

@@ -279,7 +279,9 @@ impl LagrangeTop {
     ///
     /// Any finite angles: θ₀ outside [0, π] is brought there first by
     /// `(φ, θ, ψ) ≡ (φ + π, −θ, ψ − π)` (and θ̇ → −θ̇), which is the same
-    /// attitude.
+    /// attitude. A θ₀ within 10⁻¹⁴ rad of a pole (0 or π) is taken as
+    /// exactly on it: `u = cos θ` resolves no closer start, and the attitude
+    /// changes by less than 10⁻¹⁴ rad.
     ///
     /// # Errors
     /// [`DynamicsError::InvalidTop`] if an angle or rate is not finite.

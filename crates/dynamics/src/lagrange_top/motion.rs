@@ -3,7 +3,7 @@
 use super::roots::{ShiftedCubic, polish_pole_distance};
 use super::third_kind::{ThirdKind, complete_k};
 use super::{LagrangeTop, LagrangeTopInitial};
-use crate::elliptic::{JacobiElliptic, incomplete_f_complementary};
+use crate::elliptic::{JacobiElliptic, carlson_rf};
 
 /// The motion of a [`LagrangeTop`] from given initial conditions, in closed
 /// form (Goldstein §5.7; Landau & Lifshitz §35; notes §3.10–3.11).
@@ -91,6 +91,11 @@ pub struct LagrangeTopMotion {
     pub(super) zeta_x: f64,
 }
 
+/// Starts closer than this to a pole (rad) are put on the pole: `u = cos θ`
+/// cannot resolve them (the phase at the turning point near the pole would
+/// round to the turning point itself and misplace the jump of φ by π).
+pub(super) const POLE_SNAP: f64 = 1e-14;
+
 /// Which closed form applies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) enum Kind {
@@ -108,20 +113,37 @@ pub(super) fn sign(x: f64) -> f64 {
 
 impl LagrangeTopMotion {
     pub(super) fn new(top: LagrangeTop, initial: LagrangeTopInitial) -> LagrangeTopMotion {
+        let pi = std::f64::consts::PI;
         let mut init = initial;
-        let t = init.theta.rem_euclid(2.0 * std::f64::consts::PI);
+        let t = init.theta.rem_euclid(2.0 * pi);
         init.theta = t;
-        if t > std::f64::consts::PI {
-            init.theta = 2.0 * std::f64::consts::PI - t;
-            init.phi += std::f64::consts::PI;
-            init.psi -= std::f64::consts::PI;
+        if t > pi {
+            init.theta = 2.0 * pi - t;
+            init.phi += pi;
+            init.psi -= pi;
             init.theta_dot = -init.theta_dot;
         }
+        // Within POLE_SNAP of a pole the start is put exactly on it (see
+        // `LagrangeTop::try_solve`); π itself is not an f64, so the bottom is
+        // flagged and given sin θ₀ = 0, cos θ₀ = −1 exactly.
+        if init.theta < POLE_SNAP {
+            init.theta = 0.0;
+        }
+        let at_bottom = pi - init.theta < POLE_SNAP;
+        if at_bottom {
+            init.theta = pi;
+        }
         let (th, phd, thd) = (init.theta, init.phi_dot, init.theta_dot);
-        let (s0, u0) = th.sin_cos();
+        let (s0, u0) = if at_bottom { (0.0, -1.0) } else { th.sin_cos() };
         let s2 = s0 * s0;
-        let one_minus_u0 = 2.0 * (0.5 * th).sin().powi(2);
-        let one_plus_u0 = 2.0 * (0.5 * th).cos().powi(2);
+        let (one_minus_u0, one_plus_u0) = if at_bottom {
+            (2.0, 0.0)
+        } else {
+            (
+                2.0 * (0.5 * th).sin().powi(2),
+                2.0 * (0.5 * th).cos().powi(2),
+            )
+        };
         let omega3 = phd * u0 + init.psi_dot;
         let a = top.i3 * omega3 / top.i1;
         let beta = 2.0 * top.mgl / top.i1;
@@ -144,34 +166,39 @@ impl LagrangeTopMotion {
         // α ∓ β = A₀ ∓ β (1 ∓ u₀), without cancellation.
         let alpha_minus_beta = a0 - beta * one_minus_u0;
         let alpha_plus_beta = a0 + beta * one_plus_u0;
-        let through_top = bma == 0.0 && alpha_minus_beta >= 0.0;
-        let through_bottom = bpa == 0.0 && alpha_plus_beta >= 0.0;
+        let through_top = bma == 0.0 && alpha_minus_beta > 0.0;
+        let through_bottom = bpa == 0.0 && alpha_plus_beta > 0.0;
         if through_top {
             tp.w2 = one_minus_u0;
         }
         if through_bottom {
             tp.w1 = -one_plus_u0;
         }
+        // 1 − u₂ and 1 + u₁ from f(±1) = −(b ∓ a)² = the factorised cubic
+        // at the pole (no difference of nearly equal numbers), polished.
         let one_minus_u2 = if through_top {
             0.0
         } else {
-            let v0 = (one_minus_u0 - tp.w2).max(0.0);
+            let by_product = bma * bma / ((one_minus_u0 - tp.w1) * (tp.g - beta * one_minus_u0));
+            let v0 = if bma != 0.0 && by_product.is_finite() && by_product > 0.0 {
+                by_product
+            } else {
+                (one_minus_u0 - tp.w2).max(0.0)
+            };
             polish_pole_distance(v0, alpha_minus_beta, beta, bma, a)
         };
         let one_plus_u1 = if through_bottom {
             0.0
         } else {
-            let v0 = (one_plus_u0 + tp.w1).max(0.0);
+            let by_product = bpa * bpa / ((one_plus_u0 + tp.w2) * (tp.g + beta * one_plus_u0));
+            let v0 = if bpa != 0.0 && by_product.is_finite() && by_product > 0.0 {
+                by_product
+            } else {
+                (one_plus_u0 + tp.w1).max(0.0)
+            };
             polish_pole_distance(v0, alpha_plus_beta, -beta, bpa, -a)
         };
         let delta = tp.w2 - tp.w1;
-        let kind = if s0 == 0.0 && thd == 0.0 && u0 > 0.0 {
-            Kind::Vertical
-        } else if delta == 0.0 {
-            Kind::Steady
-        } else {
-            Kind::Nutating
-        };
         let sigma = if beta >= 0.0 { 1.0 } else { -1.0 };
         let (wb, wo) = if sigma > 0.0 {
             (tp.w1, tp.w2)
@@ -179,6 +206,15 @@ impl LagrangeTopMotion {
             (tp.w2, tp.w1)
         };
         let p = tp.g - beta * wb;
+        let kind = if s0 == 0.0 && thd == 0.0 && u0 > 0.0 {
+            Kind::Vertical
+        } else if (s0 == 0.0 && thd == 0.0) || delta == 0.0 || p.is_nan() || p <= 0.0 {
+            // at rest in θ on the downward vertical (an equilibrium, even
+            // where it is unstable), steady precession, or no motion at all
+            Kind::Steady
+        } else {
+            Kind::Nutating
+        };
         let mc = ((tp.g - beta * wo) / p).clamp(0.0, 1.0);
         let m = (beta.abs() * delta / p).clamp(0.0, 1.0);
         let nu = 0.5 * p.max(0.0).sqrt();
@@ -218,8 +254,10 @@ impl LagrangeTopMotion {
         if kind != Kind::Nutating {
             return motion;
         }
-        let amp = wb.abs().sqrt().atan2(wo.abs().sqrt());
-        let f = incomplete_f_complementary(amp, mc);
+        // sn²τ₀ = |w_b|/Δ, cn²τ₀ = |w_o|/Δ: F(am τ₀) = sn R_F(cn², cn² + mc sn², 1)
+        // straight from them (no amplitude round trip, exact K at a turning point).
+        let (sn0, cn0) = ((wb.abs() / delta).sqrt(), (wo.abs() / delta).sqrt());
+        let f = sn0 * carlson_rf(cn0 * cn0, cn0 * cn0 + mc * sn0 * sn0, 1.0);
         let udot0 = -s0 * thd;
         let tau0 = if udot0 * sigma < 0.0 { -f } else { f };
         motion.tau0 = tau0;

@@ -136,7 +136,7 @@ pub(crate) fn polish_pole_distance(
             return v0;
         }
         let next = v - f / d;
-        if next.is_nan() || next <= 0.0 || (next - v0).abs() > 1e-6 * v0 {
+        if next.is_nan() || next <= 0.0 || (next - v0).abs() > 1e-3 * v0 {
             return v0;
         }
         if next == v {

@@ -53,9 +53,9 @@ pub(crate) struct ThirdKind {
 impl ThirdKind {
     /// The antiderivative of `1/(h_b − B sn²τ)` with `h_o = h_b − B`; `k` = K(m).
     pub fn new(h_b: f64, b: f64, h_o: f64, m: f64, mc: f64, k: f64) -> ThirdKind {
-        let n = b / h_b;
-        let one_minus_n = h_o / h_b;
-        if n >= 0.0 {
+        if b >= 0.0 {
+            let n = b / h_b;
+            let one_minus_n = h_o / h_b;
             let complete = complete_pi(n, one_minus_n, mc, k);
             ThirdKind {
                 n,
@@ -69,10 +69,12 @@ impl ThirdKind {
                 k,
             }
         } else {
-            let big_n = (m - n) / one_minus_n;
-            let one_minus_big_n = mc / one_minus_n;
-            let n_minus_m = -n * mc / one_minus_n;
-            let pre = 1.0 / (h_b * one_minus_n);
+            // Multiplied through by h_b, so that h_b → 0 (n → −∞) stays finite:
+            // N = (m h_b − B)/h_o, N − m = −B mc/h_o, 1 − N = mc h_b/h_o.
+            let big_n = (m * h_b - b) / h_o;
+            let one_minus_big_n = mc * h_b / h_o;
+            let n_minus_m = -b * mc / h_o;
+            let pre = 1.0 / h_o;
             ThirdKind {
                 n: big_n,
                 one_minus_n: one_minus_big_n,
