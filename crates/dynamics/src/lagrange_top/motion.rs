@@ -1,0 +1,308 @@
+//! The closed-form motion: `u = cos θ` by `sn²`, φ and ψ by Π.
+
+use super::roots::{ShiftedCubic, polish_pole_distance};
+use super::third_kind::{ThirdKind, complete_k};
+use super::{LagrangeTop, LagrangeTopInitial};
+use crate::elliptic::{JacobiElliptic, carlson_rf};
+
+/// The motion of a [`LagrangeTop`] from given initial conditions, in closed
+/// form (Goldstein §5.7; Landau & Lifshitz §35; notes §3.10–3.11).
+///
+/// ```text
+/// u(t) = u_b + σ (u₂ − u₁) sn²(ν t + τ₀ | m)
+///   β > 0: u_b = u₁, σ = +1, m = (u₂ − u₁)/(u₃ − u₁), ν = ½√(β (u₃ − u₁))
+///   β < 0: u_b = u₂, σ = −1, m = (u₂ − u₁)/(u₂ − u₃), ν = ½√(β (u₃ − u₂))
+///   β = 0: u_b = u₁, σ = +1, m = 0,                  ν = ½√(α + a²)
+/// φ(t) = φ₀ + ½(b − a) ∫dt/(1 − u) + ½(b + a) ∫dt/(1 + u)
+/// ψ(t) = ψ₀ + (ω₃ − a) t − ½(b − a) ∫dt/(1 − u) + ½(b + a) ∫dt/(1 + u)
+/// ∫dt/(1 ∓ u) = Π(n; am τ | m)/(ν (1 ∓ u_b)),  n = ±σ(u₂ − u₁)/(1 ∓ u_b)
+/// ```
+///
+/// (partial fractions of `φ̇ = (b − au)/(1 − u²)` and `ψ̇ = ω₃ − u φ̇`; the
+/// integrals of the third kind as in Byrd & Friedman 1971, with a
+/// cancellation-free form for `n < 0`). τ₀ is the incomplete `F` of the
+/// initial phase, signed by the direction of `u̇₀`.
+///
+/// **Through the vertical.** When `b = a` exactly (θ₀ = 0 with θ̇₀ ≠ 0, or
+/// φ̇₀ chosen so), `u₂ = 1` and the axis passes through the upward vertical.
+/// The motion is then followed with a *signed* θ (`√(1 − u)` ∝ cn or sn, which
+/// changes sign), so [`LagrangeTopMotion::world_from_body_at`] and
+/// [`LagrangeTopMotion::omega_body_at`] are smooth; [`LagrangeTopMotion::euler_at`]
+/// reports θ ∈ [0, π] and therefore the equivalent
+/// `(φ + π, |θ|, ψ − π)` while θ is "negative": φ jumps by π (ψ by −π) at each
+/// passage, θ̇ changes sign. Likewise at the downward vertical (`b = −a`).
+///
+/// ```
+/// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+/// let top = LagrangeTop::new(1.0, 0.5, 1.0);
+/// let init = LagrangeTopInitial { theta: 0.4, theta_dot: 0.3, psi_dot: 15.0, ..Default::default() };
+/// let motion = top.try_solve(init)?;
+/// let t = 2.7;
+/// let e = motion.euler_at(t);
+/// // Energy and both momenta are constants of the motion.
+/// let energy = |e: &kreisel_dynamics::EulerAnglesAndRates| {
+///     let w3 = e.phi_dot * e.theta.cos() + e.psi_dot;
+///     0.5 * (e.theta_dot.powi(2) + (e.theta.sin() * e.phi_dot).powi(2))
+///         + 0.25 * w3 * w3 + e.theta.cos()
+/// };
+/// assert!((energy(&e) - energy(&motion.euler_at(0.0))).abs() < 1e-13);
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct LagrangeTopMotion {
+    pub(super) top: LagrangeTop,
+    /// Initial conditions with θ₀ ∈ [0, π].
+    pub(super) init: LagrangeTopInitial,
+    pub(super) a: f64,
+    pub(super) b: f64,
+    /// `b − a` and `b + a`, each formed without cancellation.
+    pub(super) bma: f64,
+    pub(super) bpa: f64,
+    pub(super) alpha: f64,
+    pub(super) beta: f64,
+    pub(super) omega3: f64,
+    pub(super) u0: f64,
+    /// `b − a u₀ = sin²θ₀ φ̇₀`.
+    pub(super) b0: f64,
+    pub(super) w1: f64,
+    pub(super) w2: f64,
+    /// `β u₃ − β u₀`.
+    pub(super) g: f64,
+    pub(super) delta: f64,
+    pub(super) one_minus_u2: f64,
+    pub(super) one_plus_u1: f64,
+    /// `u₂ = 1` exactly (`b = a`): the axis passes through the upward vertical.
+    pub(super) through_top: bool,
+    /// `u₁ = −1` exactly (`b = −a`): the axis passes through the downward vertical.
+    pub(super) through_bottom: bool,
+    pub(super) kind: Kind,
+    /// +1 for β ≥ 0 (base u₁), −1 for β < 0 (base u₂).
+    pub(super) sigma: f64,
+    pub(super) nu: f64,
+    pub(super) k: f64,
+    pub(super) tau0: f64,
+    pub(super) jacobi: JacobiElliptic,
+    /// The `∫dt/(1 − u)` term and its value at τ₀ (`None` if `b = a`).
+    pub(super) minus: Option<(ThirdKind, f64)>,
+    /// The `∫dt/(1 + u)` term and its value at τ₀ (`None` if `b = −a`).
+    pub(super) plus: Option<(ThirdKind, f64)>,
+    /// Signs of `√(1 − u)`, `√(1 + u)` through a vertical.
+    pub(super) zeta_y: f64,
+    pub(super) zeta_x: f64,
+}
+
+/// Starts closer than this to a pole (rad) are put on the pole: `u = cos θ`
+/// cannot resolve them (the phase at the turning point near the pole would
+/// round to the turning point itself and misplace the jump of φ by π).
+pub(super) const POLE_SNAP: f64 = 1e-14;
+
+/// Which closed form applies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Kind {
+    /// θ₀ = 0 and θ̇₀ = 0: the sleeping top (a uniform spin about the vertical).
+    Vertical,
+    /// u₁ = u₂: steady precession.
+    Steady,
+    /// Nutation between u₁ < u₂.
+    Nutating,
+}
+
+pub(super) fn sign(x: f64) -> f64 {
+    if x < 0.0 { -1.0 } else { 1.0 }
+}
+
+impl LagrangeTopMotion {
+    pub(super) fn new(top: LagrangeTop, initial: LagrangeTopInitial) -> LagrangeTopMotion {
+        let pi = std::f64::consts::PI;
+        let mut init = initial;
+        let t = init.theta.rem_euclid(2.0 * pi);
+        init.theta = t;
+        if t > pi {
+            init.theta = 2.0 * pi - t;
+            init.phi += pi;
+            init.psi -= pi;
+            init.theta_dot = -init.theta_dot;
+        }
+        // Within POLE_SNAP of a pole the start is put exactly on it (see
+        // `LagrangeTop::try_solve`); π itself is not an f64, so the bottom is
+        // flagged and given sin θ₀ = 0, cos θ₀ = −1 exactly.
+        if init.theta < POLE_SNAP {
+            init.theta = 0.0;
+        }
+        let at_bottom = pi - init.theta < POLE_SNAP;
+        if at_bottom {
+            init.theta = pi;
+        }
+        let (th, phd, thd) = (init.theta, init.phi_dot, init.theta_dot);
+        let (s0, u0) = if at_bottom { (0.0, -1.0) } else { th.sin_cos() };
+        let s2 = s0 * s0;
+        let (one_minus_u0, one_plus_u0) = if at_bottom {
+            (2.0, 0.0)
+        } else {
+            (
+                2.0 * (0.5 * th).sin().powi(2),
+                2.0 * (0.5 * th).cos().powi(2),
+            )
+        };
+        let omega3 = phd * u0 + init.psi_dot;
+        let a = top.i3 * omega3 / top.i1;
+        let beta = 2.0 * top.mgl / top.i1;
+        let b0 = s2 * phd;
+        let a0 = thd * thd + b0 * phd;
+        let b = b0 + a * u0;
+        let alpha = a0 + beta * u0;
+        let bma = one_minus_u0 * (one_plus_u0 * phd - a);
+        let bpa = one_plus_u0 * (one_minus_u0 * phd + a);
+        let cubic = ShiftedCubic {
+            beta,
+            c2: 2.0 * u0 * beta - a0 - a * a,
+            c1: -beta * s2 - 2.0 * u0 * a0 + 2.0 * a * b0,
+            c0: s2 * thd * thd,
+        };
+        let mut tp = cubic.turning_points(one_plus_u0, one_minus_u0);
+        // With b = ±a the pole u = ±1 is a root of f: a turning point (the
+        // axis passes through the vertical) if f > 0 next to it, i.e.
+        // f(u)/(1 ∓ u) → 2(α ∓ β) > 0 there; otherwise the third root.
+        // α ∓ β = A₀ ∓ β (1 ∓ u₀), without cancellation.
+        let alpha_minus_beta = a0 - beta * one_minus_u0;
+        let alpha_plus_beta = a0 + beta * one_plus_u0;
+        let through_top = bma == 0.0 && alpha_minus_beta > 0.0;
+        let through_bottom = bpa == 0.0 && alpha_plus_beta > 0.0;
+        if through_top {
+            tp.w2 = one_minus_u0;
+        }
+        if through_bottom {
+            tp.w1 = -one_plus_u0;
+        }
+        // 1 − u₂ and 1 + u₁ from f(±1) = −(b ∓ a)² = the factorised cubic
+        // at the pole (no difference of nearly equal numbers), polished.
+        let one_minus_u2 = if through_top {
+            0.0
+        } else {
+            let by_product = bma * bma / ((one_minus_u0 - tp.w1) * (tp.g - beta * one_minus_u0));
+            let v0 = if bma != 0.0 && by_product.is_finite() && by_product > 0.0 {
+                by_product
+            } else {
+                (one_minus_u0 - tp.w2).max(0.0)
+            };
+            polish_pole_distance(v0, alpha_minus_beta, beta, bma, a)
+        };
+        let one_plus_u1 = if through_bottom {
+            0.0
+        } else {
+            let by_product = bpa * bpa / ((one_plus_u0 + tp.w2) * (tp.g + beta * one_plus_u0));
+            let v0 = if bpa != 0.0 && by_product.is_finite() && by_product > 0.0 {
+                by_product
+            } else {
+                (one_plus_u0 + tp.w1).max(0.0)
+            };
+            polish_pole_distance(v0, alpha_plus_beta, -beta, bpa, -a)
+        };
+        let delta = tp.w2 - tp.w1;
+        let sigma = if beta >= 0.0 { 1.0 } else { -1.0 };
+        let (wb, wo) = if sigma > 0.0 {
+            (tp.w1, tp.w2)
+        } else {
+            (tp.w2, tp.w1)
+        };
+        let p = tp.g - beta * wb;
+        let kind = if s0 == 0.0 && thd == 0.0 && u0 > 0.0 {
+            Kind::Vertical
+        } else if (s0 == 0.0 && thd == 0.0) || delta == 0.0 || p.is_nan() || p <= 0.0 {
+            // at rest in θ on the downward vertical (an equilibrium, even
+            // where it is unstable), steady precession, or no motion at all
+            Kind::Steady
+        } else {
+            Kind::Nutating
+        };
+        let mc = ((tp.g - beta * wo) / p).clamp(0.0, 1.0);
+        let m = (beta.abs() * delta / p).clamp(0.0, 1.0);
+        let nu = 0.5 * p.max(0.0).sqrt();
+        let k = complete_k(mc);
+        let jacobi = JacobiElliptic::new(mc);
+        let mut motion = LagrangeTopMotion {
+            top,
+            init,
+            a,
+            b,
+            bma,
+            bpa,
+            alpha,
+            beta,
+            omega3,
+            u0,
+            b0,
+            w1: tp.w1,
+            w2: tp.w2,
+            g: tp.g,
+            delta,
+            one_minus_u2,
+            one_plus_u1,
+            through_top,
+            through_bottom,
+            kind,
+            sigma,
+            nu,
+            k,
+            tau0: 0.0,
+            jacobi,
+            minus: None,
+            plus: None,
+            zeta_y: 1.0,
+            zeta_x: 1.0,
+        };
+        if kind != Kind::Nutating {
+            return motion;
+        }
+        // sn²τ₀ = |w_b|/Δ, cn²τ₀ = |w_o|/Δ: F(am τ₀) = sn R_F(cn², cn² + mc sn², 1)
+        // straight from them (no amplitude round trip, exact K at a turning point).
+        let (sn0, cn0) = ((wb.abs() / delta).sqrt(), (wo.abs() / delta).sqrt());
+        let f = sn0 * carlson_rf(cn0 * cn0, cn0 * cn0 + mc * sn0 * sn0, 1.0);
+        let udot0 = -s0 * thd;
+        let tau0 = if udot0 * sigma < 0.0 { -f } else { f };
+        motion.tau0 = tau0;
+        let (sn, cn, dn) = motion.jacobi.sn_cn_dn(tau0);
+        // 1 − u at u₁, u₂ and 1 + u at u₁, u₂.
+        let (omu1, omu2) = (one_minus_u2 + delta, one_minus_u2);
+        let (opu1, opu2) = (one_plus_u1, one_plus_u1 + delta);
+        if bma != 0.0 && !through_top {
+            let (hb, ho) = if sigma > 0.0 {
+                (omu1, omu2)
+            } else {
+                (omu2, omu1)
+            };
+            let tk = ThirdKind::new(hb, sigma * delta, ho, m, mc, k);
+            motion.minus = Some((tk, tk.eval(tau0, sn, cn, dn)));
+        } else {
+            // √(1 − u) = ζ √Δ G, G = cn (β ≥ 0) or sn (β < 0)
+            let (gv, gd) = if sigma > 0.0 {
+                (cn, -sn * dn)
+            } else {
+                (sn, cn * dn)
+            };
+            motion.zeta_y = if s0 != 0.0 { sign(gv) } else { sign(thd * gd) };
+        }
+        if bpa != 0.0 && !through_bottom {
+            let (hb, ho) = if sigma > 0.0 {
+                (opu1, opu2)
+            } else {
+                (opu2, opu1)
+            };
+            let tk = ThirdKind::new(hb, -sigma * delta, ho, m, mc, k);
+            motion.plus = Some((tk, tk.eval(tau0, sn, cn, dn)));
+        } else {
+            // √(1 + u) = ζ √Δ H, H = sn (β ≥ 0) or cn (β < 0)
+            let (hv, hd) = if sigma > 0.0 {
+                (sn, cn * dn)
+            } else {
+                (cn, -sn * dn)
+            };
+            motion.zeta_x = if one_plus_u0 != 0.0 {
+                sign(hv)
+            } else {
+                -sign(thd * hd)
+            };
+        }
+        motion
+    }
+}
