@@ -124,6 +124,9 @@ impl HeavyTop {
     /// J = I_cm + M (|c|² 1 − c cᵀ),   c = com − pivot   (parallel-axis theorem, notes §3.4)
     /// ```
     ///
+    /// Components of `c` in principal axes within `4ε|c|` of zero (the
+    /// rounding of the principal-axes rotation) are set to zero.
+    ///
     /// # Errors
     /// As [`HeavyTop::try_from_principal`], and
     /// [`DynamicsError::InertiaTensor`] for mass properties that do not
@@ -159,6 +162,16 @@ impl HeavyTop {
         let body = RigidBody::from_mass_properties(&about_pivot)?;
         let com_body = mass_properties.center_of_mass - pivot_body;
         let com_principal = body.body_from_principal().conjugate() * com_body;
+        // The principal frame is known to rounding only: components of c
+        // within a few ulps of zero are rounding of that rotation (e.g.
+        // −2.2e-16 for a centre of mass exactly on the symmetry axis), and
+        // zeroing them lets a Lagrange top be recognised as one.
+        let ulps = 4.0 * f64::EPSILON * com_principal.length();
+        let com_principal = DVec3::select(
+            com_principal.abs().cmple(DVec3::splat(ulps)),
+            DVec3::ZERO,
+            com_principal,
+        );
         Self::from_parts(body, com_principal, mass_properties.mass, gravity_world)
     }
 
