@@ -11,6 +11,9 @@ mod convert;
 mod error;
 mod inertia;
 mod numbers;
+// Used by `kreisel top` (next commit).
+#[allow(dead_code)]
+mod plot;
 mod representation;
 mod simulate;
 
