@@ -13,6 +13,11 @@
 //!   algorithm and its preprocessed versions of orders 4–10;
 //! - invariants, the principal-axis stability of notes §3.7 and the exact
 //!   flip period ([`axis_stability`], [`elliptic_motion`]);
+//! - the heavy symmetric (Lagrange) top in closed form, [`LagrangeTop`] →
+//!   [`LagrangeTopMotion`]: nutation by Jacobi's sn², precession and spin by
+//!   elliptic integrals of the third kind, turning points, nutation period,
+//!   the kinds of motion, sleeping-top stability and steady precession
+//!   (notes §3.10–3.11);
 //! - [`elliptic`]: the elliptic integrals and Jacobi functions this needs.
 //!
 //! ## Conventions
@@ -41,6 +46,7 @@ pub mod elliptic;
 mod error;
 mod exact;
 mod integrator;
+mod lagrange_top;
 mod moser_veselov;
 mod moser_veselov_preprocessed;
 mod rigid_body;
@@ -54,6 +60,10 @@ pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI
 pub use error::DynamicsError;
 pub use exact::{ExactFlow, ExactPropagator, ExactSolution};
 pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};
+pub use lagrange_top::{
+    EulerAnglesAndRates, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, SteadyPrecession,
+    TopMotionKind,
+};
 pub use moser_veselov::MoserVeselov;
 pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;
 pub use rigid_body::RigidBody;

@@ -1,0 +1,438 @@
+//! The constants, turning points, period and kind of a [`LagrangeTopMotion`].
+
+use super::motion::{Kind, LagrangeTopMotion};
+use super::{LagrangeTop, TopMotionKind};
+
+/// Relative tolerance on `b − a uᵢ` for [`TopMotionKind::Cusps`] when the
+/// cusp is not known exactly from the initial conditions.
+const CUSP_TOLERANCE: f64 = 1e-12;
+
+/// θ = 2 atan2(√(1 − u), √(1 + u)) from the two accurate complements.
+fn theta_from(one_minus_u: f64, one_plus_u: f64) -> f64 {
+    2.0 * one_minus_u
+        .max(0.0)
+        .sqrt()
+        .atan2(one_plus_u.max(0.0).sqrt())
+}
+
+impl LagrangeTopMotion {
+    /// The top.
+    ///
+    /// ```text
+    /// (I₁, I₃, Mgl)
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let top = LagrangeTop::new(1.0, 0.5, 1.0);
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// assert_eq!(top.try_solve(init)?.top(), top);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn top(&self) -> LagrangeTop {
+        self.top
+    }
+
+    /// `a = p_ψ/I₁ = I₃ω₃/I₁`, rad/s.
+    ///
+    /// ```text
+    /// I₁ a = I₃ (φ̇ cos θ + ψ̇)
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// assert_eq!(LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?.a(), 10.0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn a(&self) -> f64 {
+        self.a
+    }
+
+    /// `b = p_φ/I₁`, rad/s.
+    ///
+    /// ```text
+    /// I₁ b = I₁ sin²θ φ̇ + I₃ ω₃ cos θ
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// assert!((m.b() - 10.0 * 0.5f64.cos()).abs() < 1e-14);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn b(&self) -> f64 {
+        self.b
+    }
+
+    /// `α = 2E'/I₁`, with `E' = E − ½I₃ω₃²`, s⁻².
+    ///
+    /// ```text
+    /// α = θ̇² + sin²θ φ̇² + β cos θ
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// assert!((m.alpha() - 2.0 * 0.5f64.cos()).abs() < 1e-15);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+
+    /// `β = 2Mgl/I₁`, s⁻².
+    ///
+    /// ```text
+    /// β = 2 Mgl / I₁
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// assert_eq!(LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?.beta(), 2.0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn beta(&self) -> f64 {
+        self.beta
+    }
+
+    /// The spin `ω₃` (constant), rad/s.
+    ///
+    /// ```text
+    /// ω₃ = φ̇ cos θ + ψ̇
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// assert_eq!(LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?.omega3(), 20.0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn omega3(&self) -> f64 {
+        self.omega3
+    }
+
+    /// The cubic whose roots are the turning points (notes §3.10).
+    ///
+    /// ```text
+    /// f(u) = (1 − u²)(α − βu) − (b − au)² = u̇²   (f(±1) = −(b ∓ a)²)
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, theta_dot: 0.3, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// let udot = 0.5f64.sin() * 0.3;
+    /// assert!((m.f(0.5f64.cos()) - udot * udot).abs() < 1e-13);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn f(&self, u: f64) -> f64 {
+        let r = self.b - self.a * u;
+        (1.0 - u * u) * (self.alpha - self.beta * u) - r * r
+    }
+
+    /// The real roots of [`f`](Self::f), ascending, with multiplicity:
+    /// three for `β ≠ 0` (`u₁ ≤ u₂ ≤ 1 ≤ u₃` for β > 0, `u₃ ≤ −1 ≤ u₁ ≤ u₂`
+    /// for β < 0), the two of the quadratic for `β = 0`.
+    ///
+    /// ```text
+    /// f(u) = β (u − u₁)(u − u₂)(u − u₃)
+    /// ```
+    ///
+    /// Found relative to `u₀ = cos θ₀`: divided out exactly when θ̇₀ = 0,
+    /// else bracketed in `[−1, u₀]`, `[u₀, 1]` and polished by Newton; the
+    /// third by Vieta (no generic cubic formula).
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, theta_dot: 0.3, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// let r = m.roots();
+    /// assert_eq!(r.len(), 3);
+    /// assert!(r[0] < 0.5f64.cos() && 0.5f64.cos() < r[1] && r[1] < 1.0 && 1.0 < r[2]);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn roots(&self) -> Vec<f64> {
+        let mut r = vec![self.u0 + self.w1, self.u0 + self.w2];
+        if self.beta != 0.0 {
+            r.push(self.u0 + self.g / self.beta);
+        }
+        r.sort_by(f64::total_cmp);
+        r
+    }
+
+    /// The smallest θ reached (at the upper turning point `u₂`), rad.
+    ///
+    /// ```text
+    /// θ_min = arccos u₂ = 2 atan2(√(1 − u₂), √(1 + u₂))
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, theta_dot: 0.3, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// assert!(m.theta_min() < 0.5 && 0.5 < m.theta_max());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn theta_min(&self) -> f64 {
+        match self.kind {
+            Kind::Vertical | Kind::Steady => self.init.theta,
+            Kind::Nutating => theta_from(self.one_minus_u2, self.one_plus_u1 + self.delta),
+        }
+    }
+
+    /// The largest θ reached (at the lower turning point `u₁`), rad.
+    ///
+    /// ```text
+    /// θ_max = arccos u₁ = 2 atan2(√(1 − u₁), √(1 + u₁))
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// assert!(m.theta_max() > 0.5 && m.theta_max() < 0.6);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn theta_max(&self) -> f64 {
+        match self.kind {
+            Kind::Vertical | Kind::Steady => self.init.theta,
+            Kind::Nutating => theta_from(self.one_minus_u2 + self.delta, self.one_plus_u1),
+        }
+    }
+
+    /// The period of `u(t) = cos θ(t)`, s; `None` for the sleeping top and
+    /// when the period is infinite (`u₂ = u₃`: the asymptotic motion at the
+    /// stability threshold).
+    ///
+    /// ```text
+    /// T = 2K(m)/ν
+    /// ```
+    ///
+    /// For steady precession (u₁ = u₂) this is the limit, the period of small
+    /// nutations about it (`π/ν`). For a top passing through the vertical it
+    /// is the period of `u` (and of the reported θ ≥ 0); the signed θ has
+    /// twice that period.
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// let t = m.nutation_period().unwrap();
+    /// assert!((m.euler_at(t).theta - 0.5).abs() < 1e-12);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn nutation_period(&self) -> Option<f64> {
+        if self.kind == Kind::Vertical || !self.k.is_finite() || self.nu <= 0.0 {
+            return None;
+        }
+        Some(2.0 * self.k / self.nu)
+    }
+
+    /// The mean precession rate, rad/s: the change of φ over one nutation
+    /// period divided by the period.
+    ///
+    /// ```text
+    /// ⟨φ̇⟩ = [(b − a) Π(n₋ | m)/(1 − u_b) + (b + a) Π(n₊ | m)/(1 + u_b)] / (2K(m))
+    /// ```
+    ///
+    /// The initial φ̇ for steady precession; `None` where
+    /// [`nutation_period`](Self::nutation_period) is `None`. Through a
+    /// vertical, φ is taken without its jumps by π (the signed-θ form).
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// let t = m.nutation_period().unwrap();
+    /// let dphi = m.euler_at(t).phi - m.euler_at(0.0).phi;
+    /// assert!((m.mean_precession_rate().unwrap() - dphi / t).abs() < 1e-12);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn mean_precession_rate(&self) -> Option<f64> {
+        self.nutation_period()?;
+        if self.kind == Kind::Steady {
+            return Some(self.init.phi_dot);
+        }
+        let mut dphi = 0.0;
+        if let Some((tk, _)) = self.minus_term() {
+            dphi += 0.5 * self.bma * tk.per_period();
+        }
+        if let Some((tk, _)) = self.plus_term() {
+            dphi += 0.5 * self.bpa * tk.per_period();
+        }
+        Some(dphi / (2.0 * self.k))
+    }
+
+    /// The shape of the axis' path (notes §3.11), `None` for the sleeping top
+    /// and steady precession (θ_min = θ_max).
+    ///
+    /// ```text
+    /// φ̇(uᵢ) = (b − a uᵢ)/(1 − uᵢ²):  same sign → NoLoops, opposite → Loops, 0 → Cusps
+    /// ```
+    ///
+    /// Cusps exactly when released with θ̇₀ = φ̇₀ = 0 (then `u₀` is a turning
+    /// point with `b − a u₀ = 0`); otherwise when `|b − a uᵢ|` is below
+    /// 10⁻¹² of `|b| + |a uᵢ|`. At a turning point exactly at the vertical
+    /// (`b = ±a`) the limit `φ̇ = (b ± a)/2 · 1/(1 ± u)` decides.
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial, TopMotionKind};
+    /// let top = LagrangeTop::new(1.0, 0.5, 1.0);
+    /// let init = LagrangeTopInitial { theta: 0.5, phi_dot: -0.5, psi_dot: 20.0, ..Default::default() };
+    /// assert_eq!(top.try_solve(init)?.motion(), Some(TopMotionKind::Loops));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn motion(&self) -> Option<TopMotionKind> {
+        if self.kind != Kind::Nutating {
+            return None;
+        }
+        if self.init.theta_dot == 0.0 && self.init.phi_dot == 0.0 {
+            return Some(TopMotionKind::Cusps);
+        }
+        let rate = |w: f64, at_top: bool| -> f64 {
+            if at_top && self.bma == 0.0 {
+                return self.bpa;
+            }
+            if !at_top && self.bpa == 0.0 {
+                return self.bma;
+            }
+            let d = self.b0 - self.a * w;
+            let scale = self.b0.abs() + (self.a * w).abs() + (self.a * self.u0).abs();
+            if d.abs() <= CUSP_TOLERANCE * scale {
+                0.0
+            } else {
+                d
+            }
+        };
+        let (r1, r2) = (rate(self.w1, false), rate(self.w2, true));
+        Some(if r1 == 0.0 || r2 == 0.0 {
+            TopMotionKind::Cusps
+        } else if (r1 > 0.0) == (r2 > 0.0) {
+            TopMotionKind::NoLoops
+        } else {
+            TopMotionKind::Loops
+        })
+    }
+
+    /// Whether this motion's spin would keep the upright top stable
+    /// ([`LagrangeTop::sleeping_stable`] with [`omega3`](Self::omega3)).
+    ///
+    /// ```text
+    /// ω₃² > 4 I₁ Mgl / I₃²
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { psi_dot: 5.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// assert!(m.is_sleeping() && m.sleeping_stable());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn sleeping_stable(&self) -> bool {
+        self.top.sleeping_stable(self.omega3)
+    }
+
+    /// Whether this is the sleeping top: started upright at rest in θ
+    /// (θ₀ = 0 and θ̇₀ = 0, exactly), spinning about the vertical forever.
+    ///
+    /// ```text
+    /// θ₀ = 0,  θ̇₀ = 0  ⇒  θ(t) = 0,  φ + ψ = φ₀ + ψ₀ + ω₃ t
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 1e-9, psi_dot: 5.0, ..Default::default() };
+    /// assert!(!LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?.is_sleeping());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn is_sleeping(&self) -> bool {
+        self.kind == Kind::Vertical
+    }
+
+    /// The effective potential of the θ motion (notes §3.10), J.
+    ///
+    /// ```text
+    /// V_eff(θ) = ½ I₁ (b − a cos θ)² / sin²θ + Mgl cos θ,   E' = ½ I₁ θ̇² + V_eff(θ)
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
+    /// let init = LagrangeTopInitial { theta: 0.5, psi_dot: 20.0, ..Default::default() };
+    /// let m = LagrangeTop::new(1.0, 0.5, 1.0).try_solve(init)?;
+    /// // Released at rest in θ: E' = V_eff(θ₀) = ½ I₁ α.
+    /// assert!((m.effective_potential(0.5) - 0.5 * m.alpha()).abs() < 1e-15);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn effective_potential(&self, theta: f64) -> f64 {
+        let (s, c) = theta.sin_cos();
+        let r = self.b - self.a * c;
+        0.5 * self.top.i1 * r * r / (s * s) + self.top.mgl * c
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{LagrangeTop, LagrangeTopInitial};
+
+    fn cases() -> Vec<(LagrangeTop, LagrangeTopInitial)> {
+        let init = |theta, phi_dot, theta_dot, psi_dot| LagrangeTopInitial {
+            phi: 0.3,
+            theta,
+            psi: -1.1,
+            phi_dot,
+            theta_dot,
+            psi_dot,
+        };
+        vec![
+            (LagrangeTop::new(1.0, 0.5, 1.0), init(0.5, 0.3, 0.2, 20.0)),
+            (LagrangeTop::new(1.0, 0.5, 1.0), init(2.5, -0.3, -0.7, 3.0)),
+            (LagrangeTop::new(2.0, 0.3, 0.0), init(1.0, 0.4, 0.1, -2.0)),
+            (LagrangeTop::new(2.0, 0.3, -1.5), init(2.0, 0.4, 0.1, 5.0)),
+            (LagrangeTop::new(2.0, 0.3, 1.5), init(1.0, 0.0, 0.0, 5.0)),
+        ]
+    }
+
+    /// f(±1) = −(b ∓ a)² (ERRATA to notes §3.11) and f(u₀) = u̇₀².
+    #[test]
+    fn f_at_the_poles_and_at_the_start() {
+        for (top, init) in cases() {
+            let m = top.try_solve(init).unwrap();
+            let scale = m.a().powi(2) + m.b().powi(2) + m.alpha().abs() + m.beta().abs();
+            assert!((m.f(1.0) + (m.b() - m.a()).powi(2)).abs() <= 1e-14 * scale);
+            assert!((m.f(-1.0) + (m.b() + m.a()).powi(2)).abs() <= 1e-14 * scale);
+            let udot = init.theta.sin() * init.theta_dot;
+            assert!((m.f(init.theta.cos()) - udot * udot).abs() <= 1e-14 * scale);
+            for r in m.roots() {
+                assert!(
+                    m.f(r).abs() <= 1e-13 * scale * r.abs().max(1.0).powi(3),
+                    "{r}"
+                );
+            }
+        }
+    }
+
+    /// E' = ½I₁θ̇² + V_eff(θ) = ½I₁α along the motion, and t = 0 reproduces
+    /// the initial conditions.
+    #[test]
+    fn energy_in_the_effective_potential() {
+        for (top, init) in cases() {
+            let m = top.try_solve(init).unwrap();
+            let e0 = m.euler_at(0.0);
+            assert!((e0.theta - init.theta).abs() < 1e-15);
+            assert!((e0.phi - init.phi).abs() < 1e-15 && (e0.psi - init.psi).abs() < 1e-15);
+            assert!((e0.theta_dot - init.theta_dot).abs() < 1e-13);
+            assert!((e0.phi_dot - init.phi_dot).abs() < 1e-13);
+            assert!((e0.psi_dot - init.psi_dot).abs() < 1e-13);
+            let e_prime = 0.5 * top.i1() * m.alpha();
+            for k in 0..40 {
+                let e = m.euler_at(0.31 * k as f64);
+                let v = 0.5 * top.i1() * e.theta_dot * e.theta_dot + m.effective_potential(e.theta);
+                assert!((v - e_prime).abs() <= 1e-12 * e_prime.abs().max(1.0), "{k}");
+            }
+        }
+    }
+}

@@ -1,0 +1,392 @@
+//! The closed-form Lagrange top against independent 60-digit references:
+//! `tests/data/lagrange_top/*.csv`, made by `python3 tests/data/gen/lagrange_top.py`
+//! (a Taylor-series integration of the rigid body with the gravity torque in
+//! quaternion form, never Euler angles; roots by mpmath.polyroots, the period
+//! by quadrature). Run with `-- --nocapture` to see the measured errors.
+
+use std::path::PathBuf;
+
+use glam::DQuat;
+use kreisel_dynamics::{
+    DynamicsError, EulerAnglesAndRates, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion,
+    TopMotionKind,
+};
+use kreisel_kinematics::rotation_angle_between;
+
+struct Reference {
+    top: LagrangeTop,
+    initial: LagrangeTopInitial,
+    roots: Vec<f64>,
+    period: f64,
+    precession: f64,
+    kind: TopMotionKind,
+    /// (t, φ, θ, ψ, q)
+    rows: Vec<(f64, f64, f64, f64, DQuat)>,
+}
+
+fn tuple(line: &str, prefix: &str) -> Option<Vec<f64>> {
+    let rest = line.strip_prefix(prefix)?;
+    Some(
+        rest.trim_start_matches('(')
+            .trim_end_matches(')')
+            .split(',')
+            .map(|x| x.trim().parse().unwrap())
+            .collect(),
+    )
+}
+
+fn load(name: &str) -> Reference {
+    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let root = manifest
+        .ancestors()
+        .find(|dir| dir.join("tests/data/lagrange_top").is_dir())
+        .expect("tests/data/lagrange_top in an ancestor");
+    let path = root.join(format!("tests/data/lagrange_top/{name}.csv"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let (mut top, mut initial, mut roots) = (None, None, None);
+    let (mut period, mut precession, mut kind) = (None, None, None);
+    let mut rows = Vec::new();
+    for line in text.lines() {
+        if let Some(v) = tuple(line, "# top = ") {
+            top = Some(LagrangeTop::new(v[0], v[1], v[2]));
+        } else if let Some(v) = tuple(line, "# initial = ") {
+            initial = Some(LagrangeTopInitial {
+                phi: v[0],
+                theta: v[1],
+                psi: v[2],
+                phi_dot: v[3],
+                theta_dot: v[4],
+                psi_dot: v[5],
+            });
+        } else if let Some(v) = tuple(line, "# roots = ") {
+            roots = Some(v);
+        } else if let Some(v) = tuple(line, "# period = ") {
+            period = Some(v[0]);
+        } else if let Some(v) = tuple(line, "# precession = ") {
+            precession = Some(v[0]);
+        } else if let Some(k) = line.strip_prefix("# kind = ") {
+            kind = Some(match k.trim() {
+                "no_loops" => TopMotionKind::NoLoops,
+                "loops" => TopMotionKind::Loops,
+                "cusps" => TopMotionKind::Cusps,
+                other => panic!("kind {other}"),
+            });
+        } else if !line.starts_with('#') && !line.starts_with('t') && !line.is_empty() {
+            let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+            rows.push((
+                v[0],
+                v[1],
+                v[2],
+                v[3],
+                DQuat::from_xyzw(v[5], v[6], v[7], v[4]),
+            ));
+        }
+    }
+    Reference {
+        top: top.unwrap(),
+        initial: initial.unwrap(),
+        roots: roots.unwrap(),
+        period: period.unwrap(),
+        precession: precession.unwrap(),
+        kind: kind.unwrap(),
+        rows,
+    }
+}
+
+const SCENARIOS: [&str; 8] = [
+    "no_loops",
+    "loops",
+    "cusps",
+    "fast_near_sleeping",
+    "slow",
+    "near_bottom",
+    "free_symmetric",
+    "hanging",
+];
+
+fn wrap(x: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    x - tau * (x / tau).round()
+}
+
+/// Attitude and θ against the references at every sample (≤ 1e-10 rad);
+/// φ and ψ modulo 2π where the axis is not close to the vertical.
+#[test]
+fn attitude_matches_the_references() {
+    for name in SCENARIOS {
+        let r = load(name);
+        let motion = r.top.try_solve(r.initial).unwrap();
+        let (mut dq, mut dth, mut dang) = (0.0f64, 0.0f64, 0.0f64);
+        for &(t, phi, theta, psi, q) in &r.rows {
+            let e = motion.euler_at(t);
+            dq = dq.max(rotation_angle_between(motion.world_from_body_at(t), q));
+            dth = dth.max((e.theta - theta).abs());
+            if theta.sin() > 1e-2 {
+                dang = dang
+                    .max(wrap(e.phi - phi).abs() * theta.sin())
+                    .max(wrap(e.psi - psi).abs() * theta.sin());
+            }
+        }
+        println!(
+            "{name}: attitude {dq:.1e} rad, theta {dth:.1e} rad, phi/psi (× sin θ) {dang:.1e}"
+        );
+        assert!(dq <= 1e-10, "{name}: attitude {dq:e}");
+        assert!(dth <= 1e-10, "{name}: theta {dth:e}");
+        assert!(dang <= 1e-10, "{name}: phi/psi {dang:e}");
+    }
+}
+
+/// Roots (mpmath.polyroots) to 1e-12 relative, the period (quadrature) to
+/// 1e-10 relative, the mean precession rate, and the kind of motion.
+#[test]
+fn roots_period_precession_and_kind() {
+    for name in SCENARIOS {
+        let r = load(name);
+        let motion = r.top.try_solve(r.initial).unwrap();
+        let roots = motion.roots();
+        assert_eq!(roots.len(), r.roots.len(), "{name}");
+        let droot = roots
+            .iter()
+            .zip(&r.roots)
+            .map(|(a, b)| (a - b).abs() / b.abs().max(1.0))
+            .fold(0.0, f64::max);
+        let (u1, u2) = if motion.beta() < 0.0 {
+            (r.roots[1], r.roots[2])
+        } else {
+            (r.roots[0], r.roots[1])
+        };
+        let (m1, m2) = if motion.beta() < 0.0 {
+            (roots[1], roots[2])
+        } else {
+            (roots[0], roots[1])
+        };
+        let dgap = ((m2 - m1) - (u2 - u1)).abs() / (u2 - u1);
+        let period = motion.nutation_period().unwrap();
+        let dperiod = (period - r.period).abs() / r.period;
+        let prec = motion.mean_precession_rate().unwrap();
+        let dprec = (prec - r.precession).abs() / r.precession.abs();
+        println!(
+            "{name}: roots {droot:.1e} rel, u2 − u1 {dgap:.1e} rel, period {dperiod:.1e} rel, \
+             precession {dprec:.1e} rel"
+        );
+        assert!(droot <= 1e-12, "{name}: roots {roots:?} vs {:?}", r.roots);
+        assert!(dgap <= 1e-12, "{name}: u2 − u1 {dgap:e}");
+        assert!(dperiod <= 1e-10, "{name}: period {period} vs {}", r.period);
+        assert!(
+            dprec <= 1e-10,
+            "{name}: precession {prec} vs {}",
+            r.precession
+        );
+        assert_eq!(motion.motion(), Some(r.kind), "{name}");
+        assert!((motion.theta_max() - u1.acos()).abs() < 1e-10, "{name}");
+        assert!((motion.theta_min() - u2.acos()).abs() < 1e-10, "{name}");
+    }
+}
+
+fn constants(top: &LagrangeTop, e: &EulerAnglesAndRates) -> [f64; 3] {
+    let (s, c) = e.theta.sin_cos();
+    let w3 = e.phi_dot * c + e.psi_dot;
+    let energy = 0.5 * top.i1() * (e.theta_dot * e.theta_dot + s * s * e.phi_dot * e.phi_dot)
+        + 0.5 * top.i3() * w3 * w3
+        + top.mgl() * c;
+    let p_phi = top.i1() * s * s * e.phi_dot + top.i3() * w3 * c;
+    let p_psi = top.i3() * w3;
+    [energy, p_phi, p_psi]
+}
+
+/// E, p_φ, p_ψ recomputed from `euler_at` at many times agree with the
+/// initial ones; `omega_body_at` agrees with the rates and ω₃ is constant.
+#[test]
+fn constants_of_the_motion() {
+    for name in SCENARIOS {
+        let r = load(name);
+        let motion = r.top.try_solve(r.initial).unwrap();
+        let i = r.initial;
+        let initial = EulerAnglesAndRates {
+            phi: i.phi,
+            theta: i.theta,
+            psi: i.psi,
+            phi_dot: i.phi_dot,
+            theta_dot: i.theta_dot,
+            psi_dot: i.psi_dot,
+        };
+        let c0 = constants(&r.top, &initial);
+        let scale = c0.iter().map(|c| c.abs()).fold(1.0, f64::max);
+        let mut worst = 0.0f64;
+        for k in 0..=400 {
+            let t = 0.037 * k as f64;
+            let c = constants(&r.top, &motion.euler_at(t));
+            for (x, y) in c.iter().zip(&c0) {
+                worst = worst.max((x - y).abs() / scale);
+            }
+            let w = motion.omega_body_at(t);
+            assert!((w.z - motion.omega3()).abs() <= 1e-12 * scale, "{name} {t}");
+        }
+        println!("{name}: constants of the motion {worst:.1e} relative");
+        assert!(worst <= 1e-11, "{name}: {worst:e}");
+    }
+}
+
+/// The effective potential: E' = ½I₁θ̇² + V_eff(θ) = ½I₁α all along.
+#[test]
+fn effective_potential_energy_relation() {
+    let r = load("loops");
+    let motion = r.top.try_solve(r.initial).unwrap();
+    for k in 0..50 {
+        let e = motion.euler_at(0.1 * k as f64);
+        let lhs =
+            0.5 * r.top.i1() * e.theta_dot * e.theta_dot + motion.effective_potential(e.theta);
+        assert!(
+            (lhs - 0.5 * r.top.i1() * motion.alpha()).abs() < 1e-12,
+            "{k}"
+        );
+    }
+}
+
+/// Sleeping top: stable above ω₃² = 4I₁Mgl/I₃², unstable below; the stable
+/// one perturbed stays close to the vertical, the unstable one falls.
+#[test]
+fn sleeping_top_on_both_sides_of_the_threshold() {
+    let top = LagrangeTop::new(1.25, 0.5, 1.0);
+    let threshold = (4.0 * 1.25 * 1.0f64).sqrt() / 0.5; // √20
+    for (w3, stable) in [(threshold * 1.01, true), (threshold * 0.99, false)] {
+        assert_eq!(top.sleeping_stable(w3), stable);
+        let sleeping = top
+            .try_solve(LagrangeTopInitial {
+                psi_dot: w3,
+                ..Default::default()
+            })
+            .unwrap();
+        assert!(sleeping.is_sleeping() && sleeping.sleeping_stable() == stable);
+        assert_eq!(sleeping.nutation_period(), None);
+        assert_eq!(sleeping.motion(), None);
+        assert_eq!(sleeping.euler_at(10.0).theta, 0.0);
+        let q = sleeping.world_from_body_at(2.0);
+        assert!(rotation_angle_between(q, DQuat::from_rotation_z(2.0 * w3)) < 1e-14);
+        // Nudged off the vertical.
+        let nudged = top
+            .try_solve(LagrangeTopInitial {
+                theta: 1e-3,
+                psi_dot: w3,
+                ..Default::default()
+            })
+            .unwrap();
+        assert!(!nudged.is_sleeping());
+        if stable {
+            assert!(nudged.theta_max() < 0.05, "{}", nudged.theta_max());
+        } else {
+            assert!(nudged.theta_max() > 0.1, "{}", nudged.theta_max());
+        }
+    }
+}
+
+/// Started at the slow or fast steady-precession rate with θ̇₀ = 0, the top
+/// stays at θ₀.
+#[test]
+fn steady_precession_stays_at_theta() {
+    let top = LagrangeTop::new(1.25, 0.5, 1.0);
+    for (w3, theta) in [(20.0, 0.7), (12.0, 1.9), (-15.0, 0.3)] {
+        let p = top.steady_precession_rates(w3, theta).unwrap();
+        for rate in [p.slow, p.fast] {
+            let init = LagrangeTopInitial {
+                theta,
+                phi_dot: rate,
+                psi_dot: w3 - rate * theta.cos(),
+                ..Default::default()
+            };
+            let motion = top.try_solve(init).unwrap();
+            let spread = motion.theta_max() - motion.theta_min();
+            assert!(spread <= 1e-9, "{w3} {theta} {rate}: {spread:e}");
+            for k in 0..20 {
+                let e = motion.euler_at(0.77 * k as f64);
+                assert!((e.theta - theta).abs() <= 1e-9, "{w3} {theta} {rate}");
+                assert!((e.phi_dot - rate).abs() <= 1e-9 * rate.abs().max(1.0));
+            }
+            let mean = motion.mean_precession_rate().unwrap();
+            assert!((mean - rate).abs() <= 1e-9 * rate.abs().max(1.0));
+        }
+    }
+}
+
+/// A top started exactly at the vertical with θ̇₀ ≠ 0 swings through it: the
+/// attitude stays continuous and φ jumps by π in the reported angles.
+#[test]
+fn through_the_vertical_is_continuous() {
+    let top = LagrangeTop::new(1.25, 0.5, 1.0);
+    let motion: LagrangeTopMotion = top
+        .try_solve(LagrangeTopInitial {
+            theta: 0.0,
+            theta_dot: 0.5,
+            psi_dot: 8.0,
+            ..Default::default()
+        })
+        .unwrap();
+    let period = motion.nutation_period().unwrap();
+    assert!(motion.theta_min() == 0.0);
+    let e = motion.euler_at(1e-3);
+    assert!(e.theta > 0.0 && e.theta_dot > 0.0);
+    let n = 2000;
+    let mut prev = motion.world_from_body_at(0.0);
+    for k in 1..=n {
+        let t = 2.0 * period * k as f64 / n as f64;
+        let q = motion.world_from_body_at(t);
+        let step = rotation_angle_between(prev, q);
+        assert!(step < 0.05, "{t}: {step}");
+        // euler_at and world_from_body_at describe the same attitude
+        let e = motion.euler_at(t);
+        let qe = DQuat::from_rotation_z(e.phi)
+            * DQuat::from_rotation_x(e.theta)
+            * DQuat::from_rotation_z(e.psi);
+        assert!(rotation_angle_between(q, qe) < 1e-12);
+        assert!((0.0..=std::f64::consts::PI).contains(&e.theta));
+        prev = q;
+    }
+}
+
+/// Bad input gives `Err`, never a panic.
+#[test]
+fn bad_input_is_an_error() {
+    let bad = [0.0, -1.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+    for v in bad {
+        assert!(matches!(
+            LagrangeTop::try_new(v, 1.0, 1.0),
+            Err(DynamicsError::InvalidTop {
+                parameter: "i1",
+                ..
+            })
+        ));
+        assert!(LagrangeTop::try_new(1.0, v, 1.0).is_err());
+        if !v.is_finite() {
+            assert!(LagrangeTop::try_new(1.0, 1.0, v).is_err());
+        }
+    }
+    let top = LagrangeTop::new(1.0, 0.5, 1.0);
+    for v in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        for field in 0..6 {
+            let mut init = LagrangeTopInitial {
+                theta: 0.5,
+                psi_dot: 10.0,
+                ..Default::default()
+            };
+            let slot = [
+                &mut init.phi,
+                &mut init.theta,
+                &mut init.psi,
+                &mut init.phi_dot,
+                &mut init.theta_dot,
+                &mut init.psi_dot,
+            ];
+            *slot.into_iter().nth(field).unwrap() = v;
+            assert!(matches!(
+                top.try_solve(init),
+                Err(DynamicsError::InvalidTop { .. })
+            ));
+        }
+    }
+}
+
+#[test]
+#[should_panic(expected = "i1")]
+fn new_panics_on_bad_input() {
+    let _ = LagrangeTop::new(-1.0, 1.0, 1.0);
+}
