@@ -96,12 +96,11 @@ impl SpherePanel {
         self.path(fig, &equator, &Stroke::dashed(Color::GREY, 1.0, 5.0, 4.0));
         let bottom = self.pixel(-DVec3::Z).0;
         let top = self.pixel(DVec3::Z * 1.2).0;
-        fig.line(
-            bottom,
-            self.center,
-            Stroke::dashed(Color::GREY.with_alpha(HIDDEN_ALPHA), 1.0, 3.0, 3.0),
-        );
-        fig.line(self.center, top, Stroke::solid(Color::GREY, 1.0));
+        let pole = self.pixel(DVec3::Z).0;
+        // Inside the sphere the axis is hidden: faint; above the pole, solid.
+        let inside = Stroke::dashed(Color::GREY.with_alpha(HIDDEN_ALPHA), 1.0, 3.0, 3.0);
+        fig.line(bottom, pole, inside);
+        fig.line(pole, top, Stroke::solid(Color::GREY, 1.0));
         fig.circle(self.pixel(DVec3::Z).0, 2.5, Some(Color::GREY), None);
         fig.text(Text::new(
             Point::new(top.x + 6.0, top.y + 5.0),
