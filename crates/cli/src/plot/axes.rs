@@ -103,14 +103,32 @@ impl Axes {
         )
     }
 
+    /// Fills the frame with `color` (e.g. white under an inset).
+    pub fn fill_frame(&self, fig: &mut Figure, color: Color) {
+        let f = self.frame;
+        fig.polygon(
+            vec![
+                Point::new(f.left, f.top),
+                Point::new(f.right(), f.top),
+                Point::new(f.right(), f.bottom()),
+                Point::new(f.left, f.bottom()),
+            ],
+            color,
+            None,
+        );
+    }
+
     /// Draws the frame, grid, ticks, tick labels, axis labels and title.
     pub fn draw(&self, fig: &mut Figure, labels: &Labels<'_>) {
         let f = self.frame;
         let grid = Stroke::solid(Color::rgb(225, 225, 225), 1.0);
         let tick = Stroke::solid(Color::BLACK, 1.0);
+        // About one tick label per 90 px across and per 60 px up.
+        let x_target = ((f.width / 90.0) as usize).max(2);
+        let y_target = ((f.height / 60.0) as usize).max(2);
         let (x0, x1) = self.x_range;
-        let x_step = nice_step(x0, x1, 8);
-        for x in nice_ticks(x0, x1, 8) {
+        let x_step = nice_step(x0, x1, x_target);
+        for x in nice_ticks(x0, x1, x_target) {
             let p = self.pixel(x, self.y_range.0);
             fig.line(
                 Point::new(p.x, f.top),
@@ -126,9 +144,9 @@ impl Axes {
             ));
         }
         let (y0, y1) = self.y_range;
-        let y_step = nice_step(y0, y1, 6);
+        let y_step = nice_step(y0, y1, y_target);
         let mut widest = 0usize;
-        for y in nice_ticks(y0, y1, 6) {
+        for y in nice_ticks(y0, y1, y_target) {
             let p = self.pixel(self.x_range.0, y);
             fig.line(
                 Point::new(f.left, p.y),

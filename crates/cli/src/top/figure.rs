@@ -72,19 +72,22 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         Anchor::Middle,
     ));
     panel.draw_frame(fig);
-    panel.latitude(
-        fig,
-        plot.theta_min,
-        &Stroke::dashed(THETA_MIN, 1.5, 6.0, 4.0),
-        "\u{3b8}min",
-    );
-    if plot.theta_max != plot.theta_min {
+    // A sleeping top's circles are the pole itself: nothing to draw.
+    if plot.theta_max > 0.0 {
         panel.latitude(
             fig,
-            plot.theta_max,
-            &Stroke::dashed(THETA_MAX, 1.5, 6.0, 4.0),
-            "\u{3b8}max",
+            plot.theta_min,
+            &Stroke::dashed(THETA_MIN, 1.5, 6.0, 4.0),
+            "\u{3b8}min",
         );
+        if plot.theta_max != plot.theta_min {
+            panel.latitude(
+                fig,
+                plot.theta_max,
+                &Stroke::dashed(THETA_MAX, 1.5, 6.0, 4.0),
+                "\u{3b8}max",
+            );
+        }
     }
     panel.path(fig, plot.axis_path, &Stroke::solid(PATH, 1.8));
     if let Some(&start) = plot.axis_path.first() {
@@ -105,12 +108,12 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         ),
         (
             THETA_MIN,
-            format!("\u{3b8}min = {} rad", Shortest(plot.theta_min)),
+            format!("\u{3b8}min = {} rad", short(plot.theta_min)),
             true,
         ),
         (
             THETA_MAX,
-            format!("\u{3b8}max = {} rad", Shortest(plot.theta_max)),
+            format!("\u{3b8}max = {} rad", short(plot.theta_max)),
             true,
         ),
     ];
@@ -226,6 +229,10 @@ fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
             off_scale.push(format!("{name} = {} (off scale)", short(r)));
         }
     }
+    // A narrow interval (a fast top) is a sliver at this scale: zoom in.
+    if u2 > u1 && u2 - u1 < 0.04 * (x_hi - x_lo) {
+        zoom(fig, plot, &axes, (u1, u2), hump);
+    }
     let mut y = axes.frame.bottom() + 70.0;
     let x = axes.frame.left;
     fig.polygon(
@@ -256,6 +263,63 @@ fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
             13.0,
             Anchor::Start,
         ));
+    }
+}
+
+/// An inset in the upper left of `main`: f(u) on [u₁, u₂] and a little around it.
+fn zoom(fig: &mut Figure, plot: &TopPlot<'_>, main: &Axes, (u1, u2): (f64, f64), hump: f64) {
+    let f = plot.f;
+    let w = u2 - u1;
+    let (x_lo, x_hi) = (u1 - 0.3 * w, u2 + 0.3 * w);
+    let inset = Axes {
+        frame: Rect {
+            left: main.frame.left + 75.0,
+            top: main.frame.top + 35.0,
+            width: 190.0,
+            height: 120.0,
+        },
+        x_range: (x_lo, x_hi),
+        y_range: (-0.5 * hump, 1.3 * hump),
+    };
+    let outer = Rect {
+        left: inset.frame.left - 70.0,
+        top: inset.frame.top - 28.0,
+        width: inset.frame.width + 80.0,
+        height: inset.frame.height + 60.0,
+    };
+    Axes {
+        frame: outer,
+        ..inset
+    }
+    .fill_frame(fig, Color::WHITE);
+    inset.draw(
+        fig,
+        &Labels {
+            title: "zoom on [u\u{2081}, u\u{2082}]",
+            x: "",
+            y: "",
+        },
+    );
+    let samples: Vec<(f64, f64)> = (0..=400)
+        .map(|k| {
+            let u = x_lo + (x_hi - x_lo) * f64::from(k) / 400.0;
+            (u, f(u))
+        })
+        .collect();
+    let shade: Vec<(f64, f64)> = samples
+        .iter()
+        .filter(|(u, _)| (u1..=u2).contains(u))
+        .map(|&(u, y)| (u, y.max(0.0)))
+        .collect();
+    inset.fill_to_zero(fig, &shade, PATH.with_alpha(70));
+    inset.curve(
+        fig,
+        &[(x_lo, 0.0), (x_hi, 0.0)],
+        &Stroke::solid(Color::rgb(60, 60, 60), 1.0),
+    );
+    inset.curve(fig, &samples, &Stroke::solid(Color::BLACK, 2.0));
+    for u in [u1, u2] {
+        inset.marker(fig, u, 0.0, 4.0, Color::rgb(230, 160, 20));
     }
 }
 
