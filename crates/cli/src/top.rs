@@ -307,7 +307,7 @@ const SAMPLES_PER_PERIOD: usize = 400;
 /// The axis e₃ in world coordinates over three or more nutation periods
 /// (more while the precession over them is under a quarter turn, up to 12),
 /// and a caption saying what it covers.
-fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String) {
+fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) {
     let period = motion
         .nutation_period()
         .filter(|p| p.is_finite() && *p > 0.0);
@@ -362,7 +362,8 @@ fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String) {
             motion.world_from_body_at(t) * DVec3::Z
         })
         .collect();
-    (path, caption)
+    let per_period = period.map(|_| SAMPLES_PER_PERIOD);
+    (path, caption, per_period)
 }
 
 /// A time with 4 significant digits.
@@ -398,7 +399,7 @@ fn plot(
     format: ImageFormat,
     path: &std::path::Path,
 ) -> Result<(), CliError> {
-    let (axis, caption) = axis_path(motion);
+    let (axis, caption, samples_per_period) = axis_path(motion);
     let f = |u: f64| motion.f(u);
     let figure = figure::figure(&figure::TopPlot {
         title: title(args),
@@ -408,6 +409,7 @@ fn plot(
         theta_max: summary.theta_max,
         f: &f,
         roots: &summary.roots,
+        samples_per_period,
     });
     let bytes = format.render(&figure).map_err(|e| CliError::Plot {
         path: path.to_owned(),

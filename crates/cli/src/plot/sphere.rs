@@ -11,7 +11,7 @@
 
 use glam::DVec3;
 
-use super::figure::{Anchor, Color, Figure, Point, Stroke, Text};
+use super::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text, clip_polyline};
 
 /// An orthographic view direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -159,6 +159,49 @@ impl SpherePanel {
     }
 }
 
+/// A magnified view of a small patch of the sphere around `center`:
+/// orthographic projection onto the tangent plane there, east to the right,
+/// north (towards +z) up, `scale` px per radian, clipped to `frame`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LocalView {
+    /// Where the patch is drawn.
+    pub frame: Rect,
+    /// The unit vector drawn at the frame's centre.
+    pub center: DVec3,
+    /// Pixels per radian (per unit length in the tangent plane).
+    pub scale: f64,
+}
+
+impl LocalView {
+    /// The east and north unit vectors of the tangent plane at the centre
+    /// (east = z × centre; about x at the poles).
+    pub fn basis(&self) -> (DVec3, DVec3) {
+        let east = DVec3::Z
+            .cross(self.center)
+            .try_normalize()
+            .unwrap_or(DVec3::X);
+        (east, self.center.cross(east))
+    }
+
+    /// Figure pixels of `v`.
+    pub fn pixel(&self, v: DVec3) -> Point {
+        let (east, north) = self.basis();
+        let c = self.frame.center();
+        Point::new(
+            c.x + self.scale * v.dot(east),
+            c.y - self.scale * v.dot(north),
+        )
+    }
+
+    /// Draws the path, clipped to the frame.
+    pub fn path(&self, fig: &mut Figure, points: &[DVec3], stroke: &Stroke) {
+        let px: Vec<Point> = points.iter().map(|&v| self.pixel(v)).collect();
+        for run in clip_polyline(&px, self.frame) {
+            fig.polyline(run, stroke.clone());
+        }
+    }
+}
+
 /// `n + 1` points (closed) of the circle at polar angle `theta` from +z.
 pub fn circle_of_latitude(theta: f64, n: usize) -> Vec<DVec3> {
     let (s, c) = theta.sin_cos();
@@ -224,6 +267,32 @@ mod tests {
                 assert!((p.x.hypot(p.y) - 1.0).abs() < 1e-14 && p.depth.abs() < 1e-14);
             }
         }
+    }
+
+    #[test]
+    fn local_view_is_east_right_north_up() {
+        let center = DVec3::new(0.0, -0.5f64.sin(), 0.5f64.cos());
+        let view = LocalView {
+            frame: Rect {
+                left: 0.0,
+                top: 0.0,
+                width: 100.0,
+                height: 50.0,
+            },
+            center,
+            scale: 1000.0,
+        };
+        let (east, north) = view.basis();
+        assert!((east - DVec3::X).length() < 1e-15, "{east}");
+        assert!(north.z > 0.0 && north.dot(center).abs() < 1e-15);
+        assert_eq!(view.pixel(center), Point::new(50.0, 25.0));
+        // A step up in latitude (smaller theta) goes up on screen.
+        let up = DVec3::new(0.0, -0.49f64.sin(), 0.49f64.cos());
+        let p = view.pixel(up);
+        assert!(
+            p.x.abs() - 50.0 < 1e-9 && (p.y - (25.0 - 10.0)).abs() < 1e-3,
+            "{p:?}"
+        );
     }
 
     #[test]

@@ -9,7 +9,7 @@ use glam::DVec3;
 use crate::numbers::Shortest;
 use crate::plot::axes::{Axes, Labels, TITLE_FONT};
 use crate::plot::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text};
-use crate::plot::sphere::{SpherePanel, View};
+use crate::plot::sphere::{LocalView, SpherePanel, View, circle_of_latitude};
 
 /// Figure width, px.
 pub const WIDTH: u32 = 1280;
@@ -39,6 +39,8 @@ pub struct TopPlot<'a> {
     pub f: &'a dyn Fn(f64) -> f64,
     /// The real roots of f, ascending.
     pub roots: &'a [f64],
+    /// Samples of `axis_path` per nutation period, when it has periods.
+    pub samples_per_period: Option<usize>,
 }
 
 /// Draws the two panels.
@@ -94,6 +96,14 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         let (p, _) = panel.pixel(start);
         fig.circle(p, 4.0, Some(Color::BLACK), None);
     }
+    // A narrow band of nutation is a line at this scale: magnify two periods.
+    let band = plot.theta_max - plot.theta_min;
+    if let Some(n) = plot
+        .samples_per_period
+        .filter(|_| band > 0.0 && band < 0.05)
+    {
+        sphere_zoom(fig, plot, &panel, n);
+    }
     // Legend below the sphere.
     let x = 40.0;
     let mut y = 580.0;
@@ -136,6 +146,61 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         ));
         y += 19.0;
     }
+}
+
+/// An inset magnifying two nutation periods of the axis path, with the
+/// θ_min and θ_max circles: below the sphere's centre for a path above the
+/// equator, above it otherwise.
+fn sphere_zoom(fig: &mut Figure, plot: &TopPlot<'_>, panel: &SpherePanel, per_period: usize) {
+    let piece = &plot.axis_path[..plot.axis_path.len().min(2 * per_period + 1)];
+    let Some(center) = piece.iter().copied().sum::<DVec3>().try_normalize() else {
+        return;
+    };
+    let top = if center.z >= 0.0 { 430.0 } else { 120.0 };
+    let frame = Rect {
+        left: panel.center.x - 200.0,
+        top,
+        width: 400.0,
+        height: 105.0,
+    };
+    let mut view = LocalView {
+        frame,
+        center,
+        scale: 1.0,
+    };
+    let (east, _) = view.basis();
+    let along = piece
+        .iter()
+        .map(|v| v.dot(east).abs())
+        .fold(0.0_f64, f64::max);
+    let band = plot.theta_max - plot.theta_min;
+    view.scale = (0.45 * frame.width / along.max(1e-300)).min(0.6 * frame.height / band);
+    let outline = Stroke::solid(Color::rgb(90, 90, 90), 1.0);
+    fig.polygon(
+        vec![
+            Point::new(frame.left, frame.top),
+            Point::new(frame.right(), frame.top),
+            Point::new(frame.right(), frame.bottom()),
+            Point::new(frame.left, frame.bottom()),
+        ],
+        Color::WHITE,
+        Some(outline),
+    );
+    for (theta, color) in [(plot.theta_min, THETA_MIN), (plot.theta_max, THETA_MAX)] {
+        // The part of the circle facing the centre (the rest is far away).
+        let circle: Vec<DVec3> = circle_of_latitude(theta, 20_000)
+            .into_iter()
+            .filter(|v| v.dot(center) > 0.9)
+            .collect();
+        view.path(fig, &circle, &Stroke::dashed(color, 1.5, 6.0, 4.0));
+    }
+    view.path(fig, piece, &Stroke::solid(PATH, 1.8));
+    fig.text(Text::new(
+        Point::new(frame.left + 6.0, frame.top + 15.0),
+        "magnified: two nutation periods",
+        12.0,
+        Anchor::Start,
+    ));
 }
 
 /// The right panel: f(u) with the roots marked and [u₁, u₂] shaded.
@@ -354,6 +419,7 @@ mod tests {
             theta_max: 0.6,
             f: &f,
             roots: &[0.8, 0.9, 3.0],
+            samples_per_period: Some(30),
         });
         let texts: Vec<&str> = fig
             .items
