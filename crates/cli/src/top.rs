@@ -390,8 +390,7 @@ fn title(args: &TopArgs) -> String {
 /// Draws the figure of `motion` into `path`.
 ///
 /// # Errors
-/// [`CliError::Plot`] when rendering fails, [`CliError::CreateOutput`] when
-/// the file cannot be written.
+/// [`CliError::Plot`] when rendering fails or the file cannot be written.
 fn plot(
     args: &TopArgs,
     motion: &LagrangeTopMotion,
@@ -415,9 +414,9 @@ fn plot(
         path: path.to_owned(),
         message: e.to_string(),
     })?;
-    std::fs::write(path, bytes).map_err(|source| CliError::CreateOutput {
+    std::fs::write(path, bytes).map_err(|source| CliError::Plot {
         path: path.to_owned(),
-        source,
+        message: format!("cannot write the file: {source}"),
     })
 }
 
@@ -425,8 +424,7 @@ fn plot(
 ///
 /// # Errors
 /// [`CliError::Argument`] for a bad option value (naming it), [`CliError::Plot`]
-/// and [`CliError::CreateOutput`] for the figure, [`CliError::Write`] when
-/// standard output fails.
+/// for the figure, [`CliError::Write`] when standard output fails.
 pub fn run(args: &TopArgs) -> Result<(), CliError> {
     let format = args.validate()?;
     let motion = solve(args)?;

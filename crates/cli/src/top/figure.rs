@@ -207,19 +207,18 @@ fn sphere_zoom(fig: &mut Figure, plot: &TopPlot<'_>, panel: &SpherePanel, per_pe
 fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
     let f = plot.f;
     let (u1, u2) = (plot.theta_max.cos(), plot.theta_min.cos());
-    // Show [−1, 1] and the third root when it is near; otherwise say where it is.
-    let beyond = plot
-        .roots
-        .iter()
-        .copied()
-        .filter(|&r| r > 1.0 + 1e-12)
-        .fold(f64::NAN, f64::max);
-    let x_hi = if beyond.is_finite() && beyond <= 1.6 {
-        beyond + 0.1
-    } else {
-        1.15
+    // Show [−1, 1] and the third root when it is near (above 1 for Mgl > 0,
+    // below −1 for a hanging top); otherwise say where it is.
+    let outside = |r: f64| r > 1.0 + 1e-12 || r < -1.0 - 1e-12;
+    let third = plot.roots.iter().copied().find(|&r| outside(r));
+    let x_hi = match third {
+        Some(r) if r > 1.0 && r <= 1.6 => r + 0.1,
+        _ => 1.15,
     };
-    let x_lo = -1.1;
+    let x_lo = match third {
+        Some(r) if r < -1.0 && r >= -1.6 => r - 0.1,
+        _ => -1.1,
+    };
     let samples: Vec<(f64, f64)> = (0..=1200)
         .map(|k| {
             let u = x_lo + (x_hi - x_lo) * f64::from(k) / 1200.0;
@@ -275,11 +274,21 @@ fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
     axes.curve(fig, &[(-1.0, y_lo), (-1.0, y_hi)], &bound);
     axes.curve(fig, &[(1.0, y_lo), (1.0, y_hi)], &bound);
     axes.curve(fig, &samples, &Stroke::solid(Color::BLACK, 2.0));
-    // Roots: markers on the axis, labels above them (alternating heights).
-    let names = ["u\u{2081}", "u\u{2082}", "u\u{2083}"];
+    // Roots: markers on the axis, labels above them (alternating heights);
+    // u₁ ≤ u₂ bound the motion, u₃ is the one outside [−1, 1].
     let mut off_scale = Vec::new();
+    let mut inside = 0;
     for (k, &r) in plot.roots.iter().enumerate() {
-        let name = names.get(k).copied().unwrap_or("u");
+        let name = if outside(r) {
+            "u\u{2083}"
+        } else {
+            inside += 1;
+            if inside == 1 {
+                "u\u{2081}"
+            } else {
+                "u\u{2082}"
+            }
+        };
         let p = axes.pixel(r, 0.0);
         if axes.frame.contains(p) {
             axes.marker(fig, r, 0.0, 5.0, Color::rgb(230, 160, 20));

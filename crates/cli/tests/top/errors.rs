@@ -53,7 +53,10 @@ fn bad_plot_files_are_one_line_errors() {
     let line = with("--plot", missing.to_str().unwrap())
         .error_line(1)
         .to_owned();
-    assert!(line.contains("top.svg"), "{line}");
+    assert!(
+        line.contains("--plot") && line.contains("top.svg"),
+        "{line}"
+    );
     for bare in ["top", "top.", ".png.txt"] {
         let path = dir.join(bare);
         let run = with("--plot", path.to_str().unwrap());
