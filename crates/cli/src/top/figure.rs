@@ -209,14 +209,14 @@ fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
     let (u1, u2) = (plot.theta_max.cos(), plot.theta_min.cos());
     // Show [−1, 1] and the third root when it is near (above 1 for Mgl > 0,
     // below −1 for a hanging top); otherwise say where it is.
-    let outside = |r: f64| r > 1.0 + 1e-12 || r < -1.0 - 1e-12;
+    let outside = |r: f64| !(-1.0 - 1e-12..=1.0 + 1e-12).contains(&r);
     let third = plot.roots.iter().copied().find(|&r| outside(r));
     let x_hi = match third {
         Some(r) if r > 1.0 && r <= 1.6 => r + 0.1,
         _ => 1.15,
     };
     let x_lo = match third {
-        Some(r) if r < -1.0 && r >= -1.6 => r - 0.1,
+        Some(r) if (-1.6..-1.0).contains(&r) => r - 0.1,
         _ => -1.1,
     };
     let samples: Vec<(f64, f64)> = (0..=1200)
