@@ -209,6 +209,28 @@ pub enum CliError {
         /// What is wrong, naming the key (one line).
         message: String,
     },
+    /// A command-line option with a value the subcommand cannot use.
+    #[error("{argument}: {message}")]
+    Argument {
+        /// The option as written on the command line (`--i1`).
+        argument: String,
+        /// What is wrong with its value (one line).
+        message: String,
+    },
+    /// The library cannot solve the heavy top for these parameters.
+    #[error("heavy top: {message}")]
+    Top {
+        /// The library's description of the problem (one line).
+        message: String,
+    },
+    /// A figure cannot be drawn.
+    #[error("--plot {}: {message}", path.display())]
+    Plot {
+        /// The image file asked for.
+        path: PathBuf,
+        /// What went wrong.
+        message: String,
+    },
     /// `--method` names no known method.
     #[error("--method: {message}")]
     Method {

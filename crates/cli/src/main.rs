@@ -11,8 +11,10 @@ mod convert;
 mod error;
 mod inertia;
 mod numbers;
+mod plot;
 mod representation;
 mod simulate;
+mod top;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -27,7 +29,8 @@ Examples:
   echo '0 0 1.5707963267948966' | kreisel convert --from rotvec --to quat
   kreisel inertia part.stl --units mm --density 2700
   kreisel inertia assets/t_handle.obj --format urdf
-  kreisel simulate scene.toml --output run.csv";
+  kreisel simulate scene.toml --output run.csv
+  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --plot top.svg";
 
 /// Rigid-body rotations from the command line.
 #[derive(Debug, Parser)]
@@ -55,6 +58,9 @@ enum Command {
     /// Integrate the torque-free rotation of the bodies of a TOML scene and
     /// write their states as CSV
     Simulate(simulate::SimulateArgs),
+    /// The heavy symmetric top: constants of the motion, roots of f(u), nutation
+    /// limits and period, precession, type of motion; --plot draws it
+    Top(top::TopArgs),
 }
 
 /// Runs the chosen subcommand.
@@ -63,6 +69,7 @@ fn dispatch(command: &Command) -> Result<(), CliError> {
         Command::Convert(args) => convert::run(args),
         Command::Inertia(args) => inertia::run(args),
         Command::Simulate(args) => simulate::run(args),
+        Command::Top(args) => top::run(args),
     }
 }
 

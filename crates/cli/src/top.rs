@@ -1,0 +1,497 @@
+//! `kreisel top`: the heavy symmetric (Lagrange) top from its parameters and
+//! initial conditions: the constants of the motion, the roots of the cubic
+//! f(u), the nutation limits, period and mean precession, the type of motion,
+//! and optionally a figure of it.
+//!
+//! All physics is the library's ([`kreisel_dynamics::LagrangeTop`]); this
+//! module parses the arguments, copies the library's answers into a
+//! [`Summary`] and writes it ([`output`]), and samples the motion for the
+//! plot ([`figure`]).
+
+#![forbid(unsafe_code)]
+
+mod figure;
+mod output;
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use glam::DVec3;
+use kreisel_dynamics::{
+    DynamicsError, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, TopMotionKind,
+};
+
+use crate::error::{CliError, Stream};
+use crate::numbers::Shortest;
+use crate::plot::ImageFormat;
+
+/// The `--help` text of `kreisel top` after the option list.
+const AFTER_LONG_HELP: &str = "\
+Model:
+  A symmetric top spinning about a fixed pivot on its symmetry axis, in
+  gravity: I1 is the transverse moment of inertia about the pivot, I3 the
+  moment about the symmetry axis, MGL = M g l with l the distance from the
+  pivot to the centre of mass (J). Euler angles z-x-z: theta is the angle of
+  the symmetry axis from the upward vertical (theta = 0: upright), phi the
+  precession about the vertical, psi the spin about the symmetry axis.
+  With u = cos theta, du/dt^2 = f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2.
+
+Output (SI units, radians; numbers in shortest round-trip form):
+  a, b          p_psi / I1 and p_phi / I1, rad/s
+  alpha, beta   2 E' / I1 and 2 M g l / I1, 1/s^2
+  omega3        spin I1 a / I3, rad/s
+  roots         the real roots of f, ascending
+  theta_min, theta_max    nutation limits, rad
+  nutation_period         s
+  mean_precession_rate    rad/s (mean dphi/dt over a nutation period)
+  motion        no_loops, loops or cusps (sign of dphi/dt at the limits)
+  sleeping      theta0 = 0 and theta_dot0 = 0 (nutation fields: null/none)
+  sleeping_stable         omega3^2 > 4 I1 M g l / I3^2
+--plot FILE.svg or FILE.png draws the path of the symmetry axis on the unit
+sphere over three or more nutation periods, and f(u) with its roots.
+
+Examples:
+  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --plot top.svg
+  kreisel top --i1 1 --i3 0.5 --mgl 1 --theta0 1 --phi-dot0 -1 --psi-dot0 8 --format json";
+
+/// Arguments of `kreisel top`.
+#[derive(Debug, Clone, clap::Args)]
+#[command(after_long_help = AFTER_LONG_HELP)]
+pub struct TopArgs {
+    /// Transverse moment of inertia about the pivot, kg m^2 (positive)
+    #[arg(long, value_name = "I1", allow_hyphen_values = true)]
+    pub i1: f64,
+
+    /// Moment of inertia about the symmetry axis, kg m^2
+    #[arg(long, value_name = "I3", allow_hyphen_values = true)]
+    pub i3: f64,
+
+    /// M g l: weight times the distance from the pivot to the centre of mass, J
+    #[arg(long, value_name = "MGL", allow_hyphen_values = true)]
+    pub mgl: f64,
+
+    /// Initial angle of the symmetry axis from the upward vertical, rad
+    #[arg(long, value_name = "TH", allow_hyphen_values = true)]
+    pub theta0: f64,
+
+    /// Initial nutation rate d(theta)/dt, rad/s
+    #[arg(
+        long,
+        value_name = "TD",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    pub theta_dot0: f64,
+
+    /// Initial precession rate d(phi)/dt, rad/s
+    #[arg(
+        long,
+        value_name = "PD",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    pub phi_dot0: f64,
+
+    /// Initial spin rate d(psi)/dt, rad/s
+    #[arg(
+        long,
+        value_name = "SD",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
+    pub psi_dot0: f64,
+
+    /// Output format
+    #[arg(long, value_name = "FORMAT", value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+
+    /// Draw the axis path and f(u) into FILE (.svg or .png)
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
+}
+
+/// What `kreisel top` writes on standard output (`--format`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// `name: value unit`, one per line.
+    Text,
+    /// One JSON object.
+    Json,
+}
+
+/// The library's answers for one top, as plain numbers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Summary {
+    /// I₁ about the pivot, kg m².
+    pub i1: f64,
+    /// I₃, kg m².
+    pub i3: f64,
+    /// M g l, J.
+    pub mgl: f64,
+    /// θ(0), rad.
+    pub theta0: f64,
+    /// θ̇(0), rad/s.
+    pub theta_dot0: f64,
+    /// φ̇(0), rad/s.
+    pub phi_dot0: f64,
+    /// ψ̇(0), rad/s.
+    pub psi_dot0: f64,
+    /// a = p_ψ / I₁, rad/s.
+    pub a: f64,
+    /// b = p_φ / I₁, rad/s.
+    pub b: f64,
+    /// α = 2E′/I₁, 1/s².
+    pub alpha: f64,
+    /// β = 2Mgl/I₁, 1/s².
+    pub beta: f64,
+    /// The spin ω₃, rad/s.
+    pub omega3: f64,
+    /// Real roots of f, ascending.
+    pub roots: Vec<f64>,
+    /// Smallest θ, rad.
+    pub theta_min: f64,
+    /// Largest θ, rad.
+    pub theta_max: f64,
+    /// Period of θ(t), s (`None` for a sleeping top).
+    pub nutation_period: Option<f64>,
+    /// Mean φ̇ over a nutation period, rad/s.
+    pub mean_precession_rate: Option<f64>,
+    /// `no_loops`, `loops` or `cusps`.
+    pub motion: Option<&'static str>,
+    /// θ₀ = 0 and θ̇₀ = 0.
+    pub sleeping: bool,
+    /// Whether the upright spinning top is stable (notes §3.11).
+    pub sleeping_stable: bool,
+}
+
+/// The name of a kind of motion in the output.
+fn motion_name(kind: TopMotionKind) -> &'static str {
+    match kind {
+        TopMotionKind::NoLoops => "no_loops",
+        TopMotionKind::Loops => "loops",
+        TopMotionKind::Cusps => "cusps",
+    }
+}
+
+impl TopArgs {
+    /// The arguments as (option name, value), in command-line order.
+    fn numbers(&self) -> [(&'static str, f64); 7] {
+        [
+            ("--i1", self.i1),
+            ("--i3", self.i3),
+            ("--mgl", self.mgl),
+            ("--theta0", self.theta0),
+            ("--theta-dot0", self.theta_dot0),
+            ("--phi-dot0", self.phi_dot0),
+            ("--psi-dot0", self.psi_dot0),
+        ]
+    }
+
+    /// Checks what the CLI can check itself (finite numbers, I₁ > 0, the plot
+    /// format) before the library checks the physics.
+    ///
+    /// # Errors
+    /// [`CliError::Argument`] naming the option.
+    fn validate(&self) -> Result<Option<ImageFormat>, CliError> {
+        for (name, value) in self.numbers() {
+            if !value.is_finite() {
+                return Err(argument(
+                    name,
+                    format!("{} is not a finite number", Shortest(value)),
+                ));
+            }
+        }
+        if self.i1 <= 0.0 {
+            return Err(argument(
+                "--i1",
+                format!(
+                    "{} kg m^2: the moment of inertia must be positive",
+                    Shortest(self.i1)
+                ),
+            ));
+        }
+        match &self.plot {
+            None => Ok(None),
+            Some(path) => ImageFormat::from_path(path).map(Some).ok_or_else(|| {
+                argument(
+                    "--plot",
+                    format!(
+                        "{}: unknown image format (use a .svg or .png file name)",
+                        path.display()
+                    ),
+                )
+            }),
+        }
+    }
+
+    /// The initial conditions for the library (φ₀ = ψ₀ = 0).
+    fn initial(&self) -> LagrangeTopInitial {
+        LagrangeTopInitial {
+            theta: self.theta0,
+            theta_dot: self.theta_dot0,
+            phi_dot: self.phi_dot0,
+            psi_dot: self.psi_dot0,
+            ..LagrangeTopInitial::default()
+        }
+    }
+}
+
+/// An error about one command-line option.
+fn argument(name: &'static str, message: String) -> CliError {
+    CliError::Argument {
+        argument: name.to_owned(),
+        message,
+    }
+}
+
+/// The command-line option of a parameter the library names.
+fn option_name(parameter: &str) -> String {
+    match parameter {
+        "theta" | "theta_dot" | "phi_dot" | "psi_dot" | "phi" | "psi" => {
+            format!("--{}0", parameter.replace('_', "-"))
+        }
+        other => format!("--{}", other.replace('_', "-")),
+    }
+}
+
+/// The library's error as an error about the option it names.
+fn dynamics_error(error: DynamicsError) -> CliError {
+    let message = crate::error::one_line(&error.to_string());
+    match error {
+        DynamicsError::InvalidTop { parameter, .. } => CliError::Argument {
+            argument: option_name(parameter),
+            message,
+        },
+        _ => CliError::Top { message },
+    }
+}
+
+/// Solves the motion of the top the arguments describe.
+///
+/// # Errors
+/// [`CliError::Argument`] for a parameter the library rejects.
+fn solve(args: &TopArgs) -> Result<LagrangeTopMotion, CliError> {
+    let top = LagrangeTop::try_new(args.i1, args.i3, args.mgl).map_err(dynamics_error)?;
+    top.try_solve(args.initial()).map_err(dynamics_error)
+}
+
+/// The library's answers for `motion`.
+fn summarise(args: &TopArgs, motion: &LagrangeTopMotion) -> Summary {
+    Summary {
+        i1: args.i1,
+        i3: args.i3,
+        mgl: args.mgl,
+        theta0: args.theta0,
+        theta_dot0: args.theta_dot0,
+        phi_dot0: args.phi_dot0,
+        psi_dot0: args.psi_dot0,
+        a: motion.a(),
+        b: motion.b(),
+        alpha: motion.alpha(),
+        beta: motion.beta(),
+        omega3: motion.omega3(),
+        roots: motion.roots(),
+        theta_min: motion.theta_min(),
+        theta_max: motion.theta_max(),
+        nutation_period: motion.nutation_period(),
+        mean_precession_rate: motion.mean_precession_rate(),
+        motion: motion.motion().map(motion_name),
+        sleeping: motion.is_sleeping(),
+        sleeping_stable: motion.sleeping_stable(),
+    }
+}
+
+/// Samples per nutation period in the plot.
+const SAMPLES_PER_PERIOD: usize = 400;
+
+/// The axis e₃ in world coordinates over three or more nutation periods
+/// (more while the precession over them is under a quarter turn, up to 12),
+/// and a caption saying what it covers.
+fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) {
+    let period = motion
+        .nutation_period()
+        .filter(|p| p.is_finite() && *p > 0.0);
+    let precession = motion
+        .mean_precession_rate()
+        .filter(|w| w.is_finite() && *w != 0.0);
+    let (duration, periods, caption) = match (period, precession) {
+        (Some(p), w) => {
+            let per_period = w.map_or(0.0, |w| (w * p).abs());
+            let wanted = if per_period > 0.0 {
+                (std::f64::consts::FRAC_PI_2 / per_period).ceil()
+            } else {
+                3.0
+            };
+            let n = wanted.clamp(3.0, 12.0) as usize;
+            let duration = p * n as f64;
+            (
+                duration,
+                n,
+                format!(
+                    "t = 0 \u{2026} {} s ({n} nutation periods)",
+                    short_time(duration)
+                ),
+            )
+        }
+        (None, Some(w)) => {
+            // Steady precession: one turn.
+            let duration = std::f64::consts::TAU / w.abs();
+            (
+                duration,
+                3,
+                format!(
+                    "t = 0 \u{2026} {} s (one precession turn)",
+                    short_time(duration)
+                ),
+            )
+        }
+        (None, None) => (0.0, 1, "at rest (sleeping top)".to_owned()),
+    };
+    let n = if duration > 0.0 {
+        periods * SAMPLES_PER_PERIOD
+    } else {
+        0
+    };
+    let path = (0..=n)
+        .map(|k| {
+            let t = if n == 0 {
+                0.0
+            } else {
+                duration * k as f64 / n as f64
+            };
+            motion.world_from_body_at(t) * DVec3::Z
+        })
+        .collect();
+    let per_period = period.map(|_| SAMPLES_PER_PERIOD);
+    (path, caption, per_period)
+}
+
+/// A time with 4 significant digits.
+fn short_time(t: f64) -> String {
+    let rounded: f64 = format!("{t:.3e}").parse().unwrap_or(t);
+    Shortest(rounded).to_string()
+}
+
+/// The figure's title: the parameters.
+fn title(args: &TopArgs) -> String {
+    format!(
+        "Heavy symmetric top: I\u{2081} = {} kg m\u{b2}, I\u{2083} = {} kg m\u{b2}, Mgl = {} J;  \
+         \u{3b8}\u{2080} = {} rad, d\u{3b8}/dt = {}, d\u{3c6}/dt = {}, d\u{3c8}/dt = {} rad/s",
+        Shortest(args.i1),
+        Shortest(args.i3),
+        Shortest(args.mgl),
+        Shortest(args.theta0),
+        Shortest(args.theta_dot0),
+        Shortest(args.phi_dot0),
+        Shortest(args.psi_dot0),
+    )
+}
+
+/// Draws the figure of `motion` into `path`.
+///
+/// # Errors
+/// [`CliError::Plot`] when rendering fails or the file cannot be written.
+fn plot(
+    args: &TopArgs,
+    motion: &LagrangeTopMotion,
+    summary: &Summary,
+    format: ImageFormat,
+    path: &std::path::Path,
+) -> Result<(), CliError> {
+    let (axis, caption, samples_per_period) = axis_path(motion);
+    let f = |u: f64| motion.f(u);
+    let figure = figure::figure(&figure::TopPlot {
+        title: title(args),
+        axis_path: &axis,
+        path_caption: caption,
+        theta_min: summary.theta_min,
+        theta_max: summary.theta_max,
+        f: &f,
+        roots: &summary.roots,
+        samples_per_period,
+    });
+    let bytes = format.render(&figure).map_err(|e| CliError::Plot {
+        path: path.to_owned(),
+        message: e.to_string(),
+    })?;
+    std::fs::write(path, bytes).map_err(|source| CliError::Plot {
+        path: path.to_owned(),
+        message: format!("cannot write the file: {source}"),
+    })
+}
+
+/// Runs `kreisel top`.
+///
+/// # Errors
+/// [`CliError::Argument`] for a bad option value (naming it), [`CliError::Plot`]
+/// for the figure, [`CliError::Write`] when standard output fails.
+pub fn run(args: &TopArgs) -> Result<(), CliError> {
+    let format = args.validate()?;
+    let motion = solve(args)?;
+    let summary = summarise(args, &motion);
+    if let (Some(format), Some(path)) = (format, &args.plot) {
+        plot(args, &motion, &summary, format, path)?;
+    }
+    let text = match args.format {
+        Format::Text => output::text(&summary),
+        Format::Json => output::json(&summary),
+    };
+    let mut stdout = std::io::stdout().lock();
+    stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+        .map_err(|source| CliError::Write {
+            output: Stream::Standard,
+            source,
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args() -> TopArgs {
+        TopArgs {
+            i1: 0.3,
+            i3: 0.1,
+            mgl: 2.0,
+            theta0: 0.5,
+            theta_dot0: 0.0,
+            phi_dot0: 0.0,
+            psi_dot0: 60.0,
+            format: Format::Text,
+            plot: None,
+        }
+    }
+
+    #[test]
+    fn validation_names_the_option() {
+        let check = |change: &dyn Fn(&mut TopArgs), name: &str| {
+            let mut a = args();
+            change(&mut a);
+            let e = a.validate().unwrap_err().to_string();
+            assert!(e.starts_with(&format!("{name}: ")), "{e}");
+        };
+        check(&|a| a.i1 = 0.0, "--i1");
+        check(&|a| a.i1 = -1.0, "--i1");
+        check(&|a| a.theta_dot0 = f64::NAN, "--theta-dot0");
+        check(&|a| a.psi_dot0 = f64::INFINITY, "--psi-dot0");
+        check(&|a| a.plot = Some("top.jpg".into()), "--plot");
+        check(&|a| a.plot = Some("top".into()), "--plot");
+        let mut ok = args();
+        ok.plot = Some("x.PNG".into());
+        assert_eq!(ok.validate().unwrap(), Some(ImageFormat::Png));
+    }
+
+    #[test]
+    fn library_errors_name_the_option() {
+        let e = dynamics_error(DynamicsError::InvalidTop {
+            parameter: "theta_dot",
+            value: f64::NAN,
+            reason: "not finite",
+        });
+        assert!(e.to_string().starts_with("--theta-dot0: "), "{e}");
+        assert_eq!(option_name("i3"), "--i3");
+        assert_eq!(option_name("theta"), "--theta0");
+    }
+}

@@ -1,0 +1,8 @@
+//! Integration tests of `kreisel top`, run through the real binary: the
+//! report against the library's answers, the text format, the sleeping top,
+//! the SVG and PNG figures, and one-line errors for bad arguments.
+
+mod errors;
+mod plots;
+mod report;
+mod support;
