@@ -1,6 +1,6 @@
 //! # kreisel-dynamics
 //!
-//! The torque-free rigid body to machine precision:
+//! The torque-free rigid body and the heavy top to machine precision:
 //! - [`ExactSolution`] (method `exact`, the default `auto`): the exact
 //!   motion, attitude included — a uniform rotation for a sphere or a spin
 //!   about a principal axis, two commuting rotations for a symmetric body,
@@ -13,6 +13,11 @@
 //!   algorithm and its preprocessed versions of orders 4–10;
 //! - invariants, the principal-axis stability of notes §3.7 and the exact
 //!   flip period ([`axis_stability`], [`elliptic_motion`]);
+//! - the heavy top on a fixed pivot, any inertia tensor and centre of mass,
+//!   [`HeavyTop`]: the kick–free–kick splitting (exact free flow for a
+//!   symmetric top, PDMV10 otherwise) and its compositions to order 8 with
+//!   their stability limits, [`HeavyTopAuto`] (sub-stepped order 8, the
+//!   default) and RK4, behind [`HeavyTopIntegrator`];
 //! - the heavy symmetric (Lagrange) top in closed form, [`LagrangeTop`] →
 //!   [`LagrangeTopMotion`]: nutation by Jacobi's sn², precession and spin by
 //!   elliptic integrals of the third kind, turning points, nutation period,

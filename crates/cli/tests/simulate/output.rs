@@ -126,12 +126,23 @@ fn list_methods_names_every_registry_method_and_the_default() {
         "{}",
         run.stdout
     );
-    // The first line is a header, then one line per method and `auto`.
+    // The first line is a header, then one line per method and `auto`;
+    // then a blank line, a heading and one line per heavy-top method.
     let registry = kreisel_dynamics::METHODS
         .iter()
         .filter(|&&n| n != "auto")
         .count();
-    assert_eq!(lines.len(), 2 + registry, "{}", run.stdout);
+    let heavy = kreisel_dynamics::HEAVY_TOP_METHODS.len();
+    assert_eq!(lines.len(), 2 + registry + 2 + heavy, "{}", run.stdout);
+    let tail = &lines[2 + registry + 2..];
+    for (line, name) in tail.iter().zip(kreisel_dynamics::HEAVY_TOP_METHODS) {
+        let order = kreisel_dynamics::heavy_top_method(name)
+            .unwrap()
+            .order()
+            .to_string();
+        let fields: Vec<&str> = line.split_whitespace().collect();
+        assert_eq!(&fields[..2], &[name, order.as_str()], "{line}");
+    }
 }
 
 #[test]
