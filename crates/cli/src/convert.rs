@@ -142,6 +142,21 @@ fn open_input(path: Option<&Path>) -> Result<(Box<dyn BufRead>, Stream), CliErro
     }
 }
 
+/// Writes `text` to standard output and flushes it.
+///
+/// # Errors
+/// [`CliError::Write`] naming standard output.
+pub(crate) fn print_stdout(text: &str) -> Result<(), CliError> {
+    let mut stdout = io::stdout().lock();
+    stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+        .map_err(|source| CliError::Write {
+            output: Stream::Standard,
+            source,
+        })
+}
+
 /// Standard output, or the file at `path` (created or truncated), unless it
 /// is the input file (shared by the subcommands that write a stream).
 pub(crate) fn open_output(

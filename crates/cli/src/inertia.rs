@@ -19,7 +19,7 @@ use std::path::PathBuf;
 
 use kreisel_inertia::MassModel;
 
-use crate::error::{CliError, Stream, one_line};
+use crate::error::{CliError, one_line};
 
 pub use compute::{DensityChoice, Report, Setup, Summary, compute};
 
@@ -251,14 +251,7 @@ pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
         Format::Sdf => xml::sdf(&report),
         Format::Mjcf => xml::mjcf(&report),
     };
-    let mut stdout = std::io::stdout().lock();
-    stdout
-        .write_all(output.as_bytes())
-        .and_then(|()| stdout.flush())
-        .map_err(|source| CliError::Write {
-            output: Stream::Standard,
-            source,
-        })
+    crate::convert::print_stdout(&output)
 }
 
 #[cfg(test)]

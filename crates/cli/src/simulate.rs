@@ -166,9 +166,9 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         None => methods::integrator(name).map_err(|message| CliError::Method { message })?,
     };
     // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
-    let heavy = methods::heavy_top_integrator(name).map_err(|message| CliError::Method { message });
     let heavy = if scene.bodies.iter().any(|b| b.top.is_some()) {
-        Some(heavy?)
+        let found = methods::heavy_top_integrator(name);
+        Some(found.map_err(|message| CliError::Method { message })?)
     } else {
         None
     };

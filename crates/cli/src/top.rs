@@ -13,7 +13,6 @@
 mod figure;
 mod output;
 
-use std::io::Write;
 use std::path::PathBuf;
 
 use glam::DVec3;
@@ -21,7 +20,7 @@ use kreisel_dynamics::{
     DynamicsError, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, TopMotionKind,
 };
 
-use crate::error::{CliError, Stream};
+use crate::error::CliError;
 use crate::numbers::Shortest;
 use crate::plot::ImageFormat;
 
@@ -436,14 +435,7 @@ pub fn run(args: &TopArgs) -> Result<(), CliError> {
         Format::Text => output::text(&summary),
         Format::Json => output::json(&summary),
     };
-    let mut stdout = std::io::stdout().lock();
-    stdout
-        .write_all(text.as_bytes())
-        .and_then(|()| stdout.flush())
-        .map_err(|source| CliError::Write {
-            output: Stream::Standard,
-            source,
-        })
+    crate::convert::print_stdout(&text)
 }
 
 #[cfg(test)]
