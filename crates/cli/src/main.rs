@@ -11,7 +11,6 @@ mod convert;
 mod error;
 mod inertia;
 mod numbers;
-mod plot;
 mod representation;
 mod simulate;
 mod top;

@@ -19,10 +19,10 @@ use glam::DVec3;
 use kreisel_dynamics::{
     DynamicsError, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, TopMotionKind,
 };
+use kreisel_plot::ImageFormat;
 
 use crate::error::CliError;
 use crate::numbers::Shortest;
-use crate::plot::ImageFormat;
 
 /// The `--help` text of `kreisel top` after the option list.
 const AFTER_LONG_HELP: &str = "\

@@ -5,11 +5,11 @@
 //! motion was computed.
 
 use glam::DVec3;
+use kreisel_plot::axes::{Axes, Labels, TITLE_FONT};
+use kreisel_plot::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text};
+use kreisel_plot::sphere::{LocalView, SpherePanel, View, circle_of_latitude};
 
 use crate::numbers::Shortest;
-use crate::plot::axes::{Axes, Labels, TITLE_FONT};
-use crate::plot::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text};
-use crate::plot::sphere::{LocalView, SpherePanel, View, circle_of_latitude};
 
 /// Figure width, px.
 pub const WIDTH: u32 = 1280;
@@ -408,7 +408,7 @@ fn short(value: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::figure::Primitive;
+    use kreisel_plot::figure::Primitive;
 
     #[test]
     fn draws_both_panels() {

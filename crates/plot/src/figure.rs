@@ -2,7 +2,7 @@
 //!
 //! Coordinates are figure pixels: origin at the top-left corner, x to the
 //! right, y downwards. A [`Figure`] is drawn in order (later primitives on
-//! top) by [`super::svg`] or [`super::png`]; neither backend adds anything.
+//! top) by [`crate::svg`] or [`crate::png`]; neither backend adds anything.
 
 /// A colour with straight (not premultiplied) alpha, 8 bits per channel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -183,6 +183,21 @@ pub enum Primitive {
 }
 
 /// A figure: a size, a background and primitives drawn in order.
+///
+/// ```
+/// use kreisel_plot::Figure;
+/// use kreisel_plot::figure::{Anchor, Color, Point, Primitive, Stroke, Text};
+///
+/// let mut fig = Figure::new(200, 100);
+/// let red = Stroke::solid(Color::rgb(200, 0, 0), 1.5);
+/// fig.line(Point::new(10.0, 90.0), Point::new(190.0, 10.0), red.clone());
+/// fig.polyline(vec![Point::new(0.0, 0.0)], red); // one point: nothing to draw
+/// fig.circle(Point::new(100.0, 50.0), 4.0, Some(Color::BLACK), None);
+/// fig.text(Text::new(Point::new(100.0, 20.0), "y(t)", 14.0, Anchor::Middle));
+/// assert_eq!((fig.width, fig.height, fig.background), (200, 100, Color::WHITE));
+/// assert_eq!(fig.items.len(), 3);
+/// assert!(matches!(fig.items[2], Primitive::Text(_)));
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
     /// Width in pixels.
@@ -288,6 +303,19 @@ impl Rect {
 
 /// Cuts a polyline to the parts inside `rect` (Liang–Barsky on each
 /// segment): one polyline per run that stays inside.
+///
+/// ```
+/// use kreisel_plot::figure::{Point, Rect, clip_polyline};
+///
+/// let frame = Rect { left: 0.0, top: 0.0, width: 10.0, height: 10.0 };
+/// // In, out through the right edge, and back in.
+/// let line = [Point::new(5.0, 2.0), Point::new(15.0, 2.0), Point::new(15.0, 8.0), Point::new(5.0, 8.0)];
+/// let runs = clip_polyline(&line, frame);
+/// assert_eq!(runs, vec![
+///     vec![Point::new(5.0, 2.0), Point::new(10.0, 2.0)],
+///     vec![Point::new(10.0, 8.0), Point::new(5.0, 8.0)],
+/// ]);
+/// ```
 pub fn clip_polyline(points: &[Point], rect: Rect) -> Vec<Vec<Point>> {
     let mut runs: Vec<Vec<Point>> = Vec::new();
     let mut current: Vec<Point> = Vec::new();

@@ -5,9 +5,20 @@
 
 use core::fmt::Write;
 
-use super::figure::{Anchor, Color, Figure, Point, Primitive, Stroke};
+use crate::figure::{Anchor, Color, Figure, Point, Primitive, Stroke};
 
 /// The SVG document for `figure`, ending with a newline.
+///
+/// ```
+/// use kreisel_plot::Figure;
+/// use kreisel_plot::figure::{Anchor, Point, Text};
+///
+/// let mut fig = Figure::new(120, 40);
+/// fig.text(Text::new(Point::new(60.0, 25.0), "a < b", 14.0, Anchor::Middle));
+/// let svg = kreisel_plot::svg::render(&fig);
+/// assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
+/// assert!(svg.contains(">a &lt; b</text>"));
+/// ```
 pub fn render(figure: &Figure) -> String {
     let mut out = String::new();
     let (w, h) = (figure.width, figure.height);
@@ -144,7 +155,7 @@ fn escape(text: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plot::figure::Text;
+    use crate::figure::Text;
 
     #[test]
     fn writes_every_primitive() {

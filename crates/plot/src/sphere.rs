@@ -11,7 +11,7 @@
 
 use glam::DVec3;
 
-use super::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text, clip_polyline};
+use crate::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text, clip_polyline};
 
 /// An orthographic view direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -112,6 +112,32 @@ impl SpherePanel {
 
     /// Draws a path of points on (or near) the sphere: the stretches on the
     /// visible hemisphere with `stroke`, the hidden ones fainter and thinner.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_plot::Figure;
+    /// use kreisel_plot::figure::{Color, Point, Primitive, Stroke};
+    /// use kreisel_plot::sphere::{SpherePanel, View, circle_of_latitude};
+    ///
+    /// let panel = SpherePanel {
+    ///     center: Point::new(150.0, 150.0),
+    ///     radius: 100.0,
+    ///     view: View { elevation: 0.4, azimuth: 0.3 },
+    /// };
+    /// // The north pole is drawn straight above the centre, and seen.
+    /// let (pole, visible) = panel.pixel(DVec3::Z);
+    /// assert!(visible && pole.y < 150.0 && (pole.x - 150.0).abs() < 1e-9);
+    ///
+    /// let mut fig = Figure::new(300, 300);
+    /// let blue = Stroke::solid(Color::rgb(0, 0, 200), 2.0);
+    /// panel.path(&mut fig, &circle_of_latitude(1.0, 120), &blue);
+    /// // In stretches: opaque in front, faint behind.
+    /// let alphas: Vec<u8> = fig.items.iter().map(|item| match item {
+    ///     Primitive::Polyline { stroke, .. } => stroke.color.a,
+    ///     _ => unreachable!("a path is polylines"),
+    /// }).collect();
+    /// assert!(alphas.len() >= 2 && alphas.contains(&255) && alphas.iter().any(|&a| a < 255));
+    /// ```
     pub fn path(&self, fig: &mut Figure, points: &[DVec3], stroke: &Stroke) {
         let hidden = Stroke {
             color: stroke.color.with_alpha(HIDDEN_ALPHA),

@@ -2,7 +2,7 @@
 //! "nice" ticks (1, 2, 5 × 10ᵏ), grid lines, tick labels, axis labels and a
 //! title; curves are clipped to the frame.
 
-use super::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text, clip_polyline};
+use crate::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text, clip_polyline};
 
 /// Font size of tick labels, px.
 pub const TICK_FONT: f64 = 13.0;
@@ -15,6 +15,14 @@ pub const TITLE_FONT: f64 = 16.0;
 /// 1, 2 or 5 × 10ᵏ inside it, the step chosen as the smallest giving at
 /// most `target` intervals (at least 1). Empty for an empty, non-finite or
 /// degenerate interval.
+///
+/// ```
+/// use kreisel_plot::axes::{nice_step, nice_ticks};
+///
+/// assert_eq!(nice_ticks(-1.0, 1.25, 8), vec![-1.0, -0.5, 0.0, 0.5, 1.0]);
+/// assert_eq!(nice_step(-1.0, 1.25, 8), 0.5);
+/// assert!(nice_ticks(2.0, 2.0, 5).is_empty());
+/// ```
 pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> Vec<f64> {
     let step = nice_step(lo, hi, target);
     if step.is_nan() {
@@ -55,6 +63,14 @@ pub fn nice_step(lo: f64, hi: f64, target: usize) -> f64 {
 /// A tick label for `value` on an axis with tick spacing `step`: as many
 /// decimals as the step needs, exponent form for very large or small
 /// values, and a true minus sign (U+2212).
+///
+/// ```
+/// use kreisel_plot::axes::tick_label;
+///
+/// assert_eq!(tick_label(0.6000000000000001, 0.2), "0.6");
+/// assert_eq!(tick_label(-1.5, 0.5), "\u{2212}1.5");
+/// assert_eq!(tick_label(3e6, 1e6), "3e6");
+/// ```
 pub fn tick_label(value: f64, step: f64) -> String {
     if value == 0.0 {
         return "0".to_owned();
@@ -94,6 +110,19 @@ pub struct Axes {
 
 impl Axes {
     /// Figure pixels of the data point `(x, y)` (y grows upwards).
+    ///
+    /// ```
+    /// use kreisel_plot::axes::Axes;
+    /// use kreisel_plot::figure::{Point, Rect};
+    ///
+    /// let axes = Axes {
+    ///     frame: Rect { left: 10.0, top: 20.0, width: 100.0, height: 50.0 },
+    ///     x_range: (-1.0, 1.0),
+    ///     y_range: (0.0, 5.0),
+    /// };
+    /// assert_eq!(axes.pixel(-1.0, 0.0), Point::new(10.0, 70.0)); // bottom left
+    /// assert_eq!(axes.pixel(1.0, 5.0), Point::new(110.0, 20.0)); // top right
+    /// ```
     pub fn pixel(&self, x: f64, y: f64) -> Point {
         let (x0, x1) = self.x_range;
         let (y0, y1) = self.y_range;
