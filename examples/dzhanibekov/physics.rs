@@ -1,0 +1,353 @@
+//! The physics of the demo: the handle's mass properties from its mesh, the
+//! initial spin, the simulation (any registered free-body method, stepped
+//! like `kreisel simulate` steps it), the flips it shows and what theory
+//! predicts for them.
+//!
+//! Axes are numbered by size of moment, as in notes §3.7: 1 the minor,
+//! 2 the intermediate, 3 the major principal axis (`I₁ < I₂ < I₃`).
+
+use std::path::Path;
+
+use glam::{DQuat, DVec3};
+use kreisel::dynamics::{
+    AxisStability, EllipticMotion, FreeBodyIntegrator, PrincipalState, Propagator, RigidBody,
+    axis_stability, elliptic_motion,
+};
+use kreisel::inertia::io::load_bodies;
+use kreisel::inertia::{MassModel, MassProperties, Material, mesh_mass_properties};
+
+use super::DemoError;
+
+/// The principal axis the handle is spun about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum SpinAxis {
+    /// Axis 1, the smallest moment: stable.
+    Minor,
+    /// Axis 2, the intermediate moment: unstable, the handle flips.
+    Intermediate,
+    /// Axis 3, the largest moment: stable.
+    Major,
+}
+
+impl SpinAxis {
+    /// Index of the axis in the principal frame (moments sorted ascending).
+    pub fn index(self) -> usize {
+        match self {
+            Self::Minor => 0,
+            Self::Intermediate => 1,
+            Self::Major => 2,
+        }
+    }
+
+    /// The axis with principal index `index` (0, 1, 2).
+    pub fn from_index(index: usize) -> Option<Self> {
+        [Self::Minor, Self::Intermediate, Self::Major]
+            .get(index)
+            .copied()
+    }
+
+    /// The word for the axis in the printed lines.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Minor => "minor",
+            Self::Intermediate => "intermediate",
+            Self::Major => "major",
+        }
+    }
+}
+
+/// The handle: its triangles about the centre of mass, and its inertia.
+#[derive(Debug, Clone)]
+pub struct Handle {
+    /// The body's name in the mesh file.
+    pub name: String,
+    /// Vertices in body coordinates, relative to the centre of mass, m.
+    pub vertices_body: Vec<DVec3>,
+    /// Triangles (counter-clockwise seen from outside).
+    pub triangles: Vec<[u32; 3]>,
+    /// Mass, centre of mass (mesh coordinates) and inertia tensor.
+    pub properties: MassProperties,
+    /// Principal moments and frame.
+    pub body: RigidBody,
+}
+
+impl Handle {
+    /// Loads the first body of a closed mesh file and computes its mass
+    /// properties as a solid of the given density (kg/m³).
+    ///
+    /// # Errors
+    /// The mesh file's errors, an open mesh, a non-positive density, or an
+    /// inertia tensor that is not a rigid body's.
+    pub fn load(path: &Path, density: f64) -> Result<Self, DemoError> {
+        let body = load_bodies(path)?
+            .into_iter()
+            .next()
+            .ok_or_else(|| DemoError::EmptyMesh {
+                path: path.to_path_buf(),
+            })?;
+        let report = mesh_mass_properties(
+            body.mesh.clone(),
+            MassModel::Solid,
+            Material::Density(density),
+        )?;
+        let properties = report.properties;
+        let rigid = RigidBody::from_mass_properties(&properties)?;
+        let (vertices, triangles) = body.mesh.into_parts();
+        let com = properties.center_of_mass;
+        Ok(Self {
+            name: body.name,
+            vertices_body: vertices.into_iter().map(|v| v - com).collect(),
+            triangles,
+            properties,
+            body: rigid,
+        })
+    }
+
+    /// Principal moments `I₁ ≤ I₂ ≤ I₃`, kg·m².
+    pub fn moments(&self) -> DVec3 {
+        self.body.principal_moments()
+    }
+
+    /// Principal axis `index` as a unit vector in body (mesh) coordinates.
+    pub fn principal_axis_body(&self, index: usize) -> DVec3 {
+        self.body.body_from_principal() * DVec3::AXES[index]
+    }
+}
+
+/// How the handle is thrown: spin rate about one principal axis, and the
+/// angle by which ω is tilted off it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spin {
+    /// The axis spun about.
+    pub axis: SpinAxis,
+    /// |ω| at t = 0, rad/s.
+    pub rate: f64,
+    /// Angle between ω and the axis at t = 0, rad; ω is tilted toward the
+    /// next axis in the cycle minor → intermediate → major → minor.
+    pub perturbation: f64,
+}
+
+impl Spin {
+    /// ω at t = 0 in principal axes.
+    ///
+    /// ```text
+    /// ω = Ω (cos ε eₖ + sin ε eₖ₊₁)
+    /// ```
+    pub fn omega_principal(&self) -> DVec3 {
+        let k = self.axis.index();
+        let mut omega = [0.0; 3];
+        omega[k] = self.rate * self.perturbation.cos();
+        omega[(k + 1) % 3] = self.rate * self.perturbation.sin();
+        DVec3::from_array(omega)
+    }
+
+    /// The largest any component of ω can become during the motion, rad/s.
+    ///
+    /// ```text
+    /// |ωₖ| ≤ min(|L|/Iₖ, √(2E/Iₖ))
+    /// ```
+    pub fn omega_bound(&self, moments: DVec3) -> f64 {
+        let omega = self.omega_principal();
+        let l = (omega * moments).length();
+        let two_e = (omega * omega * moments).element_sum();
+        (0..3)
+            .map(|k| (l / moments[k]).min((two_e / moments[k]).sqrt()))
+            .fold(0.0, f64::max)
+    }
+
+    /// The state at t = 0: ω as above, attitude chosen so that the
+    /// (conserved) angular momentum points along world +z.
+    pub fn initial_state(&self, moments: DVec3) -> PrincipalState {
+        let l_principal = self.omega_principal() * moments;
+        PrincipalState {
+            world_from_principal: DQuat::from_rotation_arc(l_principal.normalize(), DVec3::Z),
+            l_principal,
+        }
+    }
+}
+
+/// What the theory of notes §3.7 and the exact solution predict.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Prediction {
+    /// Linear stability of the spin axis at the spin rate.
+    pub stability: AxisStability,
+    /// The exact elliptic motion (None only for a symmetric body or a
+    /// spin exactly along an axis).
+    pub motion: Option<EllipticMotion>,
+    /// Whether the spin-axis component of ω changes sign at all: the
+    /// angular momentum circulates about another axis.
+    pub flips: bool,
+}
+
+impl Prediction {
+    /// The prediction for `spin` of a body with sorted `moments`.
+    pub fn new(moments: DVec3, spin: &Spin) -> Self {
+        let motion = elliptic_motion(moments, spin.omega_principal() * moments);
+        Self {
+            stability: axis_stability(moments, spin.axis.index(), spin.rate),
+            flips: motion.is_some_and(|m| m.axis != spin.axis.index()),
+            motion,
+        }
+    }
+
+    /// Time between flips (sign changes of ω along the spin axis), s,
+    /// when the handle flips.
+    pub fn flip_period(&self) -> Option<f64> {
+        self.motion.filter(|_| self.flips).map(|m| m.half_period)
+    }
+}
+
+/// A running simulation: the state advanced by fixed steps of one
+/// registered method, the flips seen so far, and the drift of the
+/// invariants.
+pub struct Simulation<'a> {
+    method: &'a dyn FreeBodyIntegrator,
+    rigid: RigidBody,
+    moments: DVec3,
+    axis: usize,
+    dt: f64,
+    body: Box<dyn Propagator + 'a>,
+    previous: PrincipalState,
+    steps: u64,
+    energy0: f64,
+    l0: f64,
+    l_world0: DVec3,
+    /// Instants of the flips so far, s.
+    pub flips: Vec<f64>,
+    /// Largest |E − E₀|/E₀ so far.
+    pub energy_drift: f64,
+    /// Largest ||L| − |L₀||/|L₀| so far.
+    pub l_drift: f64,
+    /// Largest |L_world − L_world₀|/|L₀| so far (a fixed vector in space).
+    pub l_world_drift: f64,
+}
+
+impl<'a> Simulation<'a> {
+    /// Starts at t = 0 from `spin`.
+    pub fn new(method: &'a dyn FreeBodyIntegrator, rigid: RigidBody, spin: &Spin, dt: f64) -> Self {
+        let moments = rigid.principal_moments();
+        let state = spin.initial_state(moments);
+        Self {
+            method,
+            rigid,
+            moments,
+            axis: spin.axis.index(),
+            dt,
+            body: method.propagator(moments, state),
+            previous: state,
+            steps: 0,
+            energy0: state.energy(&rigid),
+            l0: state.l_principal.length(),
+            l_world0: state.l_world(),
+            flips: Vec::new(),
+            energy_drift: 0.0,
+            l_drift: 0.0,
+            l_world_drift: 0.0,
+        }
+    }
+
+    /// Simulated time, s.
+    pub fn time(&self) -> f64 {
+        self.steps as f64 * self.dt
+    }
+
+    /// Index of the spin axis (whose sign changes are the flips).
+    pub fn spin_axis(&self) -> usize {
+        self.axis
+    }
+
+    /// The time step, s.
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    /// The current state.
+    pub fn state(&self) -> PrincipalState {
+        self.body.state()
+    }
+
+    /// ω in principal axes now, rad/s.
+    pub fn omega_principal(&self) -> DVec3 {
+        self.state().l_principal / self.moments
+    }
+
+    /// Advances one step; records a flip when ω along the spin axis
+    /// changed sign during it.
+    pub fn step(&mut self) {
+        let t0 = self.time();
+        self.body.advance(self.dt);
+        self.steps += 1;
+        let now = self.body.state();
+        let (a, b) = (
+            self.previous.l_principal[self.axis],
+            now.l_principal[self.axis],
+        );
+        if (a < 0.0) != (b < 0.0) && a != 0.0 {
+            self.flips
+                .push(t0 + self.crossing(&self.previous, a / (a - b)));
+        }
+        self.previous = now;
+        let l = now.l_principal.length();
+        self.energy_drift = self
+            .energy_drift
+            .max((now.energy(&self.rigid) - self.energy0).abs() / self.energy0);
+        self.l_drift = self.l_drift.max((l - self.l0).abs() / self.l0);
+        self.l_world_drift = self
+            .l_world_drift
+            .max((now.l_world() - self.l_world0).length() / self.l0);
+    }
+
+    /// The time within the step from `start` at which L along the spin
+    /// axis vanishes (`fraction` of the step by linear interpolation of its
+    /// ends): Newton's method on `Lₖ(τ)`, each evaluation one step
+    /// of the same method of length τ from `start`, with `L̇ = L × ω`
+    /// (Euler's equations) as the derivative, safeguarded by bisection.
+    fn crossing(&self, start: &PrincipalState, fraction: f64) -> f64 {
+        let k = self.axis;
+        let at = |tau: f64| {
+            let mut s = *start;
+            if tau > 0.0 {
+                self.method.step(self.moments, &mut s, tau);
+            }
+            let l = s.l_principal;
+            (l[k], l.cross(l / self.moments)[k])
+        };
+        let f_start = start.l_principal[k];
+        let (mut lo, mut hi) = (0.0, self.dt);
+        // Start from the linear interpolation between the step's ends.
+        let mut tau = self.dt * fraction;
+        for _ in 0..60 {
+            let (f, df) = at(tau);
+            if f == 0.0 {
+                return tau;
+            }
+            if (f < 0.0) == (f_start < 0.0) {
+                lo = tau;
+            } else {
+                hi = tau;
+            }
+            let newton = tau - f / df;
+            let next = if newton > lo && newton < hi {
+                newton
+            } else {
+                0.5 * (lo + hi)
+            };
+            if (next - tau).abs() <= 1e-15 * self.dt.max(tau) || hi - lo <= 1e-15 * self.dt {
+                return next;
+            }
+            tau = next;
+        }
+        tau
+    }
+
+    /// The flip period measured so far: the mean time between successive
+    /// flips, when there have been at least two.
+    pub fn measured_flip_period(&self) -> Option<f64> {
+        match (self.flips.first(), self.flips.last()) {
+            (Some(first), Some(last)) if self.flips.len() >= 2 => {
+                Some((last - first) / (self.flips.len() - 1) as f64)
+            }
+            _ => None,
+        }
+    }
+}
