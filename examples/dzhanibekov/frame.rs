@@ -65,7 +65,7 @@ impl Overlay {
         let footer = live.map(|s| {
             lines.push(format!(
                 "speed {}×{}",
-                significant(s.speed, 3),
+                super::report::tidy(s.speed),
                 if s.paused { " · paused" } else { "" }
             ));
             "space pause · r restart · 1/2/3 axis · +/− speed · q quit".to_owned()

@@ -136,8 +136,62 @@ impl Controls {
     }
 }
 
+/// One run of the simulation, from a (re)start to the next.
+struct Run<'a> {
+    spin: Spin,
+    prediction: Prediction,
+    sim: Simulation<'a>,
+    strip: History,
+    next_sample: f64,
+}
+
+impl<'a> Run<'a> {
+    fn new(method: &'a dyn FreeBodyIntegrator, handle: &Handle, spin: Spin, dt: f64) -> Self {
+        let sim = Simulation::new(method, handle.body, &spin, dt);
+        let mut strip = History::new(Some(STRIP_WINDOW));
+        strip.push(0.0, sim.omega_principal());
+        Self {
+            spin,
+            prediction: Prediction::new(handle.moments(), &spin),
+            sim,
+            strip,
+            next_sample: STRIP_SAMPLE_INTERVAL,
+        }
+    }
+
+    /// Steps while at least one step of simulated time is owed.
+    fn advance(&mut self, owed: &mut f64) {
+        let dt = self.sim.dt();
+        while *owed >= dt {
+            self.sim.step();
+            *owed -= dt;
+            if self.sim.time() >= self.next_sample {
+                self.strip.push(self.sim.time(), self.sim.omega_principal());
+                self.next_sample += STRIP_SAMPLE_INTERVAL;
+            }
+        }
+    }
+
+    /// Prints what this run measured.
+    fn report(&self, method: &str, out: &mut dyn Write) -> Result<(), DemoError> {
+        for line in result_lines(
+            &self.sim,
+            &self.prediction,
+            &self.spin,
+            method,
+            self.sim.dt(),
+        ) {
+            writeln!(out, "{line}")?;
+        }
+        Ok(())
+    }
+}
+
 /// Runs the window until it is closed (or `--duration` of simulated time
 /// has passed), printing the results of each run (each restart ends one).
+///
+/// Keys are read once per displayed frame: minifb updates its key state in
+/// `update_with_buffer`, so every pass of the loop ends with one.
 ///
 /// # Errors
 /// [`DemoError::Stdout`] only: window failures end the run or fall back.
@@ -157,85 +211,127 @@ pub fn run(
         speed: options.speed,
         paused: false,
     };
-    let spin = options.spin();
+    let moments = handle.moments();
+    let bound = |spin: &Spin| spin.omega_bound(moments);
     let mut renderer = FrameRenderer::new(
         WIDTH,
         HEIGHT,
         handle,
-        spin.rate,
-        spin.omega_bound(handle.moments()),
+        controls.spin.rate,
+        bound(&controls.spin),
     );
-    'runs: loop {
-        let spin = controls.spin;
-        renderer.set_scales(spin.rate, spin.omega_bound(handle.moments()));
-        let prediction = Prediction::new(handle.moments(), &spin);
-        let mut sim = Simulation::new(method, handle.body, &spin, options.dt);
-        let mut strip = History::new(Some(STRIP_WINDOW));
-        strip.push(0.0, sim.omega_principal());
-        let mut next_sample = STRIP_SAMPLE_INTERVAL;
-        let mut owed = 0.0;
-        let mut last = Instant::now();
+    let mut run = Run::new(method, handle, controls.spin, options.dt);
+    let mut owed = 0.0;
+    let mut last = Instant::now();
+    while window.is_open() {
+        let mut restart = false;
         let mut quit = false;
-        loop {
-            if !window.is_open() {
-                quit = true;
-                break;
+        for key in window.get_keys_pressed(KeyRepeat::No) {
+            match controls.apply(key) {
+                Action::Restart => restart = true,
+                Action::Quit => quit = true,
+                Action::None => {}
             }
-            let mut restart = false;
-            for key in window.get_keys_pressed(KeyRepeat::No) {
-                match controls.apply(key) {
-                    Action::Restart => restart = true,
-                    Action::Quit => quit = true,
-                    Action::None => {}
-                }
-            }
-            if quit || restart {
-                break;
-            }
-            let now = Instant::now();
-            let wall = (now - last).as_secs_f64().min(MAX_FRAME_TIME);
-            last = now;
-            if !controls.paused {
-                owed += wall * controls.speed;
-                while owed >= options.dt {
-                    sim.step();
-                    owed -= options.dt;
-                    if sim.time() >= next_sample {
-                        strip.push(sim.time(), sim.omega_principal());
-                        next_sample += STRIP_SAMPLE_INTERVAL;
-                    }
-                }
-            }
-            if options.duration.is_some_and(|d| sim.time() >= d) {
-                quit = true;
-                break;
-            }
-            let status = LiveStatus {
-                speed: controls.speed,
-                paused: controls.paused,
-            };
-            let overlay = Overlay::of(&sim, &prediction, Some(status));
-            let image = renderer.draw(handle, &sim, &strip, &overlay);
-            if let Err(e) = window.update_with_buffer(&image.pixels, WIDTH, HEIGHT) {
-                writeln!(out, "window closed: {e}")?;
-                quit = true;
-                break;
-            }
-        }
-        for line in result_lines(&sim, &prediction, &spin, method.name(), options.dt) {
-            writeln!(out, "{line}")?;
         }
         if quit {
-            break 'runs;
+            break;
         }
-        // A restart: say what the new run is.
-        writeln!(out, "restart")?;
-        for line in setup_lines(handle, &options.mesh, options.density, &controls.spin)
-            .into_iter()
-            .skip(2)
-        {
-            writeln!(out, "{line}")?;
+        if restart {
+            run.report(method.name(), out)?;
+            writeln!(out, "restart")?;
+            for line in setup_lines(handle, &options.mesh, options.density, &controls.spin)
+                .into_iter()
+                .skip(2)
+            {
+                writeln!(out, "{line}")?;
+            }
+            run = Run::new(method, handle, controls.spin, options.dt);
+            renderer.set_scales(controls.spin.rate, bound(&controls.spin));
+            owed = 0.0;
+        }
+        let now = Instant::now();
+        let wall = (now - last).as_secs_f64().min(MAX_FRAME_TIME);
+        last = now;
+        if !controls.paused {
+            owed += wall * controls.speed;
+            run.advance(&mut owed);
+        }
+        if options.duration.is_some_and(|d| run.sim.time() >= d) {
+            break;
+        }
+        let status = LiveStatus {
+            speed: controls.speed,
+            paused: controls.paused,
+        };
+        let overlay = Overlay::of(&run.sim, &run.prediction, Some(status));
+        let image = renderer.draw(handle, &run.sim, &run.strip, &overlay);
+        if let Err(e) = window.update_with_buffer(&image.pixels, WIDTH, HEIGHT) {
+            writeln!(out, "window closed: {e}")?;
+            break;
         }
     }
+    run.report(method.name(), out)?;
     Ok(Outcome::Closed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn controls() -> Controls {
+        Controls {
+            spin: Spin {
+                axis: SpinAxis::Intermediate,
+                rate: 1.0,
+                perturbation: 0.1,
+            },
+            speed: 1.0,
+            paused: false,
+        }
+    }
+
+    #[test]
+    fn keys_change_what_they_say() {
+        let mut c = controls();
+        assert!(matches!(c.apply(Key::Space), Action::None) && c.paused);
+        assert!(matches!(c.apply(Key::Space), Action::None) && !c.paused);
+        assert!(matches!(c.apply(Key::Key3), Action::Restart));
+        assert_eq!(c.spin.axis, SpinAxis::Major);
+        assert!(matches!(c.apply(Key::NumPad1), Action::Restart));
+        assert_eq!(c.spin.axis, SpinAxis::Minor);
+        assert!(matches!(c.apply(Key::R), Action::Restart));
+        assert_eq!(c.spin.axis, SpinAxis::Minor);
+        c.apply(Key::Equal);
+        c.apply(Key::NumPadPlus);
+        assert_eq!(c.speed, 4.0);
+        for _ in 0..20 {
+            c.apply(Key::Minus);
+        }
+        assert_eq!(c.speed, SPEEDS.0);
+        assert!(matches!(c.apply(Key::Escape), Action::Quit));
+        assert!(matches!(c.apply(Key::Q), Action::Quit));
+        assert!(matches!(c.apply(Key::X), Action::None));
+        assert_eq!(c.spin.rate, 1.0);
+    }
+
+    #[test]
+    fn displays_are_checked_before_minifb_is_asked() {
+        assert!(display_available(None).is_err());
+        assert!(display_available(Some(OsStr::new(""))).is_err());
+        assert!(display_available(Some(OsStr::new("nonsense"))).is_err());
+        assert!(display_available(Some(OsStr::new(":x"))).is_err());
+        // A TCP display answers while something listens on 6000 + n.
+        let (n, listener) = (40..200u16)
+            .find_map(|n| {
+                std::net::TcpListener::bind(("127.0.0.1", 6000 + n))
+                    .ok()
+                    .map(|l| (n, l))
+            })
+            .expect("a free port");
+        let name = format!("127.0.0.1:{n}.0");
+        assert_eq!(display_available(Some(OsStr::new(&name))), Ok(()));
+        drop(listener);
+        let refused = display_available(Some(OsStr::new(&name))).unwrap_err();
+        assert!(refused.contains("no X server answers"), "{refused}");
+    }
 }
