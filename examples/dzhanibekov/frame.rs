@@ -58,7 +58,11 @@ impl Overlay {
                     significant(y, 6),
                     significant(x, 6)
                 ),
-                (Some(x), None) => format!("{flips} flips (theory: every {} s)", significant(x, 6)),
+                (Some(x), None) => format!(
+                    "{flips} flip{} (theory: every {} s)",
+                    if flips == 1 { "" } else { "s" },
+                    significant(x, 6)
+                ),
                 (None, _) => format!("{flips} flips (stable axis: none expected)"),
             },
         );
@@ -102,8 +106,8 @@ impl FrameRenderer {
         let (el, az) = (ELEVATION_DEG.to_radians(), AZIMUTH_DEG.to_radians());
         let eye = DVec3::new(el.cos() * az.cos(), el.cos() * az.sin(), el.sin());
         let distance = 8.0 * radius;
-        // The handle's reach (1.6 r with the arrows) fills 85 % of the half height.
-        let focal = 0.85 * 0.5 * height as f64 * (distance - 1.6 * radius) / (1.6 * radius);
+        // The reach of the labels (1.5 r) fills 95 % of the half height.
+        let focal = 0.95 * 0.5 * height as f64 * (distance - 1.5 * radius) / (1.5 * radius);
         let camera = Camera::looking_at_origin(eye, DVec3::Z, distance, focal, panel.center());
         Self {
             image: Image::new(width, height, BACKGROUND),
@@ -227,7 +231,7 @@ impl FrameRenderer {
         let mut labels = Vec::new();
         for (k, color) in AXIS_COLORS.iter().enumerate() {
             let axis = state.world_from_principal * DVec3::AXES[k];
-            let tip = 1.3 * r * axis;
+            let tip = 1.15 * r * axis;
             self.renderer.draw_line(
                 &mut self.image,
                 &self.camera,
@@ -236,9 +240,9 @@ impl FrameRenderer {
                 width,
                 to_u32(*color),
             );
-            labels.push((1.42 * r * axis, ["1", "2", "3"][k], *color));
+            labels.push((1.27 * r * axis, ["1", "2", "3"][k], *color));
         }
-        let l_tip = 1.55 * r * DVec3::Z;
+        let l_tip = 1.35 * r * DVec3::Z;
         self.renderer.draw_arrow(
             &mut self.image,
             &self.camera,
@@ -248,9 +252,9 @@ impl FrameRenderer {
             9.0 * scale.max(0.75),
             to_u32(L_COLOR),
         );
-        labels.push((1.7 * r * DVec3::Z, "L", L_COLOR));
+        labels.push((1.48 * r * DVec3::Z, "L", L_COLOR));
         let omega_world = state.world_from_principal * sim.omega_principal();
-        let omega_tip = 1.2 * r * omega_world / self.omega_reference;
+        let omega_tip = 1.1 * r * omega_world / self.omega_reference;
         self.renderer.draw_arrow(
             &mut self.image,
             &self.camera,

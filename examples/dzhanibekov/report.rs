@@ -51,7 +51,10 @@ pub fn setup_lines(handle: &Handle, mesh: &Path, density: f64, spin: &Spin) -> V
         format!(
             "body: {} from {}, solid of {} kg/m³: mass {} kg, centre of mass ({}, {}, {}) m",
             handle.name,
-            mesh.display(),
+            // The default mesh as the repository names it.
+            mesh.strip_prefix(env!("CARGO_MANIFEST_DIR"))
+                .unwrap_or(mesh)
+                .display(),
             density,
             significant(p.mass, 6),
             tidy(c.x),
