@@ -208,11 +208,34 @@ fn bad_input_is_one_line_of_error() {
         ),
         (vec!["--spin-axis", "diagonal"], "diagonal"),
         (vec!["--frobnicate"], "--frobnicate"),
+        (
+            vec!["--gif", "no/such/dir/flip.gif"],
+            "no/such/dir/flip.gif: no directory no/such/dir",
+        ),
     ] {
         let mut full = vec!["--headless", "--duration", "0.1"];
         full.extend(args.iter().copied());
+        assert!(!jpg.exists());
         let message = run(&full, None).expect_err("refused");
         assert!(message.contains(expected), "{args:?}: {message}");
         assert!(!message.contains('\n'), "{args:?}: {message}");
     }
+    // A GIF too large for memory is refused before the run.
+    let gif = dir.join("long.gif");
+    let message = run(
+        &[
+            "--headless",
+            "--duration",
+            "1000",
+            "--gif",
+            gif.to_str().unwrap(),
+        ],
+        None,
+    )
+    .expect_err("refused");
+    assert!(
+        message.starts_with("the GIF would have 15001 frames of 640 x 320 pixels"),
+        "{message}"
+    );
+    assert!(!gif.exists());
 }

@@ -14,6 +14,10 @@ use super::physics::{Handle, Prediction, Simulation};
 use super::report::{result_lines, significant};
 use super::{DemoError, gif_out};
 
+/// The most pixels the GIF's frames may hold together (they are kept in
+/// memory, 4 bytes each, until the palette is built from all of them).
+const GIF_PIXELS: u64 = 150_000_000;
+
 /// Samples of ω kept for the `--plot` chart (at most).
 const PLOT_SAMPLES: u64 = 20_000;
 
@@ -37,7 +41,23 @@ pub fn run(
         ),
         None => None,
     };
+    // Refuse outputs that cannot be written before spending the run on them.
+    for path in options.gif.iter().chain(&options.plot) {
+        check_directory(path)?;
+    }
     let duration = options.duration.unwrap_or(HEADLESS_DURATION);
+    if options.gif.is_some() {
+        let frames = (duration * options.fps) as u64 + 1;
+        let (width, height) = (options.gif_width, options.gif_width / 2);
+        if frames.saturating_mul(u64::from(width) * u64::from(height)) > GIF_PIXELS {
+            return Err(DemoError::GifTooLarge {
+                frames,
+                width,
+                height,
+                limit: GIF_PIXELS,
+            });
+        }
+    }
     let spin = options.spin();
     let prediction = Prediction::new(handle.moments(), &spin);
     let mut sim = Simulation::new(method, handle.body, &spin, options.dt);
@@ -95,6 +115,25 @@ pub fn run(
         writeln!(out, "wrote {}", path.display())?;
     }
     Ok(())
+}
+
+/// Fails unless the directory `path` is to be written in exists.
+fn check_directory(path: &Path) -> Result<(), DemoError> {
+    let dir = match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    if dir.is_dir() {
+        Ok(())
+    } else {
+        Err(DemoError::Write {
+            path: path.to_path_buf(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                format!("no directory {}", dir.display()),
+            ),
+        })
+    }
 }
 
 /// Writes `bytes` to `path`.

@@ -47,7 +47,7 @@ pub mod render;
 pub mod report;
 
 use options::Options;
-use physics::{Handle, Prediction};
+use physics::Handle;
 
 /// Why the demo stopped.
 #[derive(Debug, thiserror::Error)]
@@ -95,6 +95,21 @@ pub enum DemoError {
         path: PathBuf,
         /// What went wrong.
         source: std::io::Error,
+    },
+    /// The GIF would not fit in memory.
+    #[error(
+        "the GIF would have {frames} frames of {width} x {height} pixels, more than {limit} \
+         pixels in all: shorten --duration or lower --fps or --gif-width"
+    )]
+    GifTooLarge {
+        /// Frames asked for.
+        frames: u64,
+        /// Frame width.
+        width: u32,
+        /// Frame height.
+        height: u32,
+        /// The most pixels of all frames together.
+        limit: u64,
     },
     /// `--plot` names a format other than PNG or SVG.
     #[error("{path}: the plot is written as .png or .svg")]
@@ -150,11 +165,6 @@ where
         }
     }
     headless::run(&options, &handle, method.as_ref(), out)
-}
-
-/// The prediction for the options' spin of `handle`.
-pub fn prediction(options: &Options, handle: &Handle) -> Prediction {
-    Prediction::new(handle.moments(), &options.spin())
 }
 
 fn main() -> ExitCode {
