@@ -18,6 +18,8 @@ struct Reference {
     perturbation: String,
     half_period: f64,
     growth_rate: f64,
+    /// The first flip, from mpmath's ODE solver (not the elliptic formula).
+    first_flip: f64,
 }
 
 fn reference(name: &str) -> Reference {
@@ -34,6 +36,7 @@ fn reference(name: &str) -> Reference {
         perturbation: row[3].to_owned(),
         half_period: row[5].parse().unwrap(),
         growth_rate: row[6].parse().unwrap(),
+        first_flip: row[7].parse().unwrap_or(f64::NAN),
     }
 }
 
@@ -44,6 +47,16 @@ fn run(args: &[&str], display: Option<&str>) -> Result<String, String> {
     let mut out = Vec::new();
     demo::run(argv, display.map(OsString::from), &mut out).map_err(|e| e.to_string())?;
     Ok(String::from_utf8(out).expect("UTF-8 output"))
+}
+
+/// The instant of the first flip, from the `flip period:` line.
+fn first_flip(output: &str) -> f64 {
+    let line = output
+        .lines()
+        .find(|l| l.starts_with("flip period: "))
+        .expect("flip period line");
+    let (_, rest) = line.split_once("the first at ").expect("format");
+    rest.trim_end_matches(" s)").parse().unwrap()
 }
 
 /// The (predicted, simulated) values of the `flip period:` line.
@@ -99,6 +112,12 @@ fn headless_run_writes_the_gif_the_plot_and_the_flip_period() {
         (predicted - reference.half_period).abs() <= 1e-9 * reference.half_period,
         "{predicted} vs mpmath {}",
         reference.half_period
+    );
+    let first = first_flip(&out);
+    assert!(
+        (first - reference.first_flip).abs() <= 1e-9,
+        "first flip at {first} s, mpmath's ODE solver {}",
+        reference.first_flip
     );
     assert!(out.contains(&format!(
         "λ = Ω √((I₂−I₁)(I₃−I₂)/(I₁I₃)) = {} 1/s",
@@ -164,6 +183,12 @@ fn integrators_time_the_flips_to_the_reference() {
             r.half_period
         );
         assert!((predicted - r.half_period).abs() <= 1e-9 * r.half_period);
+        let first = first_flip(&out);
+        assert!(
+            (first - r.first_flip).abs() <= 1e-6 * r.first_flip,
+            "{method}: first flip {first} vs {}",
+            r.first_flip
+        );
     }
 }
 

@@ -351,3 +351,87 @@ impl<'a> Simulation<'a> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kreisel::dynamics::method;
+
+    fn handle() -> Handle {
+        Handle::load(Path::new(super::super::options::DEFAULT_MESH), 7850.0).unwrap()
+    }
+
+    #[test]
+    fn the_handle_is_the_asset_in_steel() {
+        let h = handle();
+        // assets/README.md: 0.1297 kg, (3.698e-05, 8.412e-05, 4.997e-05) kg·m² along x, y, z.
+        assert!((h.properties.mass - 1.652e-5 * 7850.0).abs() < 1e-15);
+        let m = h.moments();
+        for (got, want) in [(m.x, 3.698e-5), (m.y, 4.997e-5), (m.z, 8.412e-5)] {
+            assert!((got / want - 1.0).abs() < 2e-4, "{got} vs {want}");
+        }
+        // The intermediate axis is the stem (mesh z), the vertices are about the centre of mass.
+        assert!(h.principal_axis_body(1).z.abs() > 1.0 - 1e-12);
+        let mean = h.vertices_body.iter().sum::<DVec3>() / h.vertices_body.len() as f64;
+        assert!(mean.x.abs() < 1e-12 && mean.y.abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_spin_is_what_the_options_say() {
+        let moments = handle().moments();
+        for axis in [SpinAxis::Minor, SpinAxis::Intermediate, SpinAxis::Major] {
+            let spin = Spin {
+                axis,
+                rate: 5.0,
+                perturbation: 0.1,
+            };
+            let omega = spin.omega_principal();
+            assert!((omega.length() - 5.0).abs() < 1e-14);
+            let e = DVec3::AXES[axis.index()];
+            assert!((omega.angle_between(e) - 0.1).abs() < 1e-14);
+            let s = spin.initial_state(moments);
+            let l_world = s.l_world();
+            assert!(l_world.normalize().dot(DVec3::Z) > 1.0 - 1e-15);
+            assert!(
+                (l_world.length() - (omega * moments).length()).abs() < 1e-15 * l_world.length()
+            );
+            let prediction = Prediction::new(moments, &spin);
+            assert_eq!(prediction.flips, axis == SpinAxis::Intermediate);
+            assert_eq!(
+                prediction.flip_period().is_some(),
+                axis == SpinAxis::Intermediate
+            );
+        }
+    }
+
+    #[test]
+    fn omega_stays_within_its_bound_and_flips_are_sign_changes() {
+        let h = handle();
+        let spin = Spin {
+            axis: SpinAxis::Intermediate,
+            rate: 6.0,
+            perturbation: 0.05,
+        };
+        let bound = spin.omega_bound(h.moments());
+        let exact = method("exact").unwrap();
+        let mut sim = Simulation::new(exact.as_ref(), h.body, &spin, 1e-2);
+        let mut largest: f64 = 0.0;
+        let mut sign = sim.omega_principal().y.signum();
+        let mut changes = 0;
+        while sim.time() < 10.0 {
+            sim.step();
+            let omega = sim.omega_principal();
+            largest = largest.max(omega.abs().max_element());
+            if omega.y.signum() != sign {
+                sign = omega.y.signum();
+                changes += 1;
+            }
+        }
+        assert!(largest <= bound * (1.0 + 1e-12), "{largest} > {bound}");
+        // Not a loose bound: the chart scaled by it is mostly used.
+        assert!(largest > 0.8 * bound, "{largest} vs {bound}");
+        assert_eq!(sim.flips.len(), changes);
+        assert!(sim.flips.windows(2).all(|w| w[1] > w[0]));
+        assert!(sim.energy_drift < 1e-13 && sim.l_drift < 1e-13);
+    }
+}

@@ -89,12 +89,14 @@ pub fn result_lines(
     let n = sim.flips.len();
     let flip = match (prediction.flip_period(), sim.measured_flip_period()) {
         (Some(x), Some(y)) => format!(
-            "flip period: predicted {} s, simulated {} s (relative difference {}, {} flips in {} s)",
+            "flip period: predicted {} s, simulated {} s (relative difference {}, {} flips in {} s, \
+             the first at {} s)",
             significant(x, 10),
             significant(y, 10),
             relative((y - x).abs() / x),
             n,
-            tidy(t)
+            tidy(t),
+            significant(sim.flips.first().copied().unwrap_or(f64::NAN), 10)
         ),
         (Some(x), None) => format!(
             "flip period: predicted {} s, simulated: {} flip{} in {} s, too few to time \
