@@ -142,20 +142,12 @@ impl Renderer {
 
 #[cfg(test)]
 mod tests {
-    use glam::DQuat;
-
-    use super::super::test_util::{BG, flat, screen_camera, sp};
-    use super::super::{ClipRect, Light};
+    use super::super::test_util::*;
     use super::*;
 
     #[test]
     fn line_behind_triangle_hidden_in_front_visible() {
-        let cam = Camera {
-            view_from_world: DQuat::IDENTITY,
-            distance: 10.0,
-            focal_px: 30.0,
-            center_px: (32.0, 32.0),
-        };
+        let cam = centred_camera();
         let tri = [
             DVec3::new(-1.0, -1.0, 0.0),
             DVec3::new(1.0, -1.0, 0.0),
@@ -163,17 +155,8 @@ mod tests {
         ];
         let (grey, red) = (0x0080_8080, 0x00FF_0000);
         for (z, expect_line) in [(-1.0, false), (1.0, true), (0.0, true)] {
-            let mut img = Image::new(64, 64, BG);
-            let mut r = Renderer::new(64, 64);
-            r.begin(ClipRect::full(64, 64));
-            r.draw_mesh(
-                &mut img,
-                &cam,
-                &tri,
-                &[[0, 1, 2]],
-                flat(grey),
-                &Light::default(),
-            );
+            let (mut img, mut r) = canvas();
+            draw_flat(&mut r, &mut img, &cam, &tri, grey);
             let (a, b) = (DVec3::new(-3.0, -0.2, z), DVec3::new(3.0, -0.2, z));
             r.draw_line(&mut img, &cam, a, b, 3.0, red);
             let (cx, cy) = cam.screen_position(DVec3::new(0.0, -0.2, z)).unwrap();
@@ -191,9 +174,7 @@ mod tests {
     #[test]
     fn arrow_has_head_at_tip() {
         let cam = screen_camera();
-        let mut img = Image::new(64, 64, BG);
-        let mut r = Renderer::new(64, 64);
-        r.begin(ClipRect::full(64, 64));
+        let (mut img, mut r) = canvas();
         let red = 0x00FF_0000;
         r.draw_arrow(
             &mut img,

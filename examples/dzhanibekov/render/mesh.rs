@@ -93,25 +93,15 @@ impl Renderer {
 mod tests {
     use glam::DQuat;
 
-    use super::super::ClipRect;
-    use super::super::test_util::{BG, WHITE, flat, hit_counts, screen_camera, sp};
+    use super::super::test_util::*;
     use super::*;
 
     #[test]
     fn front_triangle_covers_centroid_only() {
         let cam = screen_camera();
         let verts = [sp(20.0, 40.0), sp(40.0, 40.0), sp(30.0, 20.0)];
-        let mut img = Image::new(64, 64, BG);
-        let mut r = Renderer::new(64, 64);
-        r.begin(ClipRect::full(64, 64));
-        r.draw_mesh(
-            &mut img,
-            &cam,
-            &verts,
-            &[[0, 1, 2]],
-            flat(WHITE),
-            &Light::default(),
-        );
+        let (mut img, mut r) = canvas();
+        draw_flat(&mut r, &mut img, &cam, &verts, WHITE);
         // Centroid (30, 33.3) → pixel (30, 33).
         assert_eq!(img.pixel(30, 33), Some(WHITE));
         assert_eq!(img.pixel(5, 5), Some(BG));
@@ -125,28 +115,14 @@ mod tests {
     fn back_facing_triangle_is_culled() {
         let cam = screen_camera();
         let verts = [sp(20.0, 40.0), sp(30.0, 20.0), sp(40.0, 40.0)];
-        let mut img = Image::new(64, 64, BG);
-        let mut r = Renderer::new(64, 64);
-        r.begin(ClipRect::full(64, 64));
-        r.draw_mesh(
-            &mut img,
-            &cam,
-            &verts,
-            &[[0, 1, 2]],
-            flat(WHITE),
-            &Light::default(),
-        );
+        let (mut img, mut r) = canvas();
+        draw_flat(&mut r, &mut img, &cam, &verts, WHITE);
         assert!(img.pixels.iter().all(|&p| p == BG));
     }
 
     #[test]
     fn nearer_triangle_wins_in_either_order() {
-        let cam = Camera {
-            view_from_world: DQuat::IDENTITY,
-            distance: 10.0,
-            focal_px: 30.0,
-            center_px: (32.0, 32.0),
-        };
+        let cam = centred_camera();
         let tri = |z: f64| {
             [
                 DVec3::new(-1.0, -1.0, z),
@@ -156,18 +132,9 @@ mod tests {
         };
         let (red, green) = (0x00FF_0000, 0x0000_FF00);
         for near_first in [false, true] {
-            let mut img = Image::new(64, 64, BG);
-            let mut r = Renderer::new(64, 64);
-            r.begin(ClipRect::full(64, 64));
+            let (mut img, mut r) = canvas();
             let mut draw = |z: f64, color: u32| {
-                r.draw_mesh(
-                    &mut img,
-                    &cam,
-                    &tri(z),
-                    &[[0, 1, 2]],
-                    flat(color),
-                    &Light::default(),
-                );
+                draw_flat(&mut r, &mut img, &cam, &tri(z), color);
             };
             if near_first {
                 draw(1.0, green);
@@ -182,12 +149,7 @@ mod tests {
 
     #[test]
     fn triangle_crossing_near_plane_is_clipped() {
-        let cam = Camera {
-            view_from_world: DQuat::IDENTITY,
-            distance: 10.0,
-            focal_px: 30.0,
-            center_px: (32.0, 32.0),
-        };
+        let cam = centred_camera();
         // One vertex far behind the eye; the visible part fans out hugely.
         let verts = [
             DVec3::new(-10.0, -1.0, 0.0),
@@ -196,9 +158,7 @@ mod tests {
         ];
         let mut drawn = Vec::new();
         for tri in [[0, 1, 2], [0, 2, 1]] {
-            let mut img = Image::new(64, 64, BG);
-            let mut r = Renderer::new(64, 64);
-            r.begin(ClipRect::full(64, 64));
+            let (mut img, mut r) = canvas();
             r.draw_mesh(
                 &mut img,
                 &cam,

@@ -119,7 +119,7 @@ impl Renderer {
 mod tests {
     use glam::DQuat;
 
-    use super::super::test_util::{BG, WHITE, flat, screen_camera, sp};
+    use super::super::test_util::*;
     use super::super::{Light, Material};
     use super::*;
 
@@ -128,26 +128,10 @@ mod tests {
         let cam = screen_camera();
         let near = [sp(10.0, 50.0), sp(50.0, 50.0), sp(30.0, 10.0)].map(|p| p + DVec3::Z);
         let far = [sp(10.0, 50.0), sp(50.0, 50.0), sp(30.0, 10.0)];
-        let mut img = Image::new(64, 64, BG);
-        let mut r = Renderer::new(64, 64);
+        let (mut img, mut r) = canvas();
+        draw_flat(&mut r, &mut img, &cam, &near, WHITE);
         r.begin(ClipRect::full(64, 64));
-        r.draw_mesh(
-            &mut img,
-            &cam,
-            &near,
-            &[[0, 1, 2]],
-            flat(WHITE),
-            &Light::default(),
-        );
-        r.begin(ClipRect::full(64, 64));
-        r.draw_mesh(
-            &mut img,
-            &cam,
-            &far,
-            &[[0, 1, 2]],
-            flat(0x0000_00FF),
-            &Light::default(),
-        );
+        draw_flat(&mut r, &mut img, &cam, &far, 0x0000_00FF);
         assert_eq!(img.pixel(30, 40), Some(0x0000_00FF));
     }
 
@@ -168,14 +152,7 @@ mod tests {
             DVec3::new(50.0, -50.0, 0.0),
             DVec3::new(0.0, 50.0, 0.0),
         ];
-        r.draw_mesh(
-            &mut img,
-            &cam,
-            &big,
-            &[[0, 1, 2]],
-            flat(WHITE),
-            &Light::default(),
-        );
+        draw_flat(&mut r, &mut img, &cam, &big, WHITE);
         let red = 0x00FF_0000;
         r.draw_line(
             &mut img,
@@ -228,9 +205,7 @@ mod tests {
             [0, 1, 8],        // infinite vertex
             [u32::MAX, 0, 1], // index out of range
         ];
-        let mut img = Image::new(64, 64, BG);
-        let mut r = Renderer::new(64, 64);
-        r.begin(ClipRect::full(64, 64));
+        let (mut img, mut r) = canvas();
         r.draw_mesh(
             &mut img,
             &cam,

@@ -73,8 +73,8 @@ pub(super) fn shade(material: &Material, light: &Light, normal: DVec3, to_eye: D
 mod tests {
     use glam::DQuat;
 
-    use super::super::test_util::{BG, WHITE};
-    use super::super::{Camera, ClipRect, Image, Renderer};
+    use super::super::Camera;
+    use super::super::test_util::*;
     use super::*;
 
     fn luminance(c: u32) -> u32 {
@@ -108,9 +108,7 @@ mod tests {
             ..Material::default()
         };
         for m in [Material::default(), no_spec] {
-            let mut img = Image::new(64, 64, BG);
-            let mut r = Renderer::new(64, 64);
-            r.begin(ClipRect::full(64, 64));
+            let (mut img, mut r) = canvas();
             r.draw_mesh(&mut img, &cam, &place(0.7, -1.5), &[[0, 1, 2]], m, &light);
             r.draw_mesh(&mut img, &cam, &place(-0.7, 1.5), &[[0, 1, 2]], m, &light);
             let toward = img.pixel(29, 32).unwrap();

@@ -17,6 +17,42 @@ pub(super) fn screen_camera() -> Camera {
     }
 }
 
+/// Camera on the +z axis, 10 m from the origin, 30 px focal length,
+/// centred on a 64×64 image.
+pub(super) fn centred_camera() -> Camera {
+    Camera {
+        view_from_world: DQuat::IDENTITY,
+        distance: 10.0,
+        focal_px: 30.0,
+        center_px: (32.0, 32.0),
+    }
+}
+
+/// A 64×64 image of `BG` and a renderer clipped to all of it.
+pub(super) fn canvas() -> (Image, Renderer) {
+    let mut r = Renderer::new(64, 64);
+    r.begin(ClipRect::full(64, 64));
+    (Image::new(64, 64, BG), r)
+}
+
+/// Draws the triangle `verts[0..3]` in flat `color` under the default light.
+pub(super) fn draw_flat(
+    r: &mut Renderer,
+    img: &mut Image,
+    camera: &Camera,
+    verts: &[DVec3],
+    color: u32,
+) {
+    r.draw_mesh(
+        img,
+        camera,
+        verts,
+        &[[0, 1, 2]],
+        flat(color),
+        &Light::default(),
+    );
+}
+
 /// World point (on the plane z = 0) that `screen_camera` maps to `(x, y)`.
 pub(super) fn sp(x: f64, y: f64) -> DVec3 {
     DVec3::new(x, -y, 0.0)
