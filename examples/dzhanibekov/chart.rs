@@ -95,18 +95,13 @@ fn draw_omega(fig: &mut Figure, axes: &Axes, data: &OmegaData<'_>, font: f64) {
     let f = axes.frame;
     // A translucent box under the legend, so the curves do not cross its text
     // ("ω₂ (intermediate)", the longest line, is about 8.5 em wide).
-    let (right, top) = (f.right() - 0.15 * font, f.top + 0.2 * font);
-    let (left, bottom) = (right - 8.9 * font, top + 5.3 * font);
-    fig.polygon(
-        vec![
-            Point::new(left, top),
-            Point::new(right, top),
-            Point::new(right, bottom),
-            Point::new(left, bottom),
-        ],
-        Color::WHITE.with_alpha(215),
-        None,
-    );
+    let legend = Rect {
+        left: f.right() - 9.05 * font,
+        top: f.top + 0.2 * font,
+        width: 8.9 * font,
+        height: 5.3 * font,
+    };
+    fig.polygon(legend.corners(), Color::WHITE.with_alpha(215), None);
     for (k, color) in AXIS_COLORS.iter().enumerate() {
         let subscript = ['₁', '₂', '₃'][k];
         fig.text(

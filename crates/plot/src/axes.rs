@@ -135,16 +135,7 @@ impl Axes {
     /// Fills the frame with `color` (e.g. white under an inset).
     pub fn fill_frame(&self, fig: &mut Figure, color: Color) {
         let f = self.frame;
-        fig.polygon(
-            vec![
-                Point::new(f.left, f.top),
-                Point::new(f.right(), f.top),
-                Point::new(f.right(), f.bottom()),
-                Point::new(f.left, f.bottom()),
-            ],
-            color,
-            None,
-        );
+        fig.polygon(f.corners(), color, None);
     }
 
     /// Draws the frame, grid, ticks, tick labels, axis labels and title.
@@ -193,12 +184,7 @@ impl Axes {
             ));
         }
         fig.polygon(
-            vec![
-                Point::new(f.left, f.top),
-                Point::new(f.right(), f.top),
-                Point::new(f.right(), f.bottom()),
-                Point::new(f.left, f.bottom()),
-            ],
+            f.corners(),
             Color::WHITE.with_alpha(0),
             Some(Stroke::solid(Color::BLACK, 1.0)),
         );

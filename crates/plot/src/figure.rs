@@ -295,6 +295,25 @@ impl Rect {
         Point::new(self.left + self.width / 2.0, self.top + self.height / 2.0)
     }
 
+    /// The four corners, clockwise on screen from the top left: the
+    /// rectangle as a polygon.
+    ///
+    /// ```
+    /// use kreisel_plot::figure::{Point, Rect};
+    /// let r = Rect { left: 1.0, top: 2.0, width: 3.0, height: 4.0 };
+    /// assert_eq!(r.corners(), vec![
+    ///     Point::new(1.0, 2.0), Point::new(4.0, 2.0), Point::new(4.0, 6.0), Point::new(1.0, 6.0),
+    /// ]);
+    /// ```
+    pub fn corners(&self) -> Vec<Point> {
+        vec![
+            Point::new(self.left, self.top),
+            Point::new(self.right(), self.top),
+            Point::new(self.right(), self.bottom()),
+            Point::new(self.left, self.bottom()),
+        ]
+    }
+
     /// Whether `p` lies inside or on the edge.
     pub fn contains(&self, p: Point) -> bool {
         (self.left..=self.right()).contains(&p.x) && (self.top..=self.bottom()).contains(&p.y)

@@ -176,16 +176,7 @@ fn sphere_zoom(fig: &mut Figure, plot: &TopPlot<'_>, panel: &SpherePanel, per_pe
     let band = plot.theta_max - plot.theta_min;
     view.scale = (0.45 * frame.width / along.max(1e-300)).min(0.6 * frame.height / band);
     let outline = Stroke::solid(Color::rgb(90, 90, 90), 1.0);
-    fig.polygon(
-        vec![
-            Point::new(frame.left, frame.top),
-            Point::new(frame.right(), frame.top),
-            Point::new(frame.right(), frame.bottom()),
-            Point::new(frame.left, frame.bottom()),
-        ],
-        Color::WHITE,
-        Some(outline),
-    );
+    fig.polygon(frame.corners(), Color::WHITE, Some(outline));
     for (theta, color) in [(plot.theta_min, THETA_MIN), (plot.theta_max, THETA_MAX)] {
         // The part of the circle facing the centre (the rest is far away).
         let circle: Vec<DVec3> = circle_of_latitude(theta, 20_000)
