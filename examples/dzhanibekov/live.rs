@@ -114,25 +114,28 @@ enum Action {
 
 impl Controls {
     fn apply(&mut self, key: Key) -> Action {
-        let axis = |k| SpinAxis::from_index(k).map_or(SpinAxis::Intermediate, |a| a);
-        match key {
-            Key::Space => self.paused = !self.paused,
+        let axis = match key {
+            Key::Key1 | Key::NumPad1 => SpinAxis::Minor,
+            Key::Key2 | Key::NumPad2 => SpinAxis::Intermediate,
+            Key::Key3 | Key::NumPad3 => SpinAxis::Major,
+            Key::Space => {
+                self.paused = !self.paused;
+                return Action::None;
+            }
+            Key::Equal | Key::NumPadPlus => {
+                self.speed = (self.speed * 2.0).min(SPEEDS.1);
+                return Action::None;
+            }
+            Key::Minus | Key::NumPadMinus => {
+                self.speed = (self.speed / 2.0).max(SPEEDS.0);
+                return Action::None;
+            }
             Key::R => return Action::Restart,
-            Key::Key1 | Key::NumPad1 => self.spin.axis = axis(0),
-            Key::Key2 | Key::NumPad2 => self.spin.axis = axis(1),
-            Key::Key3 | Key::NumPad3 => self.spin.axis = axis(2),
-            Key::Equal | Key::NumPadPlus => self.speed = (self.speed * 2.0).min(SPEEDS.1),
-            Key::Minus | Key::NumPadMinus => self.speed = (self.speed / 2.0).max(SPEEDS.0),
             Key::Q | Key::Escape => return Action::Quit,
             _ => return Action::None,
-        }
-        if matches!(
-            key,
-            Key::Key1 | Key::NumPad1 | Key::Key2 | Key::NumPad2 | Key::Key3 | Key::NumPad3
-        ) {
-            return Action::Restart;
-        }
-        Action::None
+        };
+        self.spin.axis = axis;
+        Action::Restart
     }
 }
 

@@ -39,13 +39,6 @@ impl SpinAxis {
         }
     }
 
-    /// The axis with principal index `index` (0, 1, 2).
-    pub fn from_index(index: usize) -> Option<Self> {
-        [Self::Minor, Self::Intermediate, Self::Major]
-            .get(index)
-            .copied()
-    }
-
     /// The word for the axis in the printed lines.
     pub fn name(self) -> &'static str {
         match self {
@@ -203,7 +196,6 @@ impl Prediction {
 pub struct Simulation<'a> {
     method: &'a dyn FreeBodyIntegrator,
     rigid: RigidBody,
-    moments: DVec3,
     axis: usize,
     dt: f64,
     body: Box<dyn Propagator + 'a>,
@@ -230,7 +222,6 @@ impl<'a> Simulation<'a> {
         Self {
             method,
             rigid,
-            moments,
             axis: spin.axis.index(),
             dt,
             body: method.propagator(moments, state),
@@ -268,7 +259,7 @@ impl<'a> Simulation<'a> {
 
     /// ω in principal axes now, rad/s.
     pub fn omega_principal(&self) -> DVec3 {
-        self.state().l_principal / self.moments
+        self.state().l_principal / self.rigid.principal_moments()
     }
 
     /// Advances one step; records a flip when ω along the spin axis
@@ -304,13 +295,14 @@ impl<'a> Simulation<'a> {
     /// (Euler's equations) as the derivative, safeguarded by bisection.
     fn crossing(&self, start: &PrincipalState, fraction: f64) -> f64 {
         let k = self.axis;
+        let moments = self.rigid.principal_moments();
         let at = |tau: f64| {
             let mut s = *start;
             if tau > 0.0 {
-                self.method.step(self.moments, &mut s, tau);
+                self.method.step(moments, &mut s, tau);
             }
             let l = s.l_principal;
-            (l[k], l.cross(l / self.moments)[k])
+            (l[k], l.cross(l / moments)[k])
         };
         let f_start = start.l_principal[k];
         let (mut lo, mut hi) = (0.0, self.dt);
