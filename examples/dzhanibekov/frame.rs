@@ -3,8 +3,8 @@
 //! and a few lines of status.
 
 use glam::DVec3;
-use kreisel_plot::Figure;
 use kreisel_plot::figure::{Anchor, Color, Point, Rect, Text};
+use kreisel_plot::{Figure, PlotError};
 
 use super::chart::{AXIS_COLORS, History, OmegaData, strip_chart};
 use super::physics::{Handle, Prediction, Simulation};
@@ -132,13 +132,17 @@ impl FrameRenderer {
     }
 
     /// Draws the frame for the simulation's current state.
+    ///
+    /// # Errors
+    /// [`PlotError`] from laying the chart and text over the 3-D panel (only
+    /// a corrupted embedded font: the sizes match by construction).
     pub fn draw(
         &mut self,
         handle: &Handle,
         sim: &Simulation<'_>,
         strip: &History,
         overlay: &Overlay,
-    ) -> &Image {
+    ) -> Result<&Image, PlotError> {
         let (width, height) = self.size();
         let scale = height as f64 / 540.0;
         self.image.clear(BACKGROUND);
@@ -194,10 +198,8 @@ impl FrameRenderer {
                 .colored(Color::rgb(90, 90, 90)),
             );
         }
-        // The figure has only text, lines and fills: nothing can fail but
-        // the size, which matches the image by construction.
-        let _ = kreisel_plot::png::draw_over_rgb(&fig, &mut self.image.pixels);
-        &self.image
+        kreisel_plot::png::draw_over_rgb(&fig, &mut self.image.pixels)?;
+        Ok(&self.image)
     }
 
     /// The shaded handle, its principal axes (labelled 1, 2, 3), the fixed

@@ -73,7 +73,7 @@ pub fn run(
             full.push(sim.time(), sim.omega_principal());
         }
         if let Some(g) = gif.as_mut() {
-            g.observe(&sim, handle, &prediction);
+            g.observe(&sim, handle, &prediction)?;
         }
         if i < steps {
             sim.step();
@@ -176,7 +176,12 @@ impl GifRecorder {
     }
 
     /// Samples the strip chart and renders a frame when one is due.
-    fn observe(&mut self, sim: &Simulation<'_>, handle: &Handle, prediction: &Prediction) {
+    fn observe(
+        &mut self,
+        sim: &Simulation<'_>,
+        handle: &Handle,
+        prediction: &Prediction,
+    ) -> Result<(), DemoError> {
         let t = sim.time();
         let half_step = 0.5 * sim.dt();
         if t + half_step >= self.next_sample {
@@ -185,10 +190,11 @@ impl GifRecorder {
         }
         if t + half_step >= self.next_frame {
             let overlay = Overlay::of(sim, prediction, None);
-            let image = self.renderer.draw(handle, sim, &self.strip, &overlay);
+            let image = self.renderer.draw(handle, sim, &self.strip, &overlay)?;
             self.frames.push(image.pixels.clone());
             self.next_frame += self.frame_interval;
         }
+        Ok(())
     }
 
     /// Encodes the frames to `path`; the file's size in bytes.

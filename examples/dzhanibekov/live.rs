@@ -197,7 +197,8 @@ impl<'a> Run<'a> {
 /// `update_with_buffer`, so every pass of the loop ends with one.
 ///
 /// # Errors
-/// [`DemoError::Stdout`] only: window failures end the run or fall back.
+/// [`DemoError::Stdout`], [`DemoError::Plot`]: window failures end the run
+/// or fall back.
 pub fn run(
     options: &Options,
     handle: &Handle,
@@ -267,7 +268,7 @@ pub fn run(
             paused: controls.paused,
         };
         let overlay = Overlay::of(&run.sim, &run.prediction, Some(status));
-        let image = renderer.draw(handle, &run.sim, &run.strip, &overlay);
+        let image = renderer.draw(handle, &run.sim, &run.strip, &overlay)?;
         if let Err(e) = window.update_with_buffer(&image.pixels, WIDTH, HEIGHT) {
             writeln!(out, "window closed: {e}")?;
             break;
