@@ -546,3 +546,108 @@ fn grid_of_edge_cases_stays_finite_and_conservative() {
     );
     assert!(worst.0 < 1e-12, "{worst:?}");
 }
+
+/// One row of `tests/data/lagrange_top/fast_tops.csv` (mpmath, 120 digits).
+struct FastTop {
+    family: String,
+    top: LagrangeTop,
+    initial: LagrangeTopInitial,
+    roots: [f64; 3],
+    theta_min: f64,
+    theta_max: f64,
+    period: f64,
+    precession: f64,
+    kind: TopMotionKind,
+}
+
+fn fast_tops() -> Vec<FastTop> {
+    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let root = manifest
+        .ancestors()
+        .find(|dir| dir.join("tests/data/lagrange_top").is_dir())
+        .expect("tests/data/lagrange_top in an ancestor");
+    let text = std::fs::read_to_string(root.join("tests/data/lagrange_top/fast_tops.csv")).unwrap();
+    let mut out = Vec::new();
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("family"))
+    {
+        let f: Vec<&str> = line.split(',').collect();
+        let x: Vec<f64> = f[1..16].iter().map(|v| v.parse().unwrap()).collect();
+        out.push(FastTop {
+            family: f[0].to_owned(),
+            top: LagrangeTop::new(x[0], x[1], x[2]),
+            initial: LagrangeTopInitial {
+                theta: x[3],
+                theta_dot: x[4],
+                phi_dot: x[5],
+                psi_dot: x[6],
+                ..Default::default()
+            },
+            roots: [x[7], x[8], x[9]],
+            theta_min: x[11],
+            theta_max: x[12],
+            period: x[13],
+            precession: x[14],
+            kind: match f[16] {
+                "no_loops" => TopMotionKind::NoLoops,
+                "loops" => TopMotionKind::Loops,
+                _ => TopMotionKind::Cusps,
+            },
+        });
+    }
+    out
+}
+
+/// Fast tops (ψ̇₀ = 1e3 … 1e15) against mpmath at 120 digits: roots, θ
+/// limits, nutation period and mean precession rate to 1e-12 relative,
+/// whatever the spin (the partial fractions of φ̇ once cancelled to
+/// ~β/a: `kreisel top --psi-dot0 1e10` reported a mean precession of 0).
+/// The `kicked` family swings φ̇ by ±0.5 rad/s about a mean of −2/ψ̇₀; its
+/// mean is held to f64 rounding of that swing, 4e-16 · max|φ̇| (the
+/// turning-point formulas carry it; see the report).
+#[test]
+fn fast_tops_keep_full_precision() {
+    let rel = |x: f64, y: f64| (x - y).abs() / y.abs();
+    for r in fast_tops() {
+        let m = r.top.try_solve(r.initial).unwrap();
+        let name = format!("{} psi_dot0 {:e}", r.family, r.initial.psi_dot);
+        let roots = m.roots();
+        let droot = roots
+            .iter()
+            .zip(&r.roots)
+            .map(|(a, b)| (a - b).abs() / b.abs().max(1.0))
+            .fold(0.0, f64::max);
+        let dth = rel(m.theta_min(), r.theta_min).max(rel(m.theta_max(), r.theta_max));
+        let period = m.nutation_period().unwrap();
+        let dperiod = rel(period, r.period);
+        let prec = m.mean_precession_rate().unwrap();
+        let dprec = rel(prec, r.precession);
+        // φ over one period from the evaluated closed form (φ(T) − φ(0) = ⟨φ̇⟩T).
+        let dphi = m.euler_at(period).phi - m.euler_at(0.0).phi;
+        let dphi_rel = rel(dphi / period, r.precession);
+        println!(
+            "{name}: roots {droot:.1e}, theta {dth:.1e}, period {dperiod:.1e}, \
+             precession {dprec:.1e} (from phi(T): {dphi_rel:.1e})"
+        );
+        assert!(droot <= 1e-15, "{name}: roots {roots:?} vs {:?}", r.roots);
+        assert!(dth <= 1e-15, "{name}: theta limits");
+        assert!(dperiod <= 1e-12, "{name}: period {period} vs {}", r.period);
+        assert_eq!(m.motion(), Some(r.kind), "{name}");
+        let tol = if r.family == "kicked" {
+            // |φ̇| ≤ |θ̇₀|/sin θ₀ ≈ 0.5 rad/s on this band
+            4e-16 * 0.5 / r.precession.abs()
+        } else {
+            1e-12
+        };
+        assert!(
+            dprec <= tol,
+            "{name}: precession {prec} vs {}",
+            r.precession
+        );
+        assert!(
+            dphi_rel <= tol.max(1e-12),
+            "{name}: phi(T) {dphi} over {period}"
+        );
+    }
+}
