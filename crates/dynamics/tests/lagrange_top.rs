@@ -651,3 +651,112 @@ fn fast_tops_keep_full_precision() {
         );
     }
 }
+
+/// θ₀ outside [0, π], I₃ > 2 I₁ (no real body), subnormal moments and
+/// overflowing rates are errors naming the parameter (once folded silently,
+/// accepted, or NaN).
+#[test]
+fn unphysical_and_unrepresentable_tops_are_errors() {
+    let err = |r: Result<LagrangeTopMotion, DynamicsError>| match r {
+        Err(DynamicsError::InvalidTop { parameter, .. }) => parameter,
+        other => panic!("{other:?}"),
+    };
+    let top = LagrangeTop::new(1.0, 0.5, 1.0);
+    let init = |theta: f64| LagrangeTopInitial {
+        theta,
+        psi_dot: 10.0,
+        ..Default::default()
+    };
+    for theta in [-0.5, -1e-300, 3.2, 3.141_592_653_589_794, 7.0, -7.0] {
+        assert_eq!(err(top.try_solve(init(theta))), "theta", "{theta}");
+    }
+    for theta in [0.0, 0.5, std::f64::consts::PI] {
+        assert!(top.try_solve(init(theta)).is_ok(), "{theta}");
+    }
+    let new_err = |i1: f64, i3: f64, mgl: f64| match LagrangeTop::try_new(i1, i3, mgl) {
+        Err(DynamicsError::InvalidTop { parameter, .. }) => parameter,
+        other => panic!("{i1} {i3} {mgl}: {other:?}"),
+    };
+    assert_eq!(new_err(1.0, 2.000_001, 1.0), "i3");
+    assert_eq!(new_err(0.3, 0.7, 1.0), "i3");
+    assert_eq!(new_err(1e-320, 1e-320, 1.0), "i1");
+    assert_eq!(new_err(1.0, 1e-320, 1.0), "i3");
+    assert_eq!(new_err(1e-300, 1e-300, 1e10), "mgl");
+    assert_eq!(new_err(1e300, 1e300, 1e-20), "mgl");
+    // A disc pivoted at its centre, I₃ = 2 I₁ up to rounding, is a body.
+    let (m, r) = (0.3f64, 0.07f64);
+    assert!(LagrangeTop::try_new(m * r * r / 4.0, m * r * r / 2.0, 0.0).is_ok());
+    assert!(LagrangeTop::try_new(1.0, 2.0 * (1.0 + f64::EPSILON), 0.0).is_ok());
+    let fast = |psi_dot, theta_dot, phi_dot| LagrangeTopInitial {
+        theta: 0.5,
+        psi_dot,
+        theta_dot,
+        phi_dot,
+        ..Default::default()
+    };
+    assert_eq!(err(top.try_solve(fast(1e300, 0.0, 0.0))), "psi_dot");
+    assert_eq!(err(top.try_solve(fast(1.0, 1e300, 0.0))), "theta_dot");
+    assert_eq!(err(top.try_solve(fast(1.0, 0.0, 1e300))), "phi_dot");
+}
+
+/// Magnitudes from 1e-300 to 1e300 in every parameter: `try_new` and
+/// `try_solve` either refuse or give finite numbers everywhere (once a
+/// moment of 1e-320 gave NaN rows).
+#[test]
+fn extreme_magnitudes_are_finite_or_refused() {
+    let mags = [0.0, 1e-300, 1e-30, 1.0, 1e30, 1e300];
+    let (mut solved, mut refused) = (0usize, 0usize);
+    for i1 in [1e-300, 1e-30, 1.0, 1e30, 1e300] {
+        for i3 in [0.5 * i1, 2.0 * i1, 1e-300] {
+            for mgl in [0.0, 1e-300, -1.0, 1.0, 1e30, 1e300] {
+                let Ok(top) = LagrangeTop::try_new(i1, i3, mgl) else {
+                    refused += 1;
+                    continue;
+                };
+                for theta in [0.0, 0.5, 3.0] {
+                    for theta_dot in mags {
+                        for phi_dot in mags {
+                            for psi_dot in mags {
+                                let init = LagrangeTopInitial {
+                                    theta,
+                                    theta_dot,
+                                    phi_dot: -phi_dot,
+                                    psi_dot,
+                                    ..Default::default()
+                                };
+                                let Ok(m) = top.try_solve(init) else {
+                                    refused += 1;
+                                    continue;
+                                };
+                                solved += 1;
+                                let e = m.euler_at(0.37);
+                                let scalars = [
+                                    m.theta_min(),
+                                    m.theta_max(),
+                                    m.nutation_period().unwrap_or(0.0),
+                                    m.mean_precession_rate().unwrap_or(0.0),
+                                    e.phi,
+                                    e.theta,
+                                    e.psi,
+                                    e.phi_dot,
+                                    e.theta_dot,
+                                    e.psi_dot,
+                                ];
+                                let ctx = format!("{i1:e} {i3:e} {mgl:e} {init:?}");
+                                assert!(
+                                    scalars.iter().all(|x| x.is_finite()),
+                                    "{ctx}: {scalars:?}"
+                                );
+                                assert!(m.roots().iter().all(|x| x.is_finite()), "{ctx}");
+                                assert!(m.world_from_body_at(0.37).is_finite(), "{ctx}");
+                                assert!(m.omega_body_at(0.37).is_finite(), "{ctx}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("extreme magnitudes: {solved} solved, {refused} refused");
+    assert!(solved > 1000);
+}

@@ -136,7 +136,10 @@ impl LagrangeTopMotion {
 
     /// The real roots of [`f`](Self::f), ascending, with multiplicity:
     /// three for `β ≠ 0` (`u₁ ≤ u₂ ≤ 1 ≤ u₃` for β > 0, `u₃ ≤ −1 ≤ u₁ ≤ u₂`
-    /// for β < 0), the two of the quadratic for `β = 0`.
+    /// for β < 0), the two of the quadratic for `β = 0`. The third root
+    /// `u₃ ≈ a²/β` of a top with a tiny β next to its spin is left out when
+    /// it lies beyond the f64 range (as β → 0 it goes to infinity, and the
+    /// cubic becomes the free top's quadratic).
     ///
     /// ```text
     /// f(u) = β (u − u₁)(u − u₂)(u − u₃)
@@ -157,8 +160,9 @@ impl LagrangeTopMotion {
     /// ```
     pub fn roots(&self) -> Vec<f64> {
         let mut r = vec![self.u0 + self.w1, self.u0 + self.w2];
-        if self.beta != 0.0 {
-            r.push(self.u0 + self.g / self.beta);
+        let u3 = self.u0 + self.g / self.beta;
+        if self.beta != 0.0 && u3.is_finite() {
+            r.push(u3);
         }
         r.sort_by(f64::total_cmp);
         r

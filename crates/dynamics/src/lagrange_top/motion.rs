@@ -51,7 +51,7 @@ use crate::elliptic::{JacobiElliptic, carlson_rf};
 #[derive(Debug, Clone)]
 pub struct LagrangeTopMotion {
     pub(super) top: LagrangeTop,
-    /// Initial conditions with θ₀ ∈ [0, π].
+    /// Initial conditions (θ₀ ∈ [0, π], snapped onto a pole within `POLE_SNAP`).
     pub(super) init: LagrangeTopInitial,
     pub(super) a: f64,
     pub(super) b: f64,
@@ -119,17 +119,43 @@ pub(super) fn sign(x: f64) -> f64 {
 }
 
 impl LagrangeTopMotion {
+    /// Whether every constant of the closed form is a finite number (the
+    /// guard of `LagrangeTop::try_solve` against overflow).
+    pub(super) fn is_finite(&self) -> bool {
+        let rests = [&self.minus, &self.plus].iter().all(|r| {
+            r.as_ref()
+                .is_none_or(|(tk, at0)| at0.is_finite() && tk.per_period().is_finite())
+        });
+        rests
+            && [
+                self.a,
+                self.b,
+                self.bma,
+                self.bpa,
+                self.alpha,
+                self.beta,
+                self.omega3,
+                self.w1,
+                self.w2,
+                self.delta,
+                self.one_minus_u2,
+                self.one_plus_u1,
+                self.r1.0,
+                self.r2.0,
+                self.phi_slope,
+                self.psi_slope,
+                self.nu,
+                self.tau0,
+            ]
+            .iter()
+            .all(|x| x.is_finite())
+            && (self.kind != Kind::Nutating || self.g.is_finite())
+    }
+
     pub(super) fn new(top: LagrangeTop, initial: LagrangeTopInitial) -> LagrangeTopMotion {
         let pi = std::f64::consts::PI;
+        // θ₀ ∈ [0, π] (checked by `LagrangeTop::try_solve`).
         let mut init = initial;
-        let t = init.theta.rem_euclid(2.0 * pi);
-        init.theta = t;
-        if t > pi {
-            init.theta = 2.0 * pi - t;
-            init.phi += pi;
-            init.psi -= pi;
-            init.theta_dot = -init.theta_dot;
-        }
         // Within POLE_SNAP of a pole the start is put exactly on it (see
         // `LagrangeTop::try_solve`); π itself is not an f64, so the bottom is
         // flagged and given sin θ₀ = 0, cos θ₀ = −1 exactly.
