@@ -181,10 +181,10 @@ fn load_warning_text(warning: &LoadWarning, scale: f64) -> String {
             tolerance,
             max_move,
         } => format!(
-            "welded {vertices} vertices lying within {} m of another (largest move {} m); \
+            "welded {vertices} vertices lying within {:.2e} m of another (largest move {:.2e} m); \
              --weld sets the tolerance",
-            Shortest(tolerance * scale),
-            Shortest(max_move * scale)
+            tolerance * scale,
+            max_move * scale
         ),
         other => other.to_string(),
     }
