@@ -47,7 +47,7 @@ fn default_weld_closes_near_duplicates_and_exact_weld_reports_the_gap() {
         Err(InertiaError::OpenMesh {
             weld_gap: Some(gap),
             ..
-        }) => assert!(gap <= 1e-8 * (1.0 + 1e-6) && gap >= 1e-9, "{gap}"),
+        }) => assert!((1e-9..=1e-8 * (1.0 + 1e-6)).contains(&gap), "{gap}"),
         other => panic!("{other:?}"),
     }
 }
