@@ -81,7 +81,15 @@ fn campaign() {
                         }
                         let bytes = input(&strategy, target, k);
                         let case = prepare(parser, &bytes, k, &dir);
-                        let Some(defect) = run(parser, &case) else {
+                        let outcome = run(parser, &case);
+                        let status = match outcome.code {
+                            Some(0) => "exit 0",
+                            Some(1) => "exit 1",
+                            Some(2) => "exit 2",
+                            _ => "other",
+                        };
+                        *counts.lock().unwrap().entry(status).or_default() += 1;
+                        let Some(defect) = outcome.defect else {
                             continue;
                         };
                         if let Defect::Hang { stdout_bytes } = defect {
@@ -116,12 +124,16 @@ fn campaign() {
         let hangs = hang_output.into_inner().unwrap();
         let line = format!(
             "{target:>13}: {cases} cases in {:.0} s: {} panics, {} hangs > 10 s ({} of them \
-             still writing output), {} exit 0 with non-finite output",
+             still writing output), {} exit 0 with non-finite output; exit status 0 / 1 / 2: \
+             {} / {} / {}",
             started.elapsed().as_secs_f64(),
             count("panic"),
             count("hang"),
             hangs.iter().filter(|&&b| b > 0).count(),
             count("nonfinite"),
+            count("exit 0"),
+            count("exit 1"),
+            count("exit 2"),
         );
         println!("{line}");
         summary.push(line);

@@ -213,8 +213,17 @@ fn find_non_finite(parser: Parser, stdout: &str) -> Option<String> {
     }
 }
 
+/// How one run ended.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Outcome {
+    /// The exit status (`None`: killed by a signal or by us).
+    pub code: Option<i32>,
+    /// What it did wrong, if anything.
+    pub defect: Option<Defect>,
+}
+
 /// Runs a prepared case and judges it.
-pub fn run(parser: Parser, case: &Case) -> Option<Defect> {
+pub fn run(parser: Parser, case: &Case) -> Outcome {
     let mut child = Command::new(KREISEL)
         .args(&case.args)
         .current_dir(&case.dir)
@@ -249,16 +258,20 @@ pub fn run(parser: Parser, case: &Case) -> Option<Defect> {
     let (stderr, _) = err.join().expect("stderr reader");
     let stderr = String::from_utf8_lossy(&stderr);
     let Some(status) = status else {
-        return Some(Defect::Hang { stdout_bytes });
+        return Outcome {
+            code: None,
+            defect: Some(Defect::Hang { stdout_bytes }),
+        };
     };
-    if status.code().is_none() || status.code() == Some(101) || stderr.contains("panicked") {
-        return Some(Defect::Panic(format!("{status}: {}", stderr.trim())));
-    }
-    if status.success() {
-        let stdout = String::from_utf8_lossy(&stdout);
-        return find_non_finite(parser, &stdout).map(Defect::NonFinite);
-    }
-    None
+    let code = status.code();
+    let defect = if code.is_none() || code == Some(101) || stderr.contains("panicked") {
+        Some(Defect::Panic(format!("{status}: {}", stderr.trim())))
+    } else if status.success() {
+        find_non_finite(parser, &String::from_utf8_lossy(&stdout)).map(Defect::NonFinite)
+    } else {
+        None
+    };
+    Outcome { code, defect }
 }
 
 /// A scratch directory under the target directory.
@@ -272,7 +285,7 @@ const CI_CASES: u32 = 24;
 fn check(parser: Parser, input: &[u8], variant: usize) -> Result<(), TestCaseError> {
     let dir = scratch(&format!("ci_{}", parser.target()));
     let case = prepare(parser, input, variant, &dir);
-    let defect = run(parser, &case);
+    let defect = run(parser, &case).defect;
     prop_assert!(
         defect.is_none(),
         "kreisel {} (in {}): {defect:?}",
