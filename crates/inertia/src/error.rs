@@ -148,4 +148,22 @@ pub enum InertiaError {
         /// Why (not symmetric, not positive definite, triangle inequality broken).
         reason: String,
     },
+    /// A convex hull failed its checks (closed, outward, convex, containing
+    /// every point): no result rather than a wrong one.
+    #[error("convex hull of {points} points failed its check: {reason}")]
+    HullCheckFailed {
+        /// Number of distinct input points.
+        points: usize,
+        /// Which check failed, and where.
+        reason: String,
+    },
+    /// A result overflows (or underflows to zero) in f64: the inputs are out
+    /// of the representable range.
+    #[error("{quantity} is not representable in f64 (got {value:e}): inputs out of range")]
+    NotRepresentable {
+        /// What overflowed (`"mass"`, `"inertia"`, …).
+        quantity: &'static str,
+        /// The value computed.
+        value: f64,
+    },
 }
