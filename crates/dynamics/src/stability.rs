@@ -223,3 +223,35 @@ pub(crate) fn energy_deltas(moments: [f64; 3], l: [f64; 3]) -> [f64; 3] {
     let d3 = term(l1, i1, i3).neg().add(term(l2, i2, i3).neg()).to_f64();
     [d1, d2, d3]
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Regression: `axis_stability(_, usize::MAX, _)` overflowed computing
+    /// `axis + 1`. Any index is taken mod 3 (usize::MAX ≡ 0), and the
+    /// checked twin refuses it.
+    #[test]
+    fn any_axis_index_is_safe() {
+        let m = DVec3::new(1.0, 2.0, 3.0);
+        assert_eq!(
+            axis_stability(m, usize::MAX, 2.0),
+            axis_stability(m, 0, 2.0)
+        );
+        assert_eq!(
+            axis_stability(m, usize::MAX - 1, 2.0),
+            axis_stability(m, 2, 2.0)
+        );
+        assert_eq!(
+            try_axis_stability(m, usize::MAX, 2.0),
+            Err(DynamicsError::InvalidAxis { axis: usize::MAX })
+        );
+        // λ² = Ω² · O(1) no longer overflows through I² for huge moments.
+        assert!(matches!(
+            try_axis_stability(m * 1e200, 1, 1.0),
+            Ok(AxisStability::Unstable { .. })
+        ));
+        assert!(try_axis_stability(m, 1, f64::NAN).is_err());
+        assert!(try_axis_stability(DVec3::new(1.0, 1.0, 3.0), 1, 1.0).is_err());
+    }
+}

@@ -91,3 +91,19 @@ fn an_impossible_request_is_an_error_not_a_hang() {
     // The same top at a step it can take is run.
     assert_eq!(HeavyTopAuto.try_substeps(&top, &s, 1e-8).unwrap(), 5);
 }
+
+/// Regression (audit): a weight `M g` or a potential `|M g| |c|` that
+/// overflows was accepted and made every energy infinite.
+#[test]
+fn overflowing_weights_are_refused() {
+    let moments = DVec3::new(1.0, 1.0, 0.5);
+    for (mass, g, c) in [
+        (1e300, DVec3::new(0.0, 0.0, -1e10), DVec3::Z),
+        (1.0, DVec3::new(0.0, 0.0, -1e300), DVec3::Z * 1e10),
+    ] {
+        match HeavyTop::try_from_principal(moments, c, mass, g) {
+            Err(DynamicsError::InvalidTop { .. }) => {}
+            other => panic!("{mass} {g} {c}: {other:?}"),
+        }
+    }
+}
