@@ -28,6 +28,7 @@ mod primitives;
 mod principal_axes;
 mod solid_kernel;
 mod tri_mesh;
+mod weld;
 
 pub use error::InertiaError;
 pub use mass_properties::MassProperties;
@@ -39,3 +40,4 @@ pub use parry_interop::{
 };
 pub use principal_axes::PrincipalAxes;
 pub use tri_mesh::TriMesh;
+pub use weld::{DEFAULT_RELATIVE_WELD, Weld, Welded};
