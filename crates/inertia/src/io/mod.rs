@@ -42,6 +42,7 @@ mod gltf;
 mod obj;
 mod ply;
 mod stl;
+mod vertex_table;
 
 /// The mesh file formats kreisel reads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -114,15 +115,19 @@ pub fn load_bodies(path: &Path) -> Result<Vec<Body>, InertiaError> {
     let format = MeshFormat::from_path(path).ok_or_else(|| InertiaError::UnknownFormat {
         path: path.to_path_buf(),
     })?;
-    let bytes = std::fs::read(path).map_err(|source| InertiaError::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
     let src = Source::new(path, format, &stem, path.parent());
+    if format == MeshFormat::Stl {
+        // Binary STL streams from the file instead of holding it whole.
+        return stl::load_file(&src);
+    }
+    let bytes = std::fs::read(path).map_err(|source| InertiaError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
     load(&bytes, &src)
 }
 
