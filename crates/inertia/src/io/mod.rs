@@ -48,6 +48,7 @@ mod gltf;
 mod obj;
 mod ply;
 mod stl;
+mod vertex_table;
 
 /// The mesh file formats kreisel reads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -182,18 +183,20 @@ impl LoadOptions {
         let format = MeshFormat::from_path(path).ok_or_else(|| InertiaError::UnknownFormat {
             path: path.to_path_buf(),
         })?;
-        let bytes = std::fs::read(path).map_err(|source| InertiaError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
         let stem = path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_default();
-        load(
-            &bytes,
-            &Source::new(path, format, &stem, path.parent(), *self),
-        )
+        let src = Source::new(path, format, &stem, path.parent(), *self);
+        if format == MeshFormat::Stl {
+            // Binary STL streams from the file instead of holding it whole.
+            return src.finish(stl::load_file(&src)?);
+        }
+        let bytes = std::fs::read(path).map_err(|source| InertiaError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        load(&bytes, &src)
     }
 
     /// Loads every body of a mesh file already in memory.
@@ -270,11 +273,7 @@ fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
         MeshFormat::Ply => ply::load(bytes, src),
         MeshFormat::Gltf | MeshFormat::Glb => gltf::load(bytes, src),
     }?;
-    if src.options.merge {
-        Ok(vec![src.merged(bodies)?])
-    } else {
-        Ok(bodies)
-    }
+    src.finish(bodies)
 }
 
 /// Longest reason text kept from a parser (whose messages may quote input).
@@ -379,6 +378,15 @@ impl<'a> Source<'a> {
             );
         }
         Ok(body)
+    }
+
+    /// The file's bodies as loaded: merged into one when the options ask.
+    fn finish(&self, bodies: Vec<Body>) -> Result<Vec<Body>, InertiaError> {
+        if self.options.merge {
+            Ok(vec![self.merged(bodies)?])
+        } else {
+            Ok(bodies)
+        }
     }
 
     /// All bodies as one named after the file, welded together.
