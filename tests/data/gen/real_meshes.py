@@ -4,8 +4,12 @@ Not part of `cargo test`.  Every STL and OBJ file under pybullet's bundled
 data (or the directories given) is integrated three ways, side by side:
 
 * kreisel: `kreisel inertia FILE --density 1 --format json` (release build);
-* trimesh: `trimesh.load(FILE, force="mesh")` (merges vertices to 1e-8),
-  `is_watertight`, `is_volume` and `mass_properties` at density 1;
+* trimesh: `trimesh.load(FILE, force="mesh")` (merges vertices to 1e-8, but
+  keeps an OBJ's vertices apart along texture and normal seams, so that
+  many closed OBJ meshes are not `is_watertight`), then also
+  `merge_vertices(merge_tex=True, merge_norm=True)` (positions only, the
+  geometric surface); `is_watertight`, `is_volume` and, for the merged
+  mesh, `mass_properties` at density 1;
 * MuJoCo (if importable): the mesh as the only geom of a free body with
   `<mesh inertia="exact"/>` and density 1; `body_mass`, `body_ipos` and the
   principal moments `body_inertia`. MuJoCo reads only the first object of
@@ -80,10 +84,15 @@ def run_trimesh(path):
     if not isinstance(m, trimesh.Trimesh) or len(m.faces) == 0:
         return None, "no triangles"
     result = {
+        "watertight_default": bool(m.is_watertight),
+        "volume_default": bool(m.is_volume),
+    }
+    m.merge_vertices(merge_tex=True, merge_norm=True)
+    result.update({
         "watertight": bool(m.is_watertight),
         "volume_ok": bool(m.is_volume),
         "diag": float(np.linalg.norm(m.extents)) if len(m.vertices) else 0.0,
-    }
+    })
     if m.is_volume:
         mp = m.mass_properties
         result["mass"] = float(mp["mass"])
@@ -120,6 +129,7 @@ def refusal_class(reason):
         (r"not orientable", "not orientable"),
         (r"zero volume", "zero volume"),
         (r"invalid", "parse error"),
+        (r"non-finite", "non-finite coordinate (NaN in the file)"),
     ]:
         if re.search(pattern, reason):
             return name
@@ -143,7 +153,7 @@ def main():
         dirs = [pybullet_data.getDataPath()]
     files = list(mesh_files(dirs))
     n = len(files)
-    k_ok = t_water = t_vol = mj_ok = 0
+    k_ok = t_water = t_vol = t_water_default = t_vol_default = mj_ok = 0
     refused_vol = collections.Counter()
     examples = collections.defaultdict(list)
     worst = {"mass": (0, ""), "com": (0, ""), "inertia": (0, ""),
@@ -164,11 +174,15 @@ def main():
         if t is not None:
             t_water += t["watertight"]
             t_vol += t["volume_ok"]
+            t_water_default += t["watertight_default"]
+            t_vol_default += t["volume_default"]
         if k is None:
             c = refusal_class(k_err)
             refused_all[c] += 1
+            if len(examples["all " + c]) < 3:
+                examples["all " + c].append("%s: %s" % (os.path.relpath(path, dirs[0]), k_err))
             if t_volume or mj is not None:
-                refused_others["%s; %s" % (c, "trimesh is_volume" if t_volume else "MuJoCo compiles")] += 1
+                refused_others["%s; %s" % (c, "trimesh is_volume (merged)" if t_volume else "MuJoCo compiles")] += 1
         else:
             for w in k["warnings"]:
                 for key in ["welded", "degenerate", "shared by more than two", "inconsistent",
@@ -207,24 +221,28 @@ def main():
                     worst[key] = (val, path)
     print("meshes: %d (STL/OBJ under %s)" % (n, ", ".join(dirs)))
     print("kreisel accepts:          %d (%.1f %%)" % (k_ok, 100.0 * k_ok / n))
-    print("trimesh is_watertight:    %d (%.1f %%)" % (t_water, 100.0 * t_water / n))
-    print("trimesh is_volume:        %d (%.1f %%)" % (t_vol, 100.0 * t_vol / n))
+    print("trimesh is_watertight:    %d (%.1f %%) as loaded, %d (%.1f %%) merged across seams"
+          % (t_water_default, 100.0 * t_water_default / n, t_water, 100.0 * t_water / n))
+    print("trimesh is_volume:        %d (%.1f %%) as loaded, %d (%.1f %%) merged across seams"
+          % (t_vol_default, 100.0 * t_vol_default / n, t_vol, 100.0 * t_vol / n))
     if mujoco is not None:
         print("MuJoCo compiles (exact):  %d (%.1f %%)" % (mj_ok, 100.0 * mj_ok / n))
-    print("trimesh is_volume but kreisel refuses: %d" % sum(refused_vol.values()))
+    print("trimesh is_volume (merged) but kreisel refuses: %d" % sum(refused_vol.values()))
     for c, count in refused_vol.most_common():
         print("  %4d  %s" % (count, c))
         for e in examples[c]:
             print("          %s" % e)
     print("kreisel warnings on accepted meshes: %s" % dict(warn_classes))
-    print("both kreisel and trimesh (is_volume): %d; largest relative differences:" % both)
+    print("both kreisel and trimesh (merged, is_volume): %d; largest relative differences:" % both)
     for key in ["mass", "com", "inertia"]:
         v, p = worst[key]
         print("  %-8s %.3g  %s" % (key, v, os.path.relpath(p, dirs[0]) if p else ""))
-    print("kreisel accepts, trimesh not is_volume: %d" % only_kreisel)
+    print("kreisel accepts, trimesh (merged) not is_volume: %d" % only_kreisel)
     print("kreisel refusals by cause (all %d):" % sum(refused_all.values()))
     for c, count in refused_all.most_common():
         print("  %4d  %s" % (count, c))
+        for e in examples["all " + c]:
+            print("          %s" % e[:300])
     print("  of which trimesh or MuJoCo integrate: %s" % dict(refused_others))
     if mujoco is not None:
         big = [(d, p, tv) for d, p, tv in mj_cmp if max(d) > 1e-6]
