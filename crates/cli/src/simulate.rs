@@ -119,7 +119,7 @@ pub struct SimulateArgs {
     #[arg(value_name = "SCENE", required_unless_present = "list_methods")]
     pub scene: Option<PathBuf>,
 
-    /// Write the CSV to FILE (created or truncated) instead of standard output
+    /// Write the CSV to FILE (replaced only when the whole run succeeds) instead of standard output
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
@@ -172,7 +172,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     } else {
         None
     };
-    let (writer, output) = crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
+    let (writer, output, pending) =
+        crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
     let mut progress = Progress::new(
         scene.schedule.steps(),
         Progress::wanted(output == Stream::Standard),
@@ -188,7 +189,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     let flushed = csv.flush();
     simulated
         .and(flushed)
-        .map_err(|source| write_error(&output, source))
+        .map_err(|source| write_error(&output, source))?;
+    drop(csv);
+    // Whole or not at all: the --output file appears only now.
+    crate::convert::commit_output(pending, output)
 }
 
 /// Writes the method list to standard output.
