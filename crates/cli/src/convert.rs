@@ -4,15 +4,15 @@
 #![forbid(unsafe_code)]
 
 use std::fs::{self, File};
-use std::io::{self, BufRead, BufReader, BufWriter, Read, Write};
+use std::io::{self, BufRead, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use crate::error::{CliError, LineProblem, Location, Stream};
 use crate::numbers::{Numbers, parse_numbers, write_numbers};
 use crate::representation::Representation;
 
-/// Longest accepted input line in bytes (newline included); longer lines are
-/// an error, so a file without newlines cannot exhaust memory.
+/// Longest accepted input line in bytes (line end included); longer lines are
+/// an error, so a file without line ends cannot exhaust memory.
 pub const MAX_LINE_BYTES: usize = 1 << 20;
 
 /// Size of the input and output buffers.
@@ -42,7 +42,8 @@ Representations (REPR):
                             gimbal lock the third angle is 0.
 
 Input: one rotation per line, numbers separated by commas and/or whitespace.
-Blank lines and lines starting with '#' are skipped. Output: one line per
+Blank lines and lines starting with '#' are skipped. Lines end with LF, CRLF
+or CR alone; a UTF-8 byte-order mark at the start of the input is skipped. Output: one line per
 rotation, numbers comma-separated in shortest round-trip form.
 
 Errors: the first invalid line stops the conversion with a message naming its
@@ -184,11 +185,60 @@ pub(crate) fn open_output(
     Ok((Box::new(file), Stream::File(path.to_owned())))
 }
 
+/// The UTF-8 byte-order mark some editors put at the start of a text file.
+const BYTE_ORDER_MARK: &[u8] = b"\xef\xbb\xbf";
+
+/// Reads one line into `buffer` (cleared first): up to and including its
+/// end, `\n`, `\r\n` or a lone `\r`, or up to `limit + 1` bytes when the
+/// line is longer. Returns the bytes consumed (0 at the end of the input).
+fn read_line<R: BufRead>(reader: &mut R, buffer: &mut Vec<u8>, limit: usize) -> io::Result<usize> {
+    buffer.clear();
+    let mut consumed = 0;
+    loop {
+        let available = match reader.fill_buf() {
+            Ok(bytes) => bytes,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if available.is_empty() {
+            return Ok(consumed);
+        }
+        let room = limit + 1 - buffer.len();
+        let window = &available[..available.len().min(room)];
+        match window.iter().position(|&b| b == b'\n' || b == b'\r') {
+            Some(at) => {
+                let end = window[at];
+                buffer.extend_from_slice(&window[..=at]);
+                reader.consume(at + 1);
+                consumed += at + 1;
+                // CRLF is one line end: take its LF too, even from the next read.
+                if end == b'\r' && reader.fill_buf()?.first() == Some(&b'\n') {
+                    buffer.push(b'\n');
+                    reader.consume(1);
+                    consumed += 1;
+                }
+                return Ok(consumed);
+            }
+            None => {
+                let n = window.len();
+                buffer.extend_from_slice(window);
+                reader.consume(n);
+                consumed += n;
+                if buffer.len() > limit {
+                    return Ok(consumed);
+                }
+            }
+        }
+    }
+}
+
 /// Converts every line of `reader` and writes the results to `writer`.
 ///
 /// Reads one line at a time into a reused buffer (at most
 /// [`MAX_LINE_BYTES`]), so memory stays constant however long the input.
-/// Stops at the first invalid line. Does not flush `writer`.
+/// Lines end with `\n`, `\r\n` or a lone `\r`; a UTF-8 byte-order mark
+/// at the start of the input is skipped. Stops at the first invalid line.
+/// Does not flush `writer`.
 ///
 /// # Errors
 /// [`CliError::Line`] for an invalid line (with its 1-based number),
@@ -203,18 +253,19 @@ pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
     let mut buffer = Vec::with_capacity(256);
     let mut line: u64 = 0;
     loop {
-        buffer.clear();
-        let read = (&mut reader)
-            .take(MAX_LINE_BYTES as u64 + 1)
-            .read_until(b'\n', &mut buffer)
-            .map_err(|source| CliError::Read {
+        let read = read_line(&mut reader, &mut buffer, MAX_LINE_BYTES).map_err(|source| {
+            CliError::Read {
                 input: input.clone(),
                 source,
-            })?;
+            }
+        })?;
         if read == 0 {
             return Ok(());
         }
         line += 1;
+        if line == 1 && buffer.starts_with(BYTE_ORDER_MARK) {
+            buffer.drain(..BYTE_ORDER_MARK.len());
+        }
         let at_line = |problem| CliError::Line {
             location: Location {
                 input: input.clone(),
@@ -304,6 +355,73 @@ mod tests {
         assert!(
             e.to_string().starts_with("line 1: line is longer than"),
             "{e}"
+        );
+    }
+
+    #[test]
+    fn lines_end_with_lf_crlf_or_a_lone_cr() {
+        // Regression: CR-only input (classic Mac) was one line of 8 numbers.
+        let (result, out) = convert("quat", "quat", "1 0 0 0\r0 1 0 0\r\r0 0 1 0\r\n0 0 0 1");
+        assert!(result.is_ok(), "{result:?}");
+        assert_eq!(out, "1,0,0,0\n0,1,0,0\n0,0,1,0\n0,0,0,1\n");
+        let (result, _) = convert("quat", "quat", "1 0 0 0\r# c\r1 2 3\r");
+        assert_eq!(
+            result.unwrap_err().to_string(),
+            "line 3: expected 4 numbers for quat, found 3"
+        );
+    }
+
+    #[test]
+    fn crlf_split_across_reads_is_one_line_end() {
+        // A reader that returns one byte at a time puts the LF of a CRLF in
+        // the next read: still one line end, so the error is on line 2.
+        let text = b"1 0 0 0\r\n1 2 3\r\n";
+        let reader = io::BufReader::with_capacity(1, &text[..]);
+        let conversion = Conversion {
+            from: Representation::Quat,
+            to: Representation::Quat,
+            degrees: false,
+        };
+        let mut out = Vec::new();
+        let e = convert_stream(
+            reader,
+            &mut out,
+            conversion,
+            &Stream::Standard,
+            &Stream::Standard,
+        )
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 2: expected 4 numbers for quat, found 3"
+        );
+        assert_eq!(out, b"1,0,0,0\n");
+    }
+
+    #[test]
+    fn a_byte_order_mark_starts_the_input_only() {
+        // Regression: a UTF-8 BOM was part of the first number, and the
+        // message quoted it invisibly.
+        let (result, out) = convert("quat", "quat", "\u{feff}1 0 0 0\n0 1 0 0\n");
+        assert!(result.is_ok(), "{result:?}");
+        assert_eq!(out, "1,0,0,0\n0,1,0,0\n");
+        let (result, _) = convert("quat", "quat", "1 0 0 0\n\u{feff}0 1 0 0\n");
+        assert_eq!(
+            result.unwrap_err().to_string(),
+            "line 2: cannot parse `\\u{feff}0` as a number"
+        );
+    }
+
+    #[test]
+    fn long_lines_are_refused_whatever_their_end() {
+        let mut long = vec![b'1'; MAX_LINE_BYTES + 1];
+        long.push(b'\r');
+        let (result, _) = convert("quat", "quat", std::str::from_utf8(&long).unwrap());
+        assert!(
+            result
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 1: line is longer than"),
         );
     }
 }
