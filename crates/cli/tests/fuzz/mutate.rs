@@ -18,7 +18,7 @@ pub fn ci_config(cases: u32) -> ProptestConfig {
         ..ProptestConfig::default()
     };
     if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = RngSeed::Fixed(0x6b72_6569_73656c);
+        config.rng_seed = RngSeed::Fixed(0x006b_7265_6973_656c);
     }
     config
 }
