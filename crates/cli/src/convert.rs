@@ -461,4 +461,44 @@ mod tests {
         assert!(e.contains("\\u{7}x"), "{e}");
         assert_eq!(escape_invisible("a\u{200b}b\tc"), "a\\u{200b}b\\u{9}c");
     }
+
+    #[test]
+    fn crlf_split_across_reads_is_one_line_end() {
+        // A reader that returns one byte at a time puts the LF of a CRLF in
+        // the next read: still one line end, so the error is on line 2.
+        let text = b"1 0 0 0\r\n1 2 3\r\n";
+        let reader = io::BufReader::with_capacity(1, &text[..]);
+        let conversion = Conversion {
+            from: Representation::Quat,
+            to: Representation::Quat,
+            degrees: false,
+        };
+        let mut out = Vec::new();
+        let e = convert_stream(
+            reader,
+            &mut out,
+            conversion,
+            &Stream::Standard,
+            &Stream::Standard,
+        )
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 2: expected 4 numbers for quat, found 3"
+        );
+        assert_eq!(out, b"1,0,0,0\n");
+    }
+
+    #[test]
+    fn long_lines_are_refused_whatever_their_end() {
+        let mut long = vec![b'1'; MAX_LINE_BYTES + 1];
+        long.push(b'\r');
+        let (result, _) = convert("quat", "quat", std::str::from_utf8(&long).unwrap());
+        assert!(
+            result
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 1: line is longer than"),
+        );
+    }
 }
