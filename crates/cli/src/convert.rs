@@ -4,7 +4,7 @@
 #![forbid(unsafe_code)]
 
 use std::fs::{self, File};
-use std::io::{self, BufRead, BufReader, BufWriter, Read, Write};
+use std::io::{self, BufRead, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use crate::error::{CliError, LineProblem, Location, Stream};
@@ -99,7 +99,7 @@ impl Conversion {
         if text.is_empty() || text.starts_with('#') {
             return Ok(None);
         }
-        let numbers = parse_numbers(text)?;
+        let numbers = parse_numbers(text).map_err(escape_problem)?;
         let q = self.from.quat_from_numbers(&numbers, self.degrees)?;
         Ok(Some(self.to.numbers_from_quat(q, self.degrees)))
     }
@@ -204,13 +204,10 @@ pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
     let mut line: u64 = 0;
     loop {
         buffer.clear();
-        let read = (&mut reader)
-            .take(MAX_LINE_BYTES as u64 + 1)
-            .read_until(b'\n', &mut buffer)
-            .map_err(|source| CliError::Read {
-                input: input.clone(),
-                source,
-            })?;
+        let read = read_line(&mut reader, &mut buffer).map_err(|source| CliError::Read {
+            input: input.clone(),
+            source,
+        })?;
         if read == 0 {
             return Ok(());
         }
@@ -228,12 +225,111 @@ pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
             }));
         }
         let text = std::str::from_utf8(&buffer).map_err(|_| at_line(LineProblem::NotUtf8))?;
+        // A UTF-8 byte-order mark (Windows editors write one) is no content.
+        let text = if line == 1 {
+            text.strip_prefix('\u{feff}').unwrap_or(text)
+        } else {
+            text
+        };
         if let Some(numbers) = conversion.convert_line(text).map_err(at_line)? {
             write_numbers(writer, numbers.as_slice()).map_err(|source| CliError::Write {
                 output: output.clone(),
                 source,
             })?;
         }
+    }
+}
+
+/// Reads one line into `buffer`, without its terminator: `\n`, `\r\n` or a
+/// lone `\r` (classic Mac OS) ends a line. Stops after
+/// [`MAX_LINE_BYTES`]` + 1` bytes so an endless line cannot exhaust memory.
+/// Returns the number of bytes consumed (0 at the end of the input).
+fn read_line<R: BufRead>(reader: &mut R, buffer: &mut Vec<u8>) -> io::Result<usize> {
+    let mut consumed = 0;
+    loop {
+        let available = match reader.fill_buf() {
+            Ok(bytes) => bytes,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if available.is_empty() {
+            return Ok(consumed);
+        }
+        let room = MAX_LINE_BYTES + 1 - buffer.len();
+        let window = &available[..available.len().min(room)];
+        match window.iter().position(|&b| b == b'\n' || b == b'\r') {
+            Some(end) => {
+                let cr = window[end] == b'\r';
+                buffer.extend_from_slice(&window[..end]);
+                reader.consume(end + 1);
+                consumed += end + 1;
+                if cr {
+                    // `\r\n` is one terminator.
+                    let next = loop {
+                        match reader.fill_buf() {
+                            Ok(bytes) => break bytes.first().copied(),
+                            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+                            Err(e) => return Err(e),
+                        }
+                    };
+                    if next == Some(b'\n') {
+                        reader.consume(1);
+                        consumed += 1;
+                    }
+                }
+                return Ok(consumed);
+            }
+            None => {
+                let n = window.len();
+                buffer.extend_from_slice(window);
+                reader.consume(n);
+                consumed += n;
+                if buffer.len() > MAX_LINE_BYTES {
+                    return Ok(consumed);
+                }
+            }
+        }
+    }
+}
+
+/// `text` with every control or invisible character written as `\u{…}`, so
+/// that an error message shows what is really in the input.
+pub(crate) fn escape_invisible(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        let invisible = matches!(
+            c,
+            '\u{ad}'
+                | '\u{115f}'
+                | '\u{1160}'
+                | '\u{180e}'
+                | '\u{200b}'..='\u{200f}'
+                | '\u{2028}'..='\u{202e}'
+                | '\u{2060}'..='\u{206f}'
+                | '\u{3164}'
+                | '\u{fe00}'..='\u{fe0f}'
+                | '\u{feff}'
+                | '\u{fff9}'..='\u{fffb}'
+        );
+        if c.is_control() || invisible {
+            out.extend(c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// The problem with its quoted tokens escaped (see [`escape_invisible`]).
+fn escape_problem(problem: LineProblem) -> LineProblem {
+    match problem {
+        LineProblem::BadNumber { token } => LineProblem::BadNumber {
+            token: escape_invisible(&token),
+        },
+        LineProblem::NonFinite { token } => LineProblem::NonFinite {
+            token: escape_invisible(&token),
+        },
+        other => other,
     }
 }
 
@@ -305,5 +401,34 @@ mod tests {
             e.to_string().starts_with("line 1: line is longer than"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn skips_a_byte_order_mark_and_reads_every_line_ending() {
+        // Regression: a BOM was an invisible "cannot parse" error; a lone CR
+        // (classic Mac OS) made the whole file one line.
+        let text = "\u{feff}1,0,0,0\r0,0,0,2\r\n0,1,0,0\n0,0,1,0\r";
+        let (result, out) = convert("quat", "quat", text);
+        assert!(result.is_ok(), "{result:?}");
+        assert_eq!(out, "1,0,0,0\n0,0,0,1\n0,1,0,0\n0,0,1,0\n");
+        // Line numbers count CR-only lines too.
+        let (result, _) = convert("quat", "quat", "1,0,0,0\r\r0,0,0,0\r");
+        assert_eq!(
+            result.unwrap_err().to_string(),
+            "line 3: quaternion has zero norm"
+        );
+        // A BOM later than the start is content, and shown escaped.
+        let (result, _) = convert("quat", "quat", "1,0,0,0\n\u{feff}1,0,0,0\n");
+        let e = result.unwrap_err().to_string();
+        assert!(e.contains("\\u{feff}"), "{e}");
+    }
+
+    #[test]
+    fn error_messages_show_control_characters_escaped() {
+        let (result, _) = convert("quat", "quat", "1,0,\u{7}x,0\u{1b}[31m\n");
+        let e = result.unwrap_err().to_string();
+        assert!(!e.chars().any(char::is_control), "{e:?}");
+        assert!(e.contains("\\u{7}x"), "{e}");
+        assert_eq!(escape_invisible("a\u{200b}b\tc"), "a\\u{200b}b\\u{9}c");
     }
 }

@@ -249,25 +249,49 @@ pub enum BodyProblem {
         scale: f64,
     },
     /// The library rejected the body; for surfaces that enclose no well-defined
-    /// volume the message says which options model them anyway.
+    /// volume the message says what gives the right answer, if anything.
     #[error("{}{}", one_line(&source.to_string()), solid_hint(source))]
     Inertia {
         /// The library's description of the problem.
         #[from]
         source: InertiaError,
     },
+    /// The body is open, but all bodies of the file together are closed.
+    #[error(
+        "{}; the file's bodies together form a closed surface: rerun with --merge to treat them as one solid",
+        one_line(&source.to_string())
+    )]
+    ClosedOnlyMerged {
+        /// The library's description of the body's problem.
+        source: InertiaError,
+    },
 }
 
-/// What to try when a mesh is no closed, orientable, manifold surface.
-fn solid_hint(error: &InertiaError) -> &'static str {
+/// What gives the right answer when a mesh is no closed, orientable surface:
+/// welding for cracks; for real holes, the models that hold only for some
+/// shapes (never advice that silently gives a wrong mass).
+fn solid_hint(error: &InertiaError) -> String {
+    const OPEN_ON_PURPOSE: &str = "; if the surface is open on purpose, --shell models a thin-walled part (see --thickness) and --hull a convex one";
     match error {
-        InertiaError::OpenMesh { .. }
-        | InertiaError::NonManifold { .. }
-        | InertiaError::NonOrientable { .. } => {
-            "; rerun with --shell (thin shell, see --thickness) or --hull (solid convex hull)"
+        InertiaError::OpenMesh {
+            weld_gap: Some(gap),
+            ..
+        } => format!("; rerun with --weld {} to close them", round_up(gap * 1.5)),
+        InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. } => OPEN_ON_PURPOSE.into(),
+        InertiaError::NonOrientable { .. } => {
+            "; it bounds no volume, but --shell models it as a thin wall (see --thickness)".into()
         }
-        _ => "",
+        _ => String::new(),
     }
+}
+
+/// `x` rounded up to one significant digit (`1.3e-7` → `2e-7`).
+fn round_up(x: f64) -> Shortest {
+    if !(x.is_finite() && x > 0.0) {
+        return Shortest(x);
+    }
+    let unit = 10f64.powf(x.log10().floor());
+    Shortest((x / unit).ceil() * unit)
 }
 
 /// The text with line breaks replaced by spaces, so an error stays one line.
@@ -353,7 +377,11 @@ mod tests {
         let e = CliError::Body {
             path: PathBuf::from("part.obj"),
             body: "lid\nx".into(),
-            problem: BodyProblem::from(InertiaError::OpenMesh { boundary_edges: 4 }),
+            problem: BodyProblem::from(InertiaError::OpenMesh {
+                boundary_edges: 4,
+                at: glam::DVec3::new(1.0, 0.5, 0.0),
+                weld_gap: None,
+            }),
         };
         let text = e.to_string();
         assert!(

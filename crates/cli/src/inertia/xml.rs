@@ -131,6 +131,9 @@ fn comment(report: &Report, format: &str) -> String {
         );
         let _ = writeln!(out, "<!-- {} -->", comment_text(&text));
     }
+    for w in &report.assembly.warnings {
+        let _ = writeln!(out, "<!-- warning: {} -->", comment_text(w));
+    }
     out
 }
 

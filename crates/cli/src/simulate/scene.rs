@@ -8,6 +8,7 @@
 
 #![forbid(unsafe_code)]
 
+use std::collections::HashSet;
 use std::ops::Range;
 use std::path::Path;
 
@@ -191,9 +192,11 @@ pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
     }
     let folder = path.parent().unwrap_or(Path::new(""));
     let mut bodies: Vec<SimBody> = Vec::with_capacity(raw.body.len());
+    // A set, not a search of the bodies so far: 10⁵ bodies took 31 s that way.
+    let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());
     for (n, raw_body) in raw.body.iter().enumerate() {
         let body = SimBody::from_raw(file, raw_body, n + 1, folder, gravity)?;
-        if bodies.iter().any(|other| other.name == body.name) {
+        if !names.insert(body.name.clone()) {
             let span = raw_body.get_ref().name_span().unwrap_or(raw_body.span());
             let message = format!("body name `{}` is used twice; names must differ", body.name);
             return Err(file.error(Some(span), &message));

@@ -1,0 +1,9 @@
+//! `cargo fuzz run ply`: bytes as a PLY file through kreisel-inertia's loader
+//! and every mass model: an error or finite numbers, never a panic.
+#![no_main]
+
+use kreisel_fuzz::mesh_file;
+use kreisel_inertia::io::MeshFormat;
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|bytes: &[u8]| mesh_file(bytes, MeshFormat::Ply));
