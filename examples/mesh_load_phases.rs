@@ -27,7 +27,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use kreisel::inertia::io::{MeshFormat, load_bodies, load_bodies_from_bytes};
-use kreisel::inertia::{MeshMoments, prepare_solid};
+use kreisel::inertia::{MeshMoments, Weld, prepare_solid};
 
 /// CPU time of this thread in seconds, or wall time if unavailable.
 fn now() -> f64 {
@@ -55,7 +55,8 @@ fn phases(path: &Path) -> Result<(), String> {
     let bodies = bodies.map_err(|e| e.to_string())?;
     let mesh = bodies.into_iter().next().ok_or("no body")?.mesh;
     let n = mesh.triangles().len() as f64;
-    let (merged, merge) = timed(|| mesh.clone().merge_duplicate_vertices());
+    let (merged, merge) = timed(|| mesh.clone().welded(Weld::default()));
+    let merged = merged.map_err(|e| e.to_string())?.0;
     assert_eq!(merged.vertices().len(), mesh.vertices().len());
     let (checked, check) = timed(|| prepare_solid(mesh.clone()));
     let checked = checked.map_err(|e| e.to_string())?;
