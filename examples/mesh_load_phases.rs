@@ -1,0 +1,114 @@
+//! Where the time of `kreisel inertia FILE` goes, phase by phase, in ns per
+//! triangle of CPU time (this thread's, from `/proc/thread-self/schedstat`,
+//! so waiting for a core on a busy machine is not counted; wall clock where
+//! that file does not exist).
+//!
+//! ```text
+//! cargo run --release --example mesh_load_phases -- FILE...
+//! ```
+//!
+//! Phases, each on its own copy of the data:
+//! - `read`: the file's bytes into memory;
+//! - `parse+merge`: [`load_bodies_from_bytes`] (the format's parser, mesh
+//!   validation and the vertex merge of every body);
+//! - `merge`: the vertex merge alone, repeated on the loaded mesh (the same
+//!   vertex count as inside the load for indexed formats, and for binary STL
+//!   whose loader already shares exact repeats);
+//! - `parse` = `parse+merge` − `merge`;
+//! - `check`: [`prepare_solid`] (degenerate triangles, closure, manifold,
+//!   orientation);
+//! - `integrate`: [`MeshMoments::solid`] and the mass properties;
+//! - `tobj` (OBJ only): `tobj::load_obj_buf` on the raw file, the third-party
+//!   parser's share;
+//! - `load_bodies`: [`load_bodies`] from the path (binary STL streams the
+//!   file instead of reading it whole).
+
+use std::path::Path;
+use std::time::Instant;
+
+use kreisel::inertia::io::{MeshFormat, load_bodies, load_bodies_from_bytes};
+use kreisel::inertia::{MeshMoments, Weld, prepare_solid};
+
+/// CPU time of this thread in seconds, or wall time if unavailable.
+fn now() -> f64 {
+    static START: std::sync::OnceLock<Instant> = std::sync::OnceLock::new();
+    let schedstat = std::fs::read_to_string("/proc/thread-self/schedstat").ok();
+    match schedstat.and_then(|s| s.split_whitespace().next()?.parse::<u64>().ok()) {
+        Some(ns) => ns as f64 * 1e-9,
+        None => START.get_or_init(Instant::now).elapsed().as_secs_f64(),
+    }
+}
+
+/// Runs `f`, returning its value and the seconds it took.
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+    let start = now();
+    let value = f();
+    (value, now() - start)
+}
+
+fn phases(path: &Path) -> Result<(), String> {
+    let format = MeshFormat::from_path(path).ok_or("unknown extension")?;
+    let name = path.display().to_string();
+    let (bytes, read) = timed(|| std::fs::read(path));
+    let bytes = bytes.map_err(|e| e.to_string())?;
+    let (bodies, load) = timed(|| load_bodies_from_bytes(&bytes, format, &name, path.parent()));
+    let bodies = bodies.map_err(|e| e.to_string())?;
+    let mesh = bodies.into_iter().next().ok_or("no body")?.mesh;
+    let n = mesh.triangles().len() as f64;
+    let (merged, merge) = timed(|| mesh.clone().welded(Weld::default()));
+    let merged = merged.map_err(|e| e.to_string())?.0;
+    assert_eq!(merged.vertices().len(), mesh.vertices().len());
+    let (checked, check) = timed(|| prepare_solid(mesh.clone()));
+    let checked = checked.map_err(|e| e.to_string())?;
+    let (mass, integrate) = timed(|| MeshMoments::solid(&checked.mesh).mass_properties(1000.0));
+    let mass = mass.map_err(|e| e.to_string())?.mass;
+    drop((checked, mesh, merged));
+    let tobj = (format == MeshFormat::Obj).then(|| {
+        let options = tobj::LoadOptions {
+            single_index: true,
+            triangulate: true,
+            ..Default::default()
+        };
+        timed(|| {
+            tobj::load_obj_buf(&mut &bytes[..], &options, |_| {
+                Err(tobj::LoadError::OpenFileFailed)
+            })
+            .map(|(models, _)| models.len())
+        })
+        .1
+    });
+    drop(bytes);
+    let (streamed, load_path) = timed(|| load_bodies(path));
+    streamed.map_err(|e| e.to_string())?;
+    let ns = |s: f64| format!("{:.0}", s / n * 1e9);
+    let mut row = vec![
+        ("triangles", format!("{n}")),
+        ("read", ns(read)),
+        ("parse+merge", ns(load)),
+        ("merge", ns(merge)),
+        ("parse", ns(load - merge)),
+        ("check", ns(check)),
+        ("integrate", ns(integrate)),
+        ("load_bodies", ns(load_path)),
+    ];
+    if let Some(t) = tobj {
+        row.push(("tobj", ns(t)));
+    }
+    row.push(("mass (kg, 1000 kg/m^3)", format!("{mass}")));
+    println!("{name}");
+    for (label, value) in row {
+        println!("  {label:>22}: {value}");
+    }
+    Ok(())
+}
+
+fn main() -> std::process::ExitCode {
+    let mut status = std::process::ExitCode::SUCCESS;
+    for arg in std::env::args().skip(1) {
+        if let Err(e) = phases(Path::new(&arg)) {
+            eprintln!("{arg}: {e}");
+            status = std::process::ExitCode::FAILURE;
+        }
+    }
+    status
+}
