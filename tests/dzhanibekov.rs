@@ -245,22 +245,247 @@ fn bad_input_is_one_line_of_error() {
         assert!(message.contains(expected), "{args:?}: {message}");
         assert!(!message.contains('\n'), "{args:?}: {message}");
     }
-    // A GIF too large for memory is refused before the run.
-    let gif = dir.join("long.gif");
-    let message = run(
+    // Numbers out of range and a GIF that is not a .gif are refused before
+    // the run, in one line, writing nothing (once: --spin-rate 1e300 printed
+    // λ = inf "stable", --gif x.png wrote a GIF into x.png, --dt 1e-12
+    // without --duration ran 1e13 steps).
+    let png = dir.join("x.png");
+    let png_arg = png.to_str().unwrap().to_owned();
+    for (args, expected) in [
+        (
+            vec!["--spin-rate", "1e300"],
+            "--spin-rate = 1e300 is out of range",
+        ),
+        (
+            vec!["--spin-rate", "inf"],
+            "--spin-rate = inf is out of range",
+        ),
+        (vec!["--spin-rate=-3"], "--spin-rate = -3 is out of range"),
+        (vec!["--dt", "1e-12"], "--dt = 1e-12 is out of range"),
+        (vec!["--dt=-0.001"], "--dt = -0.001 is out of range"),
+        (vec!["--dt", "2"], "--dt = 2 is out of range"),
+        (
+            vec!["--dt", "0.05", "--duration", "0.01"],
+            "(must be at most --duration",
+        ),
+        (
+            vec!["--spin-rate", "100", "--dt", "0.01"],
+            "the handle may turn at most 0.5 rad per step",
+        ),
+        (
+            vec!["--duration", "1e6"],
+            "--duration = 1000000 is out of range",
+        ),
+        (vec!["--duration", "0"], "--duration = 0 is out of range"),
+        (
+            vec!["--duration", "100", "--dt", "1e-7"],
+            "at most 1e8 steps",
+        ),
+        (
+            vec!["--gif", &png_arg],
+            "x.png: the GIF is written to a .gif file",
+        ),
+    ] {
+        let message = run(&args, None).expect_err("refused");
+        assert!(message.contains(expected), "{args:?}: {message}");
+        assert!(
+            !message.contains('\n') && message.len() < 200,
+            "{args:?}: {message}"
+        );
+        assert!(!png.exists());
+    }
+    let gif = dir.join("X.GIF");
+    run(
         &[
             "--headless",
             "--duration",
-            "1000",
+            "0.1",
+            "--gif-width",
+            "160",
             "--gif",
             gif.to_str().unwrap(),
         ],
         None,
     )
-    .expect_err("refused");
-    assert!(
-        message.starts_with("the GIF would have 15001 frames of 640 x 320 pixels"),
-        "{message}"
+    .expect("a .GIF is a GIF");
+    assert!(gif.exists());
+}
+
+/// The frames of a headless run with `--gif-width width`, rendered as the
+/// GIF recorder renders them (every 1/15 s of simulated time).
+fn rendered_frames(duration: f64, width: usize) -> Vec<Vec<u32>> {
+    use demo::chart::History;
+    use demo::frame::{FrameRenderer, Overlay, STRIP_SAMPLE_INTERVAL, STRIP_WINDOW};
+    use demo::physics::{Handle, Prediction, Simulation, Spin, SpinAxis};
+    let handle = Handle::load(Path::new(demo::options::DEFAULT_MESH), 7850.0).unwrap();
+    let method = kreisel::dynamics::method("auto").unwrap();
+    let spin = Spin {
+        axis: SpinAxis::Intermediate,
+        rate: std::f64::consts::TAU,
+        perturbation: 0.05,
+    };
+    let prediction = Prediction::new(handle.moments(), &spin);
+    let dt = 1e-3;
+    let mut sim = Simulation::new(method.as_ref(), handle.body, &spin, dt);
+    let mut renderer = FrameRenderer::new(
+        width,
+        width / 2,
+        &handle,
+        spin.rate,
+        spin.omega_bound(handle.moments()),
     );
-    assert!(!gif.exists());
+    let mut strip = History::new(Some(STRIP_WINDOW));
+    let (mut next_frame, mut next_sample) = (0.0, 0.0);
+    let mut frames = Vec::new();
+    for i in 0..=(duration / dt).round() as u64 {
+        if i > 0 {
+            sim.step();
+        }
+        let t = sim.time();
+        if t + 0.5 * dt >= next_sample {
+            strip.push(t, sim.omega_principal());
+            next_sample += STRIP_SAMPLE_INTERVAL;
+        }
+        if t + 0.5 * dt >= next_frame {
+            let overlay = Overlay::of(&sim, &prediction, None);
+            let image = renderer.draw(&handle, &sim, &strip, &overlay).unwrap();
+            frames.push(image.pixels.clone());
+            next_frame += 1.0 / 15.0;
+        }
+    }
+    frames
+}
+
+/// Mean and largest per-channel error of a GIF against its source frames.
+fn gif_error(bytes: &[u8], frames: &[Vec<u32>]) -> (f64, i32) {
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::RGBA);
+    let mut decoder = options.read_info(bytes).unwrap();
+    let w = usize::from(decoder.width());
+    let mut canvas = vec![0u32; frames[0].len()];
+    let (mut sum, mut max, mut n) = (0u64, 0i32, 0u64);
+    let mut k = 0;
+    while let Some(f) = decoder.read_next_frame().unwrap() {
+        let (left, top, fw) = (
+            usize::from(f.left),
+            usize::from(f.top),
+            usize::from(f.width),
+        );
+        for (i, p) in f.buffer.chunks_exact(4).enumerate() {
+            if p[3] != 0 {
+                canvas[(top + i / fw) * w + left + i % fw] =
+                    (u32::from(p[0]) << 16) | (u32::from(p[1]) << 8) | u32::from(p[2]);
+            }
+        }
+        for (&a, &b) in frames[k].iter().zip(&canvas) {
+            let e = (0..3)
+                .map(|s| (((a >> (8 * s)) & 0xFF) as i32 - ((b >> (8 * s)) & 0xFF) as i32).abs())
+                .max()
+                .unwrap();
+            sum += e as u64;
+            max = max.max(e);
+            n += 1;
+        }
+        k += 1;
+    }
+    assert_eq!(k, frames.len());
+    (sum as f64 / n as f64, max)
+}
+
+/// The GIF is streamed with its palette from the first frames (8 M pixels:
+/// 40 frames at the default 640 × 320, 2.7 s of the run); here at 320 × 160
+/// with the same 40 frames against a palette from all 151 frames of the
+/// default 10 s run: the error it adds is small, and the memory it holds is
+/// the window, whatever the number of frames.
+#[test]
+fn streamed_palette_keeps_the_quality_of_a_global_one() {
+    use demo::gif_out::{GifStream, write_gif};
+    let (w, h) = (320usize, 160usize);
+    let frames = rendered_frames(10.0, w);
+    assert_eq!(frames.len(), 151);
+    let mut all = Vec::new();
+    write_gif(&mut all, w as u16, h as u16, &frames, 7).unwrap();
+    let window = 40 * w * h;
+    let mut stream = GifStream::new(Vec::new(), w as u16, h as u16, 7, window).unwrap();
+    let mut held = 0;
+    for f in &frames {
+        stream.push(f).unwrap();
+        held = held.max(stream.held_frames());
+    }
+    let (streamed, stats) = stream.finish().unwrap();
+    assert_eq!(held, 39, "frames held back for the palette");
+    assert_eq!(stats.frames, 151);
+    let (mean_all, max_all) = gif_error(&all, &frames);
+    let (mean_stream, max_stream) = gif_error(&streamed, &frames);
+    println!(
+        "palette from all frames: mean {mean_all:.3}, max {max_all}, {} bytes; \
+         from the first 40: mean {mean_stream:.3}, max {max_stream}, {} bytes",
+        all.len(),
+        streamed.len()
+    );
+    assert!(
+        mean_stream <= 1.2 * mean_all + 0.05,
+        "{mean_stream} vs {mean_all}"
+    );
+    assert!(max_stream <= max_all + 8, "{max_stream} vs {max_all}");
+}
+
+/// The GIF and the plot are written to a temporary file beside the target
+/// and renamed over it on success: a run whose output cannot be put in
+/// place leaves the target as it was and no temporary file; a successful
+/// run replaces an old file whole.
+#[test]
+fn outputs_are_all_or_nothing() {
+    let dir = scratch("atomic");
+    let listing = |dir: &Path| {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    };
+    // A directory in the way: the run completes, the rename fails.
+    for (option, name) in [("--gif", "flip.gif"), ("--plot", "omega.png")] {
+        let target = dir.join(name);
+        std::fs::create_dir(&target).unwrap();
+        std::fs::write(target.join("keep"), b"x").unwrap();
+        let args = [
+            "--headless",
+            "--duration",
+            "0.2",
+            "--gif-width",
+            "160",
+            option,
+            target.to_str().unwrap(),
+        ];
+        let message = run(&args, None).expect_err("refused");
+        assert!(
+            message.contains(name) && !message.contains('\n'),
+            "{message}"
+        );
+        assert_eq!(listing(&target), ["keep"]);
+        std::fs::remove_dir_all(&target).unwrap();
+        assert!(listing(&dir).is_empty(), "{:?}", listing(&dir));
+    }
+    // An old file is replaced by the whole new GIF.
+    let gif = dir.join("old.gif");
+    std::fs::write(&gif, b"not a gif").unwrap();
+    let out = run(
+        &[
+            "--headless",
+            "--duration",
+            "0.5",
+            "--gif-width",
+            "160",
+            "--gif",
+            gif.to_str().unwrap(),
+        ],
+        None,
+    )
+    .unwrap();
+    assert!(out.contains("(8 frames, "), "{out}");
+    let bytes = std::fs::read(&gif).unwrap();
+    assert!(bytes.starts_with(b"GIF89a") && bytes.ends_with(&[0x3B]));
+    assert_eq!(listing(&dir), ["old.gif"]);
 }

@@ -1,10 +1,14 @@
 //! Animated-GIF writer for frames produced by the software renderer.
 //!
 //! Frames arrive as row-major `0x00RRGGBB` pixels (the top byte is ignored).
-//! The writer produces one looping GIF with a single global palette:
+//! The writer produces one looping GIF with a single global palette.
+//! [`GifStream`] takes the frames one at a time and writes them as they come
+//! (bounded memory for any number of frames; its palette comes from the
+//! first frames, see [`stream`]); [`write_gif`] encodes a slice of frames
+//! with the palette built from all of them.
 //!
 //! 1. **Palette.** A bounded, stratified random sample of at most
-//!    [`PALETTE_SAMPLE_LIMIT`] pixels is drawn from all frames. If the sample
+//!    [`PALETTE_SAMPLE_LIMIT`] pixels is drawn from the frames. If the sample
 //!    holds at most [`MAX_PALETTE_COLORS`] distinct colours they are used as
 //!    they are. Otherwise up to 64 exact colours that cover at least 0.04 % of
 //!    the sample each (background, text, pure curve colours, large flat
@@ -28,22 +32,21 @@
 //!    without changes is still written, as a 1×1 transparent frame, so the
 //!    timing is kept.
 //!
-//! Steps 1 and 2 live in the private submodules `palette` and `median_cut`;
-//! this file holds the public API, the argument checks and step 3.
+//! Steps 1 and 2 live in the private submodules `palette` and `median_cut`,
+//! the encoder and step 3 in [`stream`]; this file holds the errors, the
+//! one-call [`write_gif`] and the rectangle helpers of step 3.
 
 mod median_cut;
 mod palette;
+pub mod stream;
 #[cfg(test)]
 mod test_scenes;
 #[cfg(test)]
 mod test_support;
 
-use std::borrow::Cow;
 use std::io::Write;
 
-use gif::{DisposalMethod, Encoder, Frame, Repeat};
-
-use palette::{Mapper, Palette};
+pub use stream::GifStream;
 
 /// Upper bound on the number of pixels (taken over all frames) used to build the palette.
 pub const PALETTE_SAMPLE_LIMIT: usize = 50_000;
@@ -118,8 +121,9 @@ pub struct GifStats {
 ///
 /// Every frame must hold `width × height` pixels in row-major order, each
 /// pixel `0x00RRGGBB` (the top byte is ignored). Every frame is shown for
-/// `delay_centiseconds` hundredths of a second. The whole file is assembled
-/// in memory and then written to `out` in one go, followed by a flush.
+/// `delay_centiseconds` hundredths of a second. The palette is built from
+/// all frames ([`GifStream`] with an unlimited palette window); the output
+/// is flushed at the end.
 ///
 /// # Errors
 ///
@@ -128,95 +132,18 @@ pub struct GifStats {
 /// written), [`GifError::Encoding`] if the encoder rejects the data and
 /// [`GifError::Io`] if writing to `out` fails.
 pub fn write_gif<W: Write, F: AsRef<[u32]>>(
-    mut out: W,
+    out: W,
     width: u16,
     height: u16,
     frames: &[F],
     delay_centiseconds: u16,
 ) -> Result<GifStats, GifError> {
-    let npix = validate(width, height, frames)?;
-    let palette = Palette::build(frames, npix);
-    let palette_colors = palette.colors.len();
-    let transparent_index = u8::try_from(palette_colors).map_err(|_| GifError::Encoding {
-        message: format!(
-            "palette has {palette_colors} colours, at most {MAX_PALETTE_COLORS} allowed"
-        ),
-    })?;
-
-    let mut table = Vec::with_capacity((palette_colors + 1) * 3);
-    for &c in &palette.colors {
-        table.extend_from_slice(&[(c >> 16) as u8, (c >> 8) as u8, c as u8]);
+    validate(width, height, frames)?;
+    let mut stream = GifStream::new(out, width, height, delay_centiseconds, usize::MAX)?;
+    for f in frames {
+        stream.push(f.as_ref())?;
     }
-    table.extend_from_slice(&[0, 0, 0]); // the transparent entry
-
-    let mut mapper = Mapper::new(&palette);
-    let w = usize::from(width);
-    let mut bytes = Vec::new();
-    let mut encoded_pixels = 0u64;
-    let mut unchanged_frames = 0usize;
-    {
-        let mut enc = Encoder::new(&mut bytes, width, height, &table)?;
-        enc.set_repeat(Repeat::Infinite)?;
-        let mut prev = vec![0u8; npix];
-        let mut cur = vec![0u8; npix];
-        let mut crop = Vec::new();
-        for (i, f) in frames.iter().enumerate() {
-            mapper.map_frame(f.as_ref(), &mut cur);
-            let (rect, transparent, buffer) = if i == 0 {
-                let full = Rect {
-                    x0: 0,
-                    y0: 0,
-                    x1: w,
-                    y1: npix / w,
-                };
-                (full, None, &cur[..])
-            } else {
-                let rect = match changed_rect(&prev, &cur, w) {
-                    Some(r) => {
-                        crop_changes(&prev, &cur, w, r, transparent_index, &mut crop);
-                        r
-                    }
-                    None => {
-                        unchanged_frames += 1;
-                        crop.clear();
-                        crop.push(transparent_index);
-                        Rect {
-                            x0: 0,
-                            y0: 0,
-                            x1: 1,
-                            y1: 1,
-                        }
-                    }
-                };
-                (rect, Some(transparent_index), &crop[..])
-            };
-            let frame = Frame {
-                delay: delay_centiseconds,
-                dispose: DisposalMethod::Keep,
-                transparent,
-                left: to_u16(rect.x0)?,
-                top: to_u16(rect.y0)?,
-                width: to_u16(rect.x1 - rect.x0)?,
-                height: to_u16(rect.y1 - rect.y0)?,
-                buffer: Cow::Borrowed(buffer),
-                ..Frame::default()
-            };
-            encoded_pixels += u64::from(frame.width) * u64::from(frame.height);
-            enc.write_frame(&frame)?;
-            std::mem::swap(&mut prev, &mut cur);
-        }
-        enc.into_inner()?;
-    }
-    out.write_all(&bytes)?;
-    out.flush()?;
-    Ok(GifStats {
-        bytes_written: bytes.len() as u64,
-        frames: frames.len(),
-        palette_colors,
-        transparent_index,
-        encoded_pixels,
-        unchanged_frames,
-    })
+    Ok(stream.finish()?.1)
 }
 
 /// Checks the arguments and returns the number of pixels per frame.

@@ -1,7 +1,8 @@
 //! The headless run: simulate for `--duration`, print the results, write
 //! the GIF (`--gif`) and the ω(t) chart (`--plot`).
 
-use std::io::Write;
+use std::fs::File;
+use std::io::{BufWriter, Write};
 use std::path::Path;
 
 use kreisel::dynamics::FreeBodyIntegrator;
@@ -10,13 +11,10 @@ use kreisel_plot::ImageFormat;
 use super::chart::{History, OmegaData, omega_figure};
 use super::frame::{FrameRenderer, Overlay};
 use super::options::{HEADLESS_DURATION, Options};
+use super::output_file::{PendingFile, write_whole};
 use super::physics::{Handle, Prediction, Simulation};
 use super::report::{result_lines, significant};
 use super::{DemoError, gif_out};
-
-/// The most pixels the GIF's frames may hold together (they are kept in
-/// memory, 4 bytes each, until the palette is built from all of them).
-const GIF_PIXELS: u64 = 150_000_000;
 
 /// Samples of ω kept for the `--plot` chart (at most).
 const PLOT_SAMPLES: u64 = 20_000;
@@ -46,28 +44,16 @@ pub fn run(
         check_directory(path)?;
     }
     let duration = options.duration.unwrap_or(HEADLESS_DURATION);
-    if options.gif.is_some() {
-        let frames = (duration * options.fps) as u64 + 1;
-        let (width, height) = (options.gif_width, options.gif_width / 2);
-        if frames.saturating_mul(u64::from(width) * u64::from(height)) > GIF_PIXELS {
-            return Err(DemoError::GifTooLarge {
-                frames,
-                width,
-                height,
-                limit: GIF_PIXELS,
-            });
-        }
-    }
     let spin = options.spin();
     let prediction = Prediction::new(handle.moments(), &spin);
     let mut sim = Simulation::new(method, handle.body, &spin, options.dt);
     let steps = (duration / options.dt).round().max(1.0) as u64;
     let record_every = (steps / PLOT_SAMPLES).max(1);
     let mut full = History::new(None);
-    let mut gif = options
-        .gif
-        .as_ref()
-        .map(|_| GifRecorder::new(options, handle));
+    let mut gif = match &options.gif {
+        Some(path) => Some(GifRecorder::new(options, handle, path)?),
+        None => None,
+    };
     for i in 0..=steps {
         if i % record_every == 0 || i == steps {
             full.push(sim.time(), sim.omega_principal());
@@ -83,8 +69,7 @@ pub fn run(
         writeln!(out, "{line}")?;
     }
     if let (Some(path), Some(g)) = (&options.gif, gif) {
-        let frames = g.frames.len();
-        let bytes = g.write(path)?;
+        let (frames, bytes) = g.finish(path)?;
         writeln!(
             out,
             "wrote {} ({frames} frames, {bytes} bytes)",
@@ -111,7 +96,7 @@ pub fn run(
             spin_axis: spin.axis.index(),
         };
         let figure = omega_figure(&data, sim.time(), &title);
-        write_file(path, &format.render(&figure)?)?;
+        write_whole(path, &format.render(&figure)?)?;
         writeln!(out, "wrote {}", path.display())?;
     }
     Ok(())
@@ -136,43 +121,59 @@ fn check_directory(path: &Path) -> Result<(), DemoError> {
     }
 }
 
-/// Writes `bytes` to `path`.
-fn write_file(path: &Path, bytes: &[u8]) -> Result<(), DemoError> {
-    std::fs::write(path, bytes).map_err(|source| DemoError::Write {
-        path: path.to_path_buf(),
-        source,
-    })
-}
-
-/// Frames of the GIF, rendered at `--fps` of simulated time.
+/// The GIF, rendered at `--fps` of simulated time and streamed to a
+/// temporary file beside the target as the frames come (bounded memory for
+/// any `--duration`), renamed over the target when complete.
 struct GifRecorder {
     renderer: FrameRenderer,
     strip: History,
-    frames: Vec<Vec<u32>>,
+    stream: gif_out::GifStream<BufWriter<File>>,
+    file: PendingFile,
     frame_interval: f64,
     next_frame: f64,
     next_sample: f64,
-    delay_centiseconds: u16,
+    path: std::path::PathBuf,
 }
 
 impl GifRecorder {
-    fn new(options: &Options, handle: &Handle) -> Self {
+    /// Starts the GIF for `path`.
+    ///
+    /// # Errors
+    /// [`DemoError::Write`] when the temporary file cannot be created,
+    /// [`DemoError::Gif`] for a size the encoder refuses.
+    fn new(options: &Options, handle: &Handle, path: &Path) -> Result<Self, DemoError> {
         let width = options.gif_width as usize;
-        Self {
-            renderer: FrameRenderer::new(
-                width,
-                width / 2,
-                handle,
-                options.spin_rate,
-                options.spin().omega_bound(handle.moments()),
-            ),
+        let renderer = FrameRenderer::new(
+            width,
+            width / 2,
+            handle,
+            options.spin_rate,
+            options.spin().omega_bound(handle.moments()),
+        );
+        let delay_centiseconds = (100.0 / options.fps).round().clamp(1.0, 100.0) as u16;
+        let (w, h) = renderer.size();
+        let (file, writer) = PendingFile::create(path)?;
+        let stream = gif_out::GifStream::new(
+            writer,
+            w as u16,
+            h as u16,
+            delay_centiseconds,
+            gif_out::stream::PALETTE_WINDOW_PIXELS,
+        )
+        .map_err(|source| DemoError::Gif {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Ok(Self {
+            renderer,
             strip: History::new(Some(super::frame::STRIP_WINDOW)),
-            frames: Vec::new(),
+            stream,
+            file,
+            path: path.to_path_buf(),
             frame_interval: 1.0 / options.fps,
             next_frame: 0.0,
             next_sample: 0.0,
-            delay_centiseconds: (100.0 / options.fps).round().clamp(1.0, 100.0) as u16,
-        }
+        })
     }
 
     /// Samples the strip chart and renders a frame when one is due.
@@ -191,31 +192,28 @@ impl GifRecorder {
         if t + half_step >= self.next_frame {
             let overlay = Overlay::of(sim, prediction, None);
             let image = self.renderer.draw(handle, sim, &self.strip, &overlay)?;
-            self.frames.push(image.pixels.clone());
+            self.stream
+                .push(&image.pixels)
+                .map_err(|source| DemoError::Gif {
+                    path: self.path.clone(),
+                    source,
+                })?;
             self.next_frame += self.frame_interval;
         }
         Ok(())
     }
 
-    /// Encodes the frames to `path`; the file's size in bytes.
-    fn write(self, path: &Path) -> Result<u64, DemoError> {
-        let file = std::fs::File::create(path).map_err(|source| DemoError::Write {
+    /// Writes the rest of the GIF and renames it over the target; the
+    /// number of frames and the file's size in bytes.
+    ///
+    /// # Errors
+    /// [`DemoError::Gif`], [`DemoError::Write`]; the target is left as it was.
+    fn finish(self, path: &Path) -> Result<(usize, u64), DemoError> {
+        let (writer, stats) = self.stream.finish().map_err(|source| DemoError::Gif {
             path: path.to_path_buf(),
             source,
         })?;
-        let writer = std::io::BufWriter::new(file);
-        let (w, h) = self.renderer.size();
-        let stats = gif_out::write_gif(
-            writer,
-            w as u16,
-            h as u16,
-            &self.frames,
-            self.delay_centiseconds,
-        )
-        .map_err(|source| DemoError::Gif {
-            path: path.to_path_buf(),
-            source,
-        })?;
-        Ok(stats.bytes_written)
+        self.file.commit(writer)?;
+        Ok((stats.frames, stats.bytes_written))
     }
 }

@@ -42,6 +42,7 @@ pub mod gif_out;
 pub mod headless;
 pub mod live;
 pub mod options;
+pub mod output_file;
 pub mod physics;
 pub mod render;
 pub mod report;
@@ -56,7 +57,7 @@ pub enum DemoError {
     #[error("{0}")]
     Usage(String),
     /// A number is out of range.
-    #[error("{name} = {value} is out of range (must be {range})")]
+    #[error("{name} = {} is out of range (must be {range})", short(*.value))]
     Option {
         /// The option.
         name: &'static str,
@@ -96,20 +97,11 @@ pub enum DemoError {
         /// What went wrong.
         source: std::io::Error,
     },
-    /// The GIF would not fit in memory.
-    #[error(
-        "the GIF would have {frames} frames of {width} x {height} pixels, more than {limit} \
-         pixels in all: shorten --duration or lower --fps or --gif-width"
-    )]
-    GifTooLarge {
-        /// Frames asked for.
-        frames: u64,
-        /// Frame width.
-        width: u32,
-        /// Frame height.
-        height: u32,
-        /// The most pixels of all frames together.
-        limit: u64,
+    /// `--gif` names a file that does not end in `.gif`.
+    #[error("{path}: the GIF is written to a .gif file")]
+    GifFormat {
+        /// The file.
+        path: PathBuf,
     },
     /// `--plot` names a format other than PNG or SVG.
     #[error("{path}: the plot is written as .png or .svg")]
@@ -120,6 +112,16 @@ pub enum DemoError {
     /// Standard output is closed.
     #[error("standard output: {0}")]
     Stdout(#[from] std::io::Error),
+}
+
+/// `value` as Rust prints it, in exponent form outside [1e-4, 1e15)
+/// (`1e300`, not 301 digits).
+fn short(value: f64) -> String {
+    if value == 0.0 || !value.is_finite() || (1e-4..1e15).contains(&value.abs()) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
 }
 
 /// Runs the demo with command-line `args` (the program name first),

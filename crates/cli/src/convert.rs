@@ -11,8 +11,8 @@ use crate::error::{CliError, LineProblem, Location, Stream};
 use crate::numbers::{Numbers, parse_numbers, write_numbers};
 use crate::representation::Representation;
 
-/// Longest accepted input line in bytes (line end included); longer lines are
-/// an error, so a file without line ends cannot exhaust memory.
+/// Longest accepted input line in bytes (newline included); longer lines are
+/// an error, so a file without newlines cannot exhaust memory.
 pub const MAX_LINE_BYTES: usize = 1 << 20;
 
 /// Size of the input and output buffers.
@@ -42,13 +42,13 @@ Representations (REPR):
                             gimbal lock the third angle is 0.
 
 Input: one rotation per line, numbers separated by commas and/or whitespace.
-Blank lines and lines starting with '#' are skipped. Lines end with LF, CRLF
-or CR alone; a UTF-8 byte-order mark at the start of the input is skipped. Output: one line per
+Blank lines and lines starting with '#' are skipped. Output: one line per
 rotation, numbers comma-separated in shortest round-trip form.
 
 Errors: the first invalid line stops the conversion with a message naming its
 line number (FILE:LINE: with --input) and exit status 1; every line before it
-has been written.
+has been written to standard output. An --output file is written whole or not
+at all: after an error it is not created, and an existing one is kept.
 
 Examples:
   echo '0 0 1.5707963267948966' | kreisel convert --from rotvec --to quat
@@ -74,7 +74,7 @@ pub struct ConvertArgs {
     #[arg(long, value_name = "FILE")]
     pub input: Option<PathBuf>,
 
-    /// Write to FILE (created or truncated) instead of standard output
+    /// Write to FILE (replaced only when the whole conversion succeeds) instead of standard output
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 }
@@ -100,7 +100,7 @@ impl Conversion {
         if text.is_empty() || text.starts_with('#') {
             return Ok(None);
         }
-        let numbers = parse_numbers(text)?;
+        let numbers = parse_numbers(text).map_err(escape_problem)?;
         let q = self.from.quat_from_numbers(&numbers, self.degrees)?;
         Ok(Some(self.to.numbers_from_quat(q, self.degrees)))
     }
@@ -110,8 +110,9 @@ impl Conversion {
 ///
 /// # Errors
 /// A [`CliError`] for a file that cannot be opened or created, an I/O error,
-/// or the first invalid line. The output is flushed in every case, so all
-/// lines before an invalid one are written.
+/// or the first invalid line. Standard output is flushed in every case, so
+/// all lines before an invalid one are written; an `--output` file is put in
+/// place only on success.
 pub fn run(args: &ConvertArgs) -> Result<(), CliError> {
     let conversion = Conversion {
         from: args.from,
@@ -119,13 +120,33 @@ pub fn run(args: &ConvertArgs) -> Result<(), CliError> {
         degrees: args.degrees,
     };
     let (reader, input) = open_input(args.input.as_deref())?;
-    let (writer, output) = open_output(args.output.as_deref(), args.input.as_deref())?;
+    let (writer, output, pending) = open_output(args.output.as_deref(), args.input.as_deref())?;
     let mut writer = BufWriter::with_capacity(BUFFER_BYTES, writer);
     let converted = convert_stream(reader, &mut writer, conversion, &input, &output);
-    let flushed = writer
-        .flush()
-        .map_err(|source| CliError::Write { output, source });
-    converted.and(flushed)
+    let flushed = writer.flush().map_err(|source| CliError::Write {
+        output: output.clone(),
+        source,
+    });
+    converted.and(flushed)?;
+    drop(writer);
+    commit_output(pending, output)
+}
+
+/// Puts a finished `--output` file in place (see [`crate::atomic_file`]);
+/// nothing to do for standard output.
+///
+/// # Errors
+/// [`CliError::Write`] if the file cannot be renamed onto its target.
+pub(crate) fn commit_output(
+    pending: Option<crate::atomic_file::PendingFile>,
+    output: Stream,
+) -> Result<(), CliError> {
+    match pending {
+        None => Ok(()),
+        Some(pending) => pending
+            .commit()
+            .map_err(|source| CliError::Write { output, source }),
+    }
 }
 
 /// Standard input, or the file at `path`.
@@ -158,14 +179,21 @@ pub(crate) fn print_stdout(text: &str) -> Result<(), CliError> {
         })
 }
 
-/// Standard output, or the file at `path` (created or truncated), unless it
-/// is the input file (shared by the subcommands that write a stream).
-pub(crate) fn open_output(
-    path: Option<&Path>,
-    input: Option<&Path>,
-) -> Result<(Box<dyn Write>, Stream), CliError> {
+/// An output stream: the writer, its name, and the file to put in place on
+/// success (`None` for standard output).
+pub(crate) type Output = (
+    Box<dyn Write>,
+    Stream,
+    Option<crate::atomic_file::PendingFile>,
+);
+
+/// Standard output, or a temporary file beside `path` that
+/// [`commit_output`] puts in place when the run succeeds (so a failed run
+/// leaves no partial file and keeps an existing one), unless `path` is the
+/// input file (shared by the subcommands that write a stream).
+pub(crate) fn open_output(path: Option<&Path>, input: Option<&Path>) -> Result<Output, CliError> {
     let Some(path) = path else {
-        return Ok((Box::new(io::stdout().lock()), Stream::Standard));
+        return Ok((Box::new(io::stdout().lock()), Stream::Standard, None));
     };
     if let Some(input) = input {
         // Both exist when this is the same file; then creating the output
@@ -178,67 +206,19 @@ pub(crate) fn open_output(
             });
         }
     }
-    let file = File::create(path).map_err(|source| CliError::CreateOutput {
-        path: path.to_owned(),
-        source,
-    })?;
-    Ok((Box::new(file), Stream::File(path.to_owned())))
-}
-
-/// The UTF-8 byte-order mark some editors put at the start of a text file.
-const BYTE_ORDER_MARK: &[u8] = b"\xef\xbb\xbf";
-
-/// Reads one line into `buffer` (cleared first): up to and including its
-/// end, `\n`, `\r\n` or a lone `\r`, or up to `limit + 1` bytes when the
-/// line is longer. Returns the bytes consumed (0 at the end of the input).
-fn read_line<R: BufRead>(reader: &mut R, buffer: &mut Vec<u8>, limit: usize) -> io::Result<usize> {
-    buffer.clear();
-    let mut consumed = 0;
-    loop {
-        let available = match reader.fill_buf() {
-            Ok(bytes) => bytes,
-            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-            Err(e) => return Err(e),
-        };
-        if available.is_empty() {
-            return Ok(consumed);
-        }
-        let room = limit + 1 - buffer.len();
-        let window = &available[..available.len().min(room)];
-        match window.iter().position(|&b| b == b'\n' || b == b'\r') {
-            Some(at) => {
-                let end = window[at];
-                buffer.extend_from_slice(&window[..=at]);
-                reader.consume(at + 1);
-                consumed += at + 1;
-                // CRLF is one line end: take its LF too, even from the next read.
-                if end == b'\r' && reader.fill_buf()?.first() == Some(&b'\n') {
-                    buffer.push(b'\n');
-                    reader.consume(1);
-                    consumed += 1;
-                }
-                return Ok(consumed);
-            }
-            None => {
-                let n = window.len();
-                buffer.extend_from_slice(window);
-                reader.consume(n);
-                consumed += n;
-                if buffer.len() > limit {
-                    return Ok(consumed);
-                }
-            }
-        }
-    }
+    let (file, pending) =
+        crate::atomic_file::create(path).map_err(|source| CliError::CreateOutput {
+            path: path.to_owned(),
+            source,
+        })?;
+    Ok((Box::new(file), Stream::File(path.to_owned()), Some(pending)))
 }
 
 /// Converts every line of `reader` and writes the results to `writer`.
 ///
 /// Reads one line at a time into a reused buffer (at most
 /// [`MAX_LINE_BYTES`]), so memory stays constant however long the input.
-/// Lines end with `\n`, `\r\n` or a lone `\r`; a UTF-8 byte-order mark
-/// at the start of the input is skipped. Stops at the first invalid line.
-/// Does not flush `writer`.
+/// Stops at the first invalid line. Does not flush `writer`.
 ///
 /// # Errors
 /// [`CliError::Line`] for an invalid line (with its 1-based number),
@@ -253,19 +233,15 @@ pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
     let mut buffer = Vec::with_capacity(256);
     let mut line: u64 = 0;
     loop {
-        let read = read_line(&mut reader, &mut buffer, MAX_LINE_BYTES).map_err(|source| {
-            CliError::Read {
-                input: input.clone(),
-                source,
-            }
+        buffer.clear();
+        let read = read_line(&mut reader, &mut buffer).map_err(|source| CliError::Read {
+            input: input.clone(),
+            source,
         })?;
         if read == 0 {
             return Ok(());
         }
         line += 1;
-        if line == 1 && buffer.starts_with(BYTE_ORDER_MARK) {
-            buffer.drain(..BYTE_ORDER_MARK.len());
-        }
         let at_line = |problem| CliError::Line {
             location: Location {
                 input: input.clone(),
@@ -279,12 +255,111 @@ pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
             }));
         }
         let text = std::str::from_utf8(&buffer).map_err(|_| at_line(LineProblem::NotUtf8))?;
+        // A UTF-8 byte-order mark (Windows editors write one) is no content.
+        let text = if line == 1 {
+            text.strip_prefix('\u{feff}').unwrap_or(text)
+        } else {
+            text
+        };
         if let Some(numbers) = conversion.convert_line(text).map_err(at_line)? {
             write_numbers(writer, numbers.as_slice()).map_err(|source| CliError::Write {
                 output: output.clone(),
                 source,
             })?;
         }
+    }
+}
+
+/// Reads one line into `buffer`, without its terminator: `\n`, `\r\n` or a
+/// lone `\r` (classic Mac OS) ends a line. Stops after
+/// [`MAX_LINE_BYTES`]` + 1` bytes so an endless line cannot exhaust memory.
+/// Returns the number of bytes consumed (0 at the end of the input).
+fn read_line<R: BufRead>(reader: &mut R, buffer: &mut Vec<u8>) -> io::Result<usize> {
+    let mut consumed = 0;
+    loop {
+        let available = match reader.fill_buf() {
+            Ok(bytes) => bytes,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if available.is_empty() {
+            return Ok(consumed);
+        }
+        let room = MAX_LINE_BYTES + 1 - buffer.len();
+        let window = &available[..available.len().min(room)];
+        match window.iter().position(|&b| b == b'\n' || b == b'\r') {
+            Some(end) => {
+                let cr = window[end] == b'\r';
+                buffer.extend_from_slice(&window[..end]);
+                reader.consume(end + 1);
+                consumed += end + 1;
+                if cr {
+                    // `\r\n` is one terminator.
+                    let next = loop {
+                        match reader.fill_buf() {
+                            Ok(bytes) => break bytes.first().copied(),
+                            Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+                            Err(e) => return Err(e),
+                        }
+                    };
+                    if next == Some(b'\n') {
+                        reader.consume(1);
+                        consumed += 1;
+                    }
+                }
+                return Ok(consumed);
+            }
+            None => {
+                let n = window.len();
+                buffer.extend_from_slice(window);
+                reader.consume(n);
+                consumed += n;
+                if buffer.len() > MAX_LINE_BYTES {
+                    return Ok(consumed);
+                }
+            }
+        }
+    }
+}
+
+/// `text` with every control or invisible character written as `\u{…}`, so
+/// that an error message shows what is really in the input.
+pub(crate) fn escape_invisible(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        let invisible = matches!(
+            c,
+            '\u{ad}'
+                | '\u{115f}'
+                | '\u{1160}'
+                | '\u{180e}'
+                | '\u{200b}'..='\u{200f}'
+                | '\u{2028}'..='\u{202e}'
+                | '\u{2060}'..='\u{206f}'
+                | '\u{3164}'
+                | '\u{fe00}'..='\u{fe0f}'
+                | '\u{feff}'
+                | '\u{fff9}'..='\u{fffb}'
+        );
+        if c.is_control() || invisible {
+            out.extend(c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// The problem with its quoted tokens escaped (see [`escape_invisible`]).
+fn escape_problem(problem: LineProblem) -> LineProblem {
+    match problem {
+        LineProblem::BadNumber { token } => LineProblem::BadNumber {
+            token: escape_invisible(&token),
+        },
+        LineProblem::NonFinite { token } => LineProblem::NonFinite {
+            token: escape_invisible(&token),
+        },
+        other => other,
     }
 }
 
@@ -359,69 +434,31 @@ mod tests {
     }
 
     #[test]
-    fn lines_end_with_lf_crlf_or_a_lone_cr() {
-        // Regression: CR-only input (classic Mac) was one line of 8 numbers.
-        let (result, out) = convert("quat", "quat", "1 0 0 0\r0 1 0 0\r\r0 0 1 0\r\n0 0 0 1");
+    fn skips_a_byte_order_mark_and_reads_every_line_ending() {
+        // Regression: a BOM was an invisible "cannot parse" error; a lone CR
+        // (classic Mac OS) made the whole file one line.
+        let text = "\u{feff}1,0,0,0\r0,0,0,2\r\n0,1,0,0\n0,0,1,0\r";
+        let (result, out) = convert("quat", "quat", text);
         assert!(result.is_ok(), "{result:?}");
-        assert_eq!(out, "1,0,0,0\n0,1,0,0\n0,0,1,0\n0,0,0,1\n");
-        let (result, _) = convert("quat", "quat", "1 0 0 0\r# c\r1 2 3\r");
+        assert_eq!(out, "1,0,0,0\n0,0,0,1\n0,1,0,0\n0,0,1,0\n");
+        // Line numbers count CR-only lines too.
+        let (result, _) = convert("quat", "quat", "1,0,0,0\r\r0,0,0,0\r");
         assert_eq!(
             result.unwrap_err().to_string(),
-            "line 3: expected 4 numbers for quat, found 3"
+            "line 3: quaternion has zero norm"
         );
+        // A BOM later than the start is content, and shown escaped.
+        let (result, _) = convert("quat", "quat", "1,0,0,0\n\u{feff}1,0,0,0\n");
+        let e = result.unwrap_err().to_string();
+        assert!(e.contains("\\u{feff}"), "{e}");
     }
 
     #[test]
-    fn crlf_split_across_reads_is_one_line_end() {
-        // A reader that returns one byte at a time puts the LF of a CRLF in
-        // the next read: still one line end, so the error is on line 2.
-        let text = b"1 0 0 0\r\n1 2 3\r\n";
-        let reader = io::BufReader::with_capacity(1, &text[..]);
-        let conversion = Conversion {
-            from: Representation::Quat,
-            to: Representation::Quat,
-            degrees: false,
-        };
-        let mut out = Vec::new();
-        let e = convert_stream(
-            reader,
-            &mut out,
-            conversion,
-            &Stream::Standard,
-            &Stream::Standard,
-        )
-        .unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "line 2: expected 4 numbers for quat, found 3"
-        );
-        assert_eq!(out, b"1,0,0,0\n");
-    }
-
-    #[test]
-    fn a_byte_order_mark_starts_the_input_only() {
-        // Regression: a UTF-8 BOM was part of the first number, and the
-        // message quoted it invisibly.
-        let (result, out) = convert("quat", "quat", "\u{feff}1 0 0 0\n0 1 0 0\n");
-        assert!(result.is_ok(), "{result:?}");
-        assert_eq!(out, "1,0,0,0\n0,1,0,0\n");
-        let (result, _) = convert("quat", "quat", "1 0 0 0\n\u{feff}0 1 0 0\n");
-        assert_eq!(
-            result.unwrap_err().to_string(),
-            "line 2: cannot parse `\\u{feff}0` as a number"
-        );
-    }
-
-    #[test]
-    fn long_lines_are_refused_whatever_their_end() {
-        let mut long = vec![b'1'; MAX_LINE_BYTES + 1];
-        long.push(b'\r');
-        let (result, _) = convert("quat", "quat", std::str::from_utf8(&long).unwrap());
-        assert!(
-            result
-                .unwrap_err()
-                .to_string()
-                .starts_with("line 1: line is longer than"),
-        );
+    fn error_messages_show_control_characters_escaped() {
+        let (result, _) = convert("quat", "quat", "1,0,\u{7}x,0\u{1b}[31m\n");
+        let e = result.unwrap_err().to_string();
+        assert!(!e.chars().any(char::is_control), "{e:?}");
+        assert!(e.contains("\\u{7}x"), "{e}");
+        assert_eq!(escape_invisible("a\u{200b}b\tc"), "a\\u{200b}b\\u{9}c");
     }
 }

@@ -67,9 +67,8 @@ pub enum LineProblem {
         /// 1-based position of the empty field among the numbers.
         position: usize,
     },
-    /// A token that `f64::from_str` does not accept (shown with invisible
-    /// and control characters escaped, e.g. a byte-order mark as `\u{feff}`).
-    #[error("cannot parse `{}` as a number", token.escape_debug())]
+    /// A token that `f64::from_str` does not accept.
+    #[error("cannot parse `{token}` as a number")]
     BadNumber {
         /// The token as written.
         token: String,
@@ -250,24 +249,44 @@ pub enum BodyProblem {
         scale: f64,
     },
     /// The library rejected the body; for surfaces that enclose no well-defined
-    /// volume the message says which options model them anyway.
+    /// volume the message says what gives the right answer, if anything.
     #[error("{}{}", one_line(&source.to_string()), solid_hint(source))]
     Inertia {
         /// The library's description of the problem.
         #[from]
         source: InertiaError,
     },
+    /// The body is open along cracks that welding within `weld` metres
+    /// closes (checked).
+    #[error("{}; rerun with --weld {} to close them", one_line(&source.to_string()), Shortest(*weld))]
+    Cracks {
+        /// The library's description of the body's problem.
+        source: InertiaError,
+        /// A weld tolerance that closes the body, m.
+        weld: f64,
+    },
+    /// The body is open, but all bodies of the file together are closed.
+    #[error(
+        "{}; the file's bodies together form a closed surface: rerun with --merge to treat them as one solid",
+        one_line(&source.to_string())
+    )]
+    ClosedOnlyMerged {
+        /// The library's description of the body's problem.
+        source: InertiaError,
+    },
 }
 
-/// What to try when a mesh is no closed, orientable, manifold surface.
-fn solid_hint(error: &InertiaError) -> &'static str {
+/// What gives the right answer when a mesh is no closed, orientable surface
+/// and neither welding nor merging closes it: the models that hold only for
+/// some shapes, said so (never advice that silently gives a wrong mass).
+fn solid_hint(error: &InertiaError) -> String {
+    const OPEN_ON_PURPOSE: &str = "; if the surface is open on purpose, --shell models a thin-walled part (see --thickness) and --hull a convex one";
     match error {
-        InertiaError::OpenMesh { .. }
-        | InertiaError::NonManifold { .. }
-        | InertiaError::NonOrientable { .. } => {
-            "; rerun with --shell (thin shell, see --thickness) or --hull (solid convex hull)"
+        InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. } => OPEN_ON_PURPOSE.into(),
+        InertiaError::NonOrientable { .. } => {
+            "; it bounds no volume, but --shell models it as a thin wall (see --thickness)".into()
         }
-        _ => "",
+        _ => String::new(),
     }
 }
 
@@ -354,7 +373,11 @@ mod tests {
         let e = CliError::Body {
             path: PathBuf::from("part.obj"),
             body: "lid\nx".into(),
-            problem: BodyProblem::from(InertiaError::OpenMesh { boundary_edges: 4 }),
+            problem: BodyProblem::from(InertiaError::OpenMesh {
+                boundary_edges: 4,
+                at: glam::DVec3::new(1.0, 0.5, 0.0),
+                weld_gap: None,
+            }),
         };
         let text = e.to_string();
         assert!(

@@ -17,11 +17,34 @@ mod xml;
 use std::io::Write;
 use std::path::PathBuf;
 
-use kreisel_inertia::MassModel;
+use kreisel_inertia::{MassModel, Weld};
 
 use crate::error::{CliError, one_line};
 
 pub use compute::{DensityChoice, Report, Setup, Summary, compute};
+
+/// What `--weld` chooses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum WeldChoice {
+    /// Without `--weld`: within `1e-6 ×` each body's bounding-box diagonal.
+    Default,
+    /// `--weld off`: only bit-identical vertices.
+    Off,
+    /// `--weld TOL`: within TOL metres (after scaling).
+    Metres(f64),
+}
+
+impl WeldChoice {
+    /// The library's weld for a mesh whose coordinates are multiplied by
+    /// `scale` to get metres (welding happens in the file's units).
+    pub fn weld(self, scale: f64) -> Weld {
+        match self {
+            WeldChoice::Default => Weld::default(),
+            WeldChoice::Off => Weld::Exact,
+            WeldChoice::Metres(t) => Weld::Absolute(t / scale),
+        }
+    }
+}
 
 /// Wall thickness of `--shell` without `--thickness`, m.
 pub const DEFAULT_THICKNESS: f64 = 0.001;
@@ -45,13 +68,21 @@ Bodies:
   glTF scene is one body; all are in the mesh frame, and the assembly is their
   rigid sum. --mass is the mass of the assembly: one density, mass / total
   volume, is applied to every body. URDF, SDFormat and MJCF output is the
-  assembly's inertial.
+  assembly's inertial. With --merge all of them are one body (welded
+  together), for files whose objects are closed only as a whole.
 
 Meshes:
-  A solid needs a closed surface. Inconsistent winding, inside-out surfaces
-  and degenerate triangles are repaired with a warning on standard error; an
-  open mesh is an error: model it with --shell (a thin wall of --thickness T)
-  or --hull (the solid convex hull of the vertices).
+  Vertices within 1e-6 x the bounding-box diagonal are welded on loading
+  (--weld TOL in metres, or --weld off for bit-identical ones only). A solid
+  needs a closed surface: along every edge as many triangles run one way as
+  the other (edges of more than two triangles are accepted when they
+  cancel). Inconsistent winding, inside-out surfaces and degenerate
+  triangles are repaired with a warning on standard error; an open mesh is
+  an error naming where it is open and, when the gaps are tiny, the --weld
+  that closes them. A surface that is open on purpose can be modelled with
+  --shell (a thin wall of --thickness T) or, if convex, --hull (the solid
+  convex hull of the vertices). A mesh larger than 10 m or smaller than
+  1 mm after scaling gets a warning naming the likely --units.
 
 Examples:
   kreisel inertia part.stl --units mm --density 2700
@@ -105,6 +136,14 @@ pub struct InertiaArgs {
     /// Model each body as the solid convex hull of its vertices
     #[arg(long)]
     pub hull: bool,
+
+    /// Weld vertices within TOL metres (after scaling), or 'off' for bit-identical ones only [default: 1e-6 x the bounding-box diagonal]
+    #[arg(long, value_name = "TOL|off", value_parser = parse_weld, allow_hyphen_values = true)]
+    pub weld: Option<WeldChoice>,
+
+    /// Treat all objects/bodies of the file as one solid
+    #[arg(long)]
+    pub merge: bool,
 
     /// Output format
     #[arg(long, value_name = "FORMAT", value_enum, default_value_t = Format::Text)]
@@ -190,6 +229,18 @@ fn parse_thickness(text: &str) -> Result<f64, String> {
     parse_positive(text, "thickness (m)")
 }
 
+/// `--weld`: `off`, or a tolerance in metres, non-negative and finite.
+fn parse_weld(text: &str) -> Result<WeldChoice, String> {
+    let text = text.trim();
+    if text.eq_ignore_ascii_case("off") {
+        return Ok(WeldChoice::Off);
+    }
+    match text.parse::<f64>() {
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(WeldChoice::Metres(v)),
+        _ => Err("weld tolerance must be 'off' or a non-negative finite number of metres".into()),
+    }
+}
+
 impl InertiaArgs {
     /// The units, model and material these options choose.
     pub fn setup(&self) -> Setup {
@@ -218,6 +269,8 @@ impl InertiaArgs {
             scale,
             model,
             density,
+            weld: self.weld.unwrap_or(WeldChoice::Default),
+            merge: self.merge,
         }
     }
 }
@@ -232,6 +285,14 @@ impl InertiaArgs {
 pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
     let report = compute(args.setup())?;
     let mut stderr = std::io::stderr();
+    for warning in &report.file_warnings {
+        let _ = writeln!(
+            stderr,
+            "kreisel: warning: {}: {}",
+            report.setup.file.display(),
+            one_line(warning)
+        );
+    }
     for body in &report.bodies {
         for warning in &body.warnings {
             // Like main's error line: never fail because stderr is closed.
@@ -269,6 +330,20 @@ mod tests {
                 "{bad}: {e}"
             );
         }
+    }
+
+    #[test]
+    fn weld_is_off_or_metres() {
+        assert_eq!(parse_weld("OFF"), Ok(WeldChoice::Off));
+        assert_eq!(parse_weld("1e-5"), Ok(WeldChoice::Metres(1e-5)));
+        assert_eq!(parse_weld("0"), Ok(WeldChoice::Metres(0.0)));
+        for bad in ["-1", "nan", "inf", "x"] {
+            assert!(parse_weld(bad).is_err(), "{bad}");
+        }
+        assert_eq!(
+            WeldChoice::Metres(1e-6).weld(1e-3),
+            Weld::Absolute(1e-6 / 1e-3)
+        );
     }
 
     #[test]

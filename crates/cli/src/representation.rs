@@ -183,10 +183,12 @@ impl FromStr for Representation {
             "rotvec" => Ok(Representation::RotVec),
             "axis-angle" => Ok(Representation::AxisAngle),
             _ => match text.strip_prefix("euler:") {
-                Some(sequence) => sequence
-                    .parse()
-                    .map(Representation::Euler)
-                    .map_err(|e| format!("{e}; valid representations: {VALID_NAMES}")),
+                Some(sequence) => sequence.parse().map(Representation::Euler).map_err(|e| {
+                    format!(
+                        "{}; valid representations: {VALID_NAMES}",
+                        crate::convert::escape_invisible(&e.to_string())
+                    )
+                }),
                 None => Err(format!(
                     "unknown representation; valid representations: {VALID_NAMES}"
                 )),

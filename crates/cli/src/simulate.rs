@@ -20,7 +20,7 @@ use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
-use kreisel_dynamics::{FreeBodyIntegrator, HeavyTopIntegrator, PrincipalState};
+use kreisel_dynamics::{DivergenceCheck, FreeBodyIntegrator, HeavyTopIntegrator, PrincipalState};
 
 use self::output::CsvWriter;
 use self::progress::Progress;
@@ -104,6 +104,10 @@ Output (CSV; standard output unless --output):
   terminal (not when the CSV goes to the same terminal).
 
 Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
+  A body whose state becomes non-finite, or whose energy, |L| or |q| drifts
+  by more than a factor of 10 (a step far beyond the method's stability),
+  stops the run: SCENE: body `NAME`: method M diverged at t = T s (...),
+  with a hint; exit status 1. The rows written before it are valid.
 
 Examples:
   kreisel simulate spin.toml --output spin.csv
@@ -119,7 +123,7 @@ pub struct SimulateArgs {
     #[arg(value_name = "SCENE", required_unless_present = "list_methods")]
     pub scene: Option<PathBuf>,
 
-    /// Write the CSV to FILE (created or truncated) instead of standard output
+    /// Write the CSV to FILE (replaced only when the whole run succeeds) instead of standard output
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
@@ -172,7 +176,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     } else {
         None
     };
-    let (writer, output) = crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
+    let (writer, output, pending) =
+        crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
     let mut progress = Progress::new(
         scene.schedule.steps(),
         Progress::wanted(output == Stream::Standard),
@@ -185,10 +190,80 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     };
     let simulated = simulate(&scene, methods, &mut csv, &mut progress);
     progress.finish();
+    // The rows written before a divergence are valid: flushed either way.
     let flushed = csv.flush();
-    simulated
-        .and(flushed)
-        .map_err(|source| write_error(&output, source))
+    drop(csv);
+    match simulated {
+        // A failed write leaves no --output file (the pending one is dropped).
+        Err(Stop::Write(source)) => Err(write_error(&output, source)),
+        Err(Stop::Diverged { body, time, error }) => {
+            // The rows before the divergence are valid: the file keeps them.
+            flushed.map_err(|source| write_error(&output, source))?;
+            crate::convert::commit_output(pending, output)?;
+            let body = &scene.bodies[body].name;
+            Err(diverged(scene_path, body, time, &error, name))
+        }
+        Ok(()) => {
+            flushed.map_err(|source| write_error(&output, source))?;
+            // Whole or not at all: the --output file appears only now.
+            crate::convert::commit_output(pending, output)
+        }
+    }
+}
+
+/// Why a run stopped early.
+enum Stop {
+    /// Writing a row failed.
+    Write(io::Error),
+    /// Body number `body` (0-based) diverged or its method refused a step.
+    Diverged {
+        body: usize,
+        /// The end of the step that failed, s.
+        time: f64,
+        error: kreisel_dynamics::DynamicsError,
+    },
+}
+
+impl From<io::Error> for Stop {
+    fn from(source: io::Error) -> Self {
+        Stop::Write(source)
+    }
+}
+
+/// The one line for a body whose run diverged: the scene, the body, the
+/// time, the method, and what to try instead.
+fn diverged(
+    scene_path: &std::path::Path,
+    body: &str,
+    time: f64,
+    error: &kreisel_dynamics::DynamicsError,
+    method: &str,
+) -> CliError {
+    use kreisel_dynamics::DynamicsError;
+    let hint = if method == AUTO {
+        "use a smaller dt".to_owned()
+    } else {
+        format!("use a smaller dt or the default method ({AUTO})")
+    };
+    let message = match error {
+        DynamicsError::Diverged {
+            method: used,
+            time,
+            reason,
+        } => format!(
+            "body `{body}`: method {used} diverged at t = {} s ({reason}); {hint}",
+            crate::numbers::Shortest(*time)
+        ),
+        other => format!(
+            "body `{body}`: the step to t = {} s failed: {other}; {hint}",
+            crate::numbers::Shortest(time)
+        ),
+    };
+    CliError::Scene {
+        path: scene_path.to_owned(),
+        line: None,
+        message,
+    }
 }
 
 /// Writes the method list to standard output.
@@ -215,18 +290,33 @@ struct Methods<'a> {
     heavy: Option<&'a dyn HeavyTopIntegrator>,
 }
 
-/// Steps every body through the schedule, writing the rows it asks for.
+/// Steps every body through the schedule, writing the rows it asks for,
+/// and checks every state reached ([`DivergenceCheck`]): a body whose state
+/// becomes non-finite or whose invariants blow up stops the run before its
+/// row is written.
 ///
 /// # Errors
-/// The writer's errors.
+/// The writer's errors; the first divergence, with the body's index.
 fn simulate<W: Write>(
     scene: &Scene,
     methods: Methods<'_>,
     csv: &mut CsvWriter<W>,
     progress: &mut Progress,
-) -> io::Result<()> {
+) -> Result<(), Stop> {
     let schedule = &scene.schedule;
     let mut states: Vec<PrincipalState> = scene.bodies.iter().map(|b| b.initial).collect();
+    let checks: Vec<DivergenceCheck<'_>> = scene
+        .bodies
+        .iter()
+        .map(|b| match (&b.top, methods.heavy) {
+            (Some(top), Some(heavy)) => DivergenceCheck::heavy_top(heavy.name(), top, &b.initial),
+            _ => DivergenceCheck::free_body(
+                methods.free.name(),
+                b.rigid.principal_moments(),
+                &b.initial,
+            ),
+        })
+        .collect();
     // One propagator per body: the exact solution is prepared once here.
     let mut propagators: Vec<_> = scene
         .bodies
@@ -241,8 +331,16 @@ fn simulate<W: Write>(
     csv.rows(scene, &states, 0.0)?;
     for k in 1..=schedule.steps() {
         let h = schedule.step_size(k);
-        for (propagator, state) in propagators.iter_mut().zip(&mut states) {
-            propagator.advance(h);
+        let t = schedule.time(k);
+        for (body, (propagator, state)) in propagators.iter_mut().zip(&mut states).enumerate() {
+            propagator
+                .try_advance(h)
+                .and_then(|()| checks[body].check(&propagator.state(), t))
+                .map_err(|error| Stop::Diverged {
+                    body,
+                    time: t,
+                    error,
+                })?;
             *state = propagator.state();
         }
         if schedule.writes_row(k) {

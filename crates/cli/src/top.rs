@@ -33,6 +33,8 @@ Model:
   pivot to the centre of mass (J). Euler angles z-x-z: theta is the angle of
   the symmetry axis from the upward vertical (theta = 0: upright), phi the
   precession about the vertical, psi the spin about the symmetry axis.
+  Every real body has I3 <= 2 I1 (I3 <= I1 + I2 about the centre of mass;
+  I1 about the pivot is larger still); theta0 lies in [0, pi].
   With u = cos theta, du/dt^2 = f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2.
 
 Output (SI units, radians; numbers in shortest round-trip form):
@@ -61,7 +63,7 @@ pub struct TopArgs {
     #[arg(long, value_name = "I1", allow_hyphen_values = true)]
     pub i1: f64,
 
-    /// Moment of inertia about the symmetry axis, kg m^2
+    /// Moment of inertia about the symmetry axis, kg m^2 (positive, at most 2 I1)
     #[arg(long, value_name = "I3", allow_hyphen_values = true)]
     pub i3: f64,
 
@@ -69,7 +71,7 @@ pub struct TopArgs {
     #[arg(long, value_name = "MGL", allow_hyphen_values = true)]
     pub mgl: f64,
 
-    /// Initial angle of the symmetry axis from the upward vertical, rad
+    /// Initial angle of the symmetry axis from the upward vertical, rad, in [0, pi]
     #[arg(long, value_name = "TH", allow_hyphen_values = true)]
     pub theta0: f64,
 
@@ -255,13 +257,18 @@ fn option_name(parameter: &str) -> String {
 
 /// The library's error as an error about the option it names.
 fn dynamics_error(error: DynamicsError) -> CliError {
-    let message = crate::error::one_line(&error.to_string());
     match error {
-        DynamicsError::InvalidTop { parameter, .. } => CliError::Argument {
+        DynamicsError::InvalidTop {
+            parameter,
+            value,
+            reason,
+        } => CliError::Argument {
             argument: option_name(parameter),
-            message,
+            message: format!("{}: {reason}", Shortest(value)),
         },
-        _ => CliError::Top { message },
+        _ => CliError::Top {
+            message: crate::error::one_line(&error.to_string()),
+        },
     }
 }
 
@@ -413,7 +420,7 @@ fn plot(
         path: path.to_owned(),
         message: e.to_string(),
     })?;
-    std::fs::write(path, bytes).map_err(|source| CliError::Plot {
+    crate::atomic_file::write_file(path, &bytes).map_err(|source| CliError::Plot {
         path: path.to_owned(),
         message: format!("cannot write the file: {source}"),
     })

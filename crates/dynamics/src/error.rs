@@ -42,6 +42,46 @@ pub enum DynamicsError {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A run stopped because its state became non-finite or an invariant
+    /// blew up (see [`crate::DivergenceCheck`]): the step is too large for
+    /// the method, or the method has no solution at this step.
+    #[error("{method} diverged at t = {time} s: {reason}")]
+    Diverged {
+        /// The method's registry name.
+        method: &'static str,
+        /// The time of the first state found bad, s.
+        time: f64,
+        /// What went wrong.
+        reason: Divergence,
+    },
+    /// A step that would need more sub-steps than a method allows (the
+    /// heavy-top `auto`): a request that cannot be met in reasonable time.
+    #[error(
+        "{method}: a step of {h} s needs {needed:e} sub-steps to stay stable, more than the limit of {limit}"
+    )]
+    TooManySubsteps {
+        /// The method's registry name.
+        method: &'static str,
+        /// The step asked for, s.
+        h: f64,
+        /// The sub-steps it would need (may be infinite).
+        needed: f64,
+        /// The most sub-steps a step may take.
+        limit: usize,
+    },
+    /// A principal-axis index other than 0, 1 or 2.
+    #[error("principal axis {axis} does not exist (0, 1 or 2)")]
+    InvalidAxis {
+        /// The index given.
+        axis: usize,
+    },
+    /// A spin rate that is not finite, or so large that the quantities
+    /// derived from it overflow.
+    #[error("spin rate {omega} rad/s is not finite or too large to analyse")]
+    InvalidRate {
+        /// The rate given, rad/s.
+        omega: f64,
+    },
     /// A method name that the registry does not know.
     #[error("unknown method `{name}` (known: {known})")]
     UnknownMethod {
@@ -50,4 +90,39 @@ pub enum DynamicsError {
         /// The known names, comma-separated.
         known: String,
     },
+}
+
+/// Why a run was declared diverged ([`DynamicsError::Diverged`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Divergence {
+    /// The attitude or the angular momentum is NaN or infinite.
+    NonFinite,
+    /// A conserved quantity left its band: its value now and at the start.
+    Drift {
+        /// Which quantity (`"energy"`, `"|L|"`, `"|q|"`).
+        quantity: &'static str,
+        /// Its value at the start.
+        initial: f64,
+        /// Its value now.
+        current: f64,
+    },
+}
+
+impl std::fmt::Display for Divergence {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Divergence::NonFinite => write!(f, "the state is no longer finite"),
+            Divergence::Drift {
+                quantity,
+                initial,
+                current,
+            } => write!(
+                f,
+                "{quantity}, conserved by the exact motion, went from {initial:.4e} to \
+                 {current:.4e}: beyond a factor {}",
+                crate::DIVERGENCE_FACTOR
+            ),
+        }
+    }
 }

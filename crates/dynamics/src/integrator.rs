@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use crate::{DynamicsError, PrincipalState};
+use crate::{DivergenceCheck, DynamicsError, PrincipalState, RigidBody};
 
 /// A one-step method for the torque-free rigid body in its principal frame.
 pub trait FreeBodyIntegrator {
@@ -12,6 +12,11 @@ pub trait FreeBodyIntegrator {
     /// The order of the method (global error `O(hᵖ)`).
     fn order(&self) -> u32;
     /// Advances `state` by `h` seconds for principal moments `moments`.
+    ///
+    /// Infallible by design (the inner loop of every run): a step that has
+    /// no solution (an implicit method beyond its range) or bad moments
+    /// leaves a non-finite state, which [`integrate`] and
+    /// [`DivergenceCheck`] report as [`DynamicsError::Diverged`].
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64);
 
     /// One body from `state`, to be advanced step after step: what
@@ -45,8 +50,19 @@ pub trait FreeBodyIntegrator {
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 pub trait Propagator {
-    /// Advances the body by `h` seconds.
+    /// Advances the body by `h` seconds (a step the method cannot take
+    /// leaves a non-finite state: see [`DivergenceCheck`]).
     fn advance(&mut self, h: f64);
+    /// Advances the body by `h` seconds, or says why the method refuses the
+    /// step (e.g. the heavy-top `auto`'s sub-step cap). By default one
+    /// [`Propagator::advance`].
+    ///
+    /// # Errors
+    /// The method's refusal, e.g. [`DynamicsError::TooManySubsteps`].
+    fn try_advance(&mut self, h: f64) -> Result<(), DynamicsError> {
+        self.advance(h);
+        Ok(())
+    }
     /// The current state.
     fn state(&self) -> PrincipalState;
 }
@@ -68,14 +84,27 @@ impl<M: FreeBodyIntegrator + ?Sized> Propagator for Stepping<'_, M> {
     }
 }
 
-/// Advances `state` by `steps` steps of size `h`.
+/// Advances `state` by `steps` steps of size `h`, checking every state
+/// reached ([`DivergenceCheck`]).
 ///
 /// ```text
 /// x(t₀ + n h) ≈ Φₕⁿ x(t₀)
 /// ```
 ///
+/// The answer does not depend on the unit system: every method works in
+/// the body's own unit of inertia ([`RigidBody`]'s checks keep it
+/// representable), so moments scaled by `s` (and `L` with them) give the
+/// same attitude, and `ω` scaled by `s` with `h` by `1/s` the same motion,
+/// to rounding.
+///
 /// # Errors
-/// [`DynamicsError::InvalidStep`] for `h` that is not positive and finite.
+/// [`DynamicsError::InvalidStep`] for `h` that is not positive and finite;
+/// [`DynamicsError::UnphysicalInertia`] for moments that
+/// [`RigidBody::try_from_principal_moments`] refuses;
+/// [`DynamicsError::InvalidState`] for a state that
+/// [`PrincipalState::validate`] refuses; [`DynamicsError::Diverged`] when a
+/// state becomes non-finite or drifts beyond [`crate::DIVERGENCE_FACTOR`]
+/// (`state` then holds the last good state).
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
@@ -85,6 +114,10 @@ impl<M: FreeBodyIntegrator + ?Sized> Propagator for Stepping<'_, M> {
 /// // Spin about a principal axis: uniform rotation by ω t = 1 rad
 /// // (RK4's phase error here: 100 · (h ω/2)⁵/120 ≈ 3e-12 rad).
 /// assert!(kreisel_kinematics::rotation_angle_between(s.world_from_principal, DQuat::from_rotation_z(1.0)) < 1e-10);
+/// // h ω = 100: far beyond RK4's stability, an error rather than NaN.
+/// let mut fast = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(1e4, 2e2, 0.0) };
+/// let e = integrate(method("rk4")?.as_ref(), DVec3::new(1.0, 2.0, 3.0), &mut fast, 0.01, 100).unwrap_err();
+/// assert!(matches!(e, kreisel_dynamics::DynamicsError::Diverged { method: "rk4", .. }), "{e}");
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 pub fn integrate(
@@ -97,11 +130,16 @@ pub fn integrate(
     if !(h.is_finite() && h > 0.0) {
         return Err(DynamicsError::InvalidStep { h });
     }
+    RigidBody::try_from_principal_moments(moments)?;
+    state.validate(moments)?;
+    let check = DivergenceCheck::free_body(method.name(), moments, state);
     let mut body = method.propagator(moments, *state);
-    for _ in 0..steps {
+    for k in 1..=steps {
         body.advance(h);
+        let next = body.state();
+        check.check(&next, k as f64 * h)?;
+        *state = next;
     }
-    *state = body.state();
     Ok(())
 }
 

@@ -47,6 +47,7 @@
 #![forbid(unsafe_code)]
 
 mod composition;
+mod divergence;
 pub mod elliptic;
 mod error;
 mod exact;
@@ -63,11 +64,12 @@ mod stability;
 mod state;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
-pub use error::DynamicsError;
+pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
+pub use error::{Divergence, DynamicsError};
 pub use exact::{ExactFlow, ExactPropagator, ExactSolution};
 pub use heavy_top::{
     HEAVY_TOP_METHODS, HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
-    heavy_top_method, integrate_heavy_top,
+    MAX_SUBSTEPS, heavy_top_method, integrate_heavy_top,
 };
 pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};
 pub use lagrange_top::{
@@ -76,8 +78,10 @@ pub use lagrange_top::{
 };
 pub use moser_veselov::MoserVeselov;
 pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;
-pub use rigid_body::RigidBody;
+pub use rigid_body::{MIN_MOMENT_RATIO, RigidBody};
 pub use rk4::Rk4;
 pub use splitting::{AxisStrang, SymmetricTopSplitting};
-pub use stability::{AxisStability, EllipticMotion, axis_stability, elliptic_motion};
+pub use stability::{
+    AxisStability, EllipticMotion, axis_stability, elliptic_motion, try_axis_stability,
+};
 pub use state::PrincipalState;

@@ -21,6 +21,7 @@
 
 use glam::{DQuat, DVec3};
 
+use crate::rigid_body::moment_scale;
 use crate::{FreeBodyIntegrator, PrincipalState};
 
 /// Most Newton iterations per step; one or two suffice at `|h ω| ≤ 0.5`.
@@ -66,7 +67,10 @@ fn initial_guess(b: DVec3, gamma: DVec3) -> DVec3 {
 /// series [`initial_guess`].
 ///
 /// Returns `None` if the iteration produced a non-finite vector or a
-/// singular Jacobian (steps far beyond `|h ω| ~ 1`, or unphysical moments).
+/// singular Jacobian, or had not converged after `MAX_NEWTON` iterations
+/// (steps far beyond `|h ω| ~ 1`, or unphysical moments). All the
+/// quantities are pure numbers (`b = (h/2) I⁻¹L`, `γ`), so the tolerances
+/// are relative and the same in every unit system.
 ///
 /// Stopping rule: Newton's error after an update `δ` is about
 /// `κ |δ|²` with `κ = max|γᵢ| + 2|b|` (the size of the second derivative
@@ -79,6 +83,7 @@ pub(crate) fn solve_cayley(b: DVec3, gamma: DVec3) -> Option<DVec3> {
     let mut c = initial_guess(b, gamma);
     let kappa = gamma.abs().max_element() + 2.0 * b.length();
     let mut last = f64::INFINITY;
+    let mut done = false;
     for _ in 0..MAX_NEWTON {
         let alpha = 1.0 + c.length_squared();
         let residual = c - alpha * b - product_term(gamma, c);
@@ -103,22 +108,38 @@ pub(crate) fn solve_cayley(b: DVec3, gamma: DVec3) -> Option<DVec3> {
         let converged = kappa * size * size <= 0.25 * f64::EPSILON * scale;
         let stalled = size >= last && size <= 1e-8 * scale;
         if converged || stalled || size == 0.0 {
+            done = true;
             break;
         }
         last = size;
     }
-    c.is_finite().then_some(c)
+    // Newton still moving after MAX_NEWTON iterations has found no
+    // solution (the step is beyond the method's range): never a guess.
+    (done && c.is_finite()).then_some(c)
 }
 
 /// One DMV step with the inverse moments `s / Iₖ + d` (`s = 1`, `d = 0`
-/// for DMV itself): solve for `c`, then `q ← q ⊗ p`, `L ← p̄ L p`. Leaves
-/// the state unchanged when the implicit equation has no usable solution.
+/// for DMV itself): solve for `c`, then `q ← q ⊗ p`, `L ← p̄ L p`. A step
+/// whose implicit equation has no usable solution (`|h ω|` far beyond 1)
+/// leaves a NaN state, for the caller's divergence check to report.
+///
+/// Nondimensional: `moments` are in the body's unit of inertia
+/// ([`crate::rigid_body::moment_scale`], the largest in `[1, 2)`), `d` in
+/// its inverse; `L` is divided by `unit` here and multiplied back (both
+/// exact), so `b`, `γ` and `c` are pure numbers whatever the unit system.
 ///
 /// Two divisions for the moments: with `P = I₁I₂I₃`, `1/Iᵢ = IⱼIₖ/P`; and
 /// with `Ĩᵢ⁻¹ = s/Iᵢ + d`, `γᵢ = (Ĩⱼ − Ĩₖ) Ĩᵢ⁻¹ = s (Iⱼ − Iₖ) Iᵢ Ĩᵢ⁻² / (P Π Ĩ⁻¹)`
 /// (the differences `Iⱼ − Iₖ` taken of the moments themselves).
 #[inline]
-pub(crate) fn dmv_step(moments: DVec3, s: f64, d: f64, state: &mut PrincipalState, h: f64) {
+pub(crate) fn dmv_step(
+    moments: DVec3,
+    unit: f64,
+    s: f64,
+    d: f64,
+    state: &mut PrincipalState,
+    h: f64,
+) {
     let m = moments;
     let inv_p = 1.0 / (m.x * m.y * m.z);
     let inv = s * inv_p * DVec3::new(m.y * m.z, m.z * m.x, m.x * m.y) + d;
@@ -129,9 +150,13 @@ pub(crate) fn dmv_step(moments: DVec3, s: f64, d: f64, state: &mut PrincipalStat
     } else {
         diff * m * inv * inv * (s * inv_p / (inv.x * inv.y * inv.z))
     };
-    let l = state.l_principal;
+    let l = state.l_principal / unit;
     let b = (0.5 * h) * inv * l;
     let Some(c) = solve_cayley(b, gamma) else {
+        *state = PrincipalState {
+            world_from_principal: DQuat::NAN,
+            l_principal: DVec3::NAN,
+        };
         return;
     };
     let alpha = 1.0 + c.length_squared();
@@ -142,10 +167,7 @@ pub(crate) fn dmv_step(moments: DVec3, s: f64, d: f64, state: &mut PrincipalStat
     let l_new = l + (2.0 * inv_alpha) * (c.cross(t) - t);
     let w = root * inv_alpha;
     let p = DQuat::from_xyzw(c.x * w, c.y * w, c.z * w, w);
-    if !(l_new.is_finite() && p.is_finite()) {
-        return;
-    }
-    state.l_principal = l_new;
+    state.l_principal = l_new * unit;
     state.world_from_principal *= p;
 }
 
@@ -190,7 +212,8 @@ impl FreeBodyIntegrator for MoserVeselov {
     }
 
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {
-        dmv_step(moments, 1.0, 0.0, state, h);
+        let unit = moment_scale(moments);
+        dmv_step(moments / unit, unit, 1.0, 0.0, state, h);
     }
 }
 

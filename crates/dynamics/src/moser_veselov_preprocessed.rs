@@ -18,6 +18,7 @@
 use glam::DVec3;
 
 use crate::moser_veselov::dmv_step;
+use crate::rigid_body::moment_scale;
 use crate::{FreeBodyIntegrator, PrincipalState, Propagator};
 
 /// Number of coefficients of `s` (and of `d`) through degree 4.
@@ -291,8 +292,10 @@ impl PreprocessedMoserVeselov {
     /// assert!(dev > 1e-4 && dev < 1e-2);
     /// ```
     pub fn modified_inverse_moments(&self, moments: DVec3, l: DVec3, h: f64) -> DVec3 {
-        let (s, d) = self.scale_and_shift(moments, l, h);
-        s / moments + d
+        let unit = moment_scale(moments);
+        let m = moments / unit;
+        let (s, d) = self.scale_and_shift(m, l / unit, h);
+        (s / m + d) / unit
     }
 
     /// The same method with the moment-only part of the corrections
@@ -319,8 +322,9 @@ impl PreprocessedMoserVeselov {
     /// assert_eq!(a, b);
     /// ```
     pub fn for_body(self, moments: DVec3) -> Self {
+        let m = moments / moment_scale(moments);
         Self {
-            prepared: Some((moments, Series::new(moments, self.terms()))),
+            prepared: Some((m, Series::new(m, self.terms()))),
             ..self
         }
     }
@@ -330,7 +334,11 @@ impl PreprocessedMoserVeselov {
         (self.order / 2).saturating_sub(1) as usize
     }
 
-    /// `(s, d)` of [`Self::modified_inverse_moments`].
+    /// `(s, d)` of [`Self::modified_inverse_moments`] for moments `m` and
+    /// `l` in the body's unit of inertia (the largest moment in `[1, 2)`):
+    /// `x`, `y` are then the pure numbers `(hω)²`-like they are meant to
+    /// be, and the coefficients (up to `1/(I₁I₂I₃)⁴`) stay in range; in SI
+    /// units they overflowed for moments ≤ 1e-26 kg m².
     #[inline]
     fn scale_and_shift(&self, moments: DVec3, l: DVec3, h: f64) -> (f64, f64) {
         if self.terms() == 0 {
@@ -364,8 +372,10 @@ impl FreeBodyIntegrator for PreprocessedMoserVeselov {
     }
 
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {
-        let (s, d) = self.scale_and_shift(moments, state.l_principal, h);
-        dmv_step(moments, s, d, state, h);
+        let unit = moment_scale(moments);
+        let m = moments / unit;
+        let (s, d) = self.scale_and_shift(m, state.l_principal / unit, h);
+        dmv_step(m, unit, s, d, state, h);
     }
 
     /// Steps of [`PreprocessedMoserVeselov::for_body`]: the same results,

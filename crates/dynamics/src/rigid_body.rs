@@ -21,22 +21,49 @@ pub struct RigidBody {
 /// bodies meet it with equality, up to rounding).
 const TRIANGLE_SLACK: f64 = 1e-12;
 
+/// The smallest ratio `I_min / I_max` accepted: beyond 100 orders of
+/// magnitude between two moments, the products the methods form of the
+/// nondimensional moments (`I₁I₂I₃`, its inverse powers) leave `f64`'s range.
+pub const MIN_MOMENT_RATIO: f64 = 1e-100;
+
+/// The power of two `2ᵏ` with `max(Iₖ) / 2ᵏ ∈ [1, 2)`: the unit of inertia
+/// the methods work in. Dividing the moments and `L` by it is exact (a
+/// change of exponent), so a method's rounding is the same whatever the
+/// unit system, and bodies whose moments differ by a power of two move bit
+/// for bit alike; `ω = I⁻¹L` is unchanged. (For moments that are not
+/// positive normal numbers the result is 0 or ∞, and the step is NaN.)
+///
+/// ```text
+/// Î = I / 2ᵏ,   L̂ = L / 2ᵏ,   ω̂ = Î⁻¹ L̂ = ω
+/// ```
+#[inline]
+pub(crate) fn moment_scale(moments: DVec3) -> f64 {
+    f64::from_bits(moments.max_element().to_bits() & 0x7ff0_0000_0000_0000)
+}
+
 impl RigidBody {
     /// A body whose body axes are principal axes, with moments `(I₁, I₂, I₃)`.
     ///
     /// ```text
-    /// Iₖ > 0,   Iᵢ + Iⱼ ≥ Iₖ (each pair, to 1e-12 relative)
+    /// Iₖ > 0 normal,   I_min / I_max ≥ 1e-100,   Iᵢ + Iⱼ ≥ Iₖ (each pair, to 1e-12 relative)
     /// ```
     ///
     /// # Errors
-    /// [`DynamicsError::UnphysicalInertia`] for a moment that is not positive
-    /// and finite, or moments breaking the triangle inequality.
+    /// [`DynamicsError::UnphysicalInertia`] for a moment that is not a
+    /// positive, finite, normal number (a subnormal moment such as 1e-320
+    /// has lost its digits), moments more than [`MIN_MOMENT_RATIO`] apart,
+    /// or moments breaking the triangle inequality.
     ///
     /// ```
     /// use glam::DVec3;
     /// use kreisel_dynamics::RigidBody;
     /// assert!(RigidBody::try_from_principal_moments(DVec3::new(1.0, 2.0, 3.0)).is_ok());
     /// assert!(RigidBody::try_from_principal_moments(DVec3::new(1.0, 1.0, 3.0)).is_err());
+    /// // Any unit system: a 1 µm sphere, a planet.
+    /// assert!(RigidBody::try_from_principal_moments(DVec3::splat(4e-28)).is_ok());
+    /// assert!(RigidBody::try_from_principal_moments(DVec3::splat(8e37)).is_ok());
+    /// // A subnormal moment cannot be represented.
+    /// assert!(RigidBody::try_from_principal_moments(DVec3::splat(1e-320)).is_err());
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn try_from_principal_moments(moments: DVec3) -> Result<Self, DynamicsError> {
@@ -47,7 +74,16 @@ impl RigidBody {
         if !moments.to_array().iter().all(|m| m.is_finite() && *m > 0.0) {
             return Err(bad("every principal moment must be positive and finite"));
         }
-        let [a, b, c] = moments.to_array();
+        if !moments.to_array().iter().all(|m| m.is_normal()) {
+            return Err(bad(
+                "a moment below 2.2e-308 kg m^2 is subnormal: it has lost its digits and cannot be represented",
+            ));
+        }
+        if moments.min_element() / moments.max_element() < MIN_MOMENT_RATIO {
+            return Err(bad("the moments span more than 100 orders of magnitude"));
+        }
+        // In the body's own unit (exact): no overflow for moments near f64::MAX.
+        let [a, b, c] = (moments / moment_scale(moments)).to_array();
         let largest = a.max(b).max(c);
         if a + b + c - largest < largest * (1.0 - TRIANGLE_SLACK) {
             return Err(bad("the triangle inequality I₁ + I₂ ≥ I₃ is broken"));

@@ -5,6 +5,7 @@ use glam::DVec3;
 
 use crate::elliptic::complete_k_complementary;
 use crate::elliptic::dd::Dd;
+use crate::{DynamicsError, RigidBody};
 
 /// The linearised behaviour of a small perturbation of steady spin about a
 /// principal axis.
@@ -33,6 +34,13 @@ pub enum AxisStability {
 /// λ² > 0: unstable, growth rate λ;   λ² < 0: stable, frequency √(−λ²)
 /// ```
 ///
+/// Any `axis` is taken mod 3 (`usize::MAX` included). For checked inputs
+/// see [`try_axis_stability`].
+///
+/// # Panics
+/// Never; for moments or a rate that [`try_axis_stability`] refuses the
+/// result is meaningless (e.g. [`AxisStability::Neutral`] for a NaN rate).
+///
 /// ```
 /// use glam::DVec3;
 /// use kreisel_dynamics::{axis_stability, AxisStability};
@@ -46,8 +54,12 @@ pub enum AxisStability {
 /// ```
 pub fn axis_stability(moments: DVec3, axis: usize, omega: f64) -> AxisStability {
     let m = moments.to_array();
-    let (a, b, c) = (axis % 3, (axis + 1) % 3, (axis + 2) % 3);
-    let lambda2 = omega * omega * (m[a] - m[b]) * (m[c] - m[a]) / (m[b] * m[c]);
+    let a = axis % 3;
+    let (b, c) = ((a + 1) % 3, (a + 2) % 3);
+    // In the body's unit of inertia, ω factored out: no overflow of ω² I².
+    let unit = crate::rigid_body::moment_scale(moments);
+    let [ma, mb, mc] = [m[a] / unit, m[b] / unit, m[c] / unit];
+    let lambda2 = ((ma - mb) * (mc - ma) / (mb * mc)) * omega * omega;
     if lambda2 > 0.0 {
         AxisStability::Unstable {
             growth_rate: lambda2.sqrt(),
@@ -59,6 +71,50 @@ pub fn axis_stability(moments: DVec3, axis: usize, omega: f64) -> AxisStability 
     } else {
         AxisStability::Neutral
     }
+}
+
+/// [`axis_stability`] for checked inputs: physical moments, a principal
+/// axis 0, 1 or 2, a rate whose `λ` is finite.
+///
+/// ```text
+/// λ² = Ω² (I_a − I_b)(I_c − I_a) / (I_b I_c)
+/// ```
+///
+/// # Errors
+/// [`DynamicsError::UnphysicalInertia`] as
+/// [`RigidBody::try_from_principal_moments`];
+/// [`DynamicsError::InvalidAxis`] for `axis > 2`;
+/// [`DynamicsError::InvalidRate`] for a rate that is not finite or whose
+/// `λ²` overflows (e.g. `1e300` rad/s).
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{try_axis_stability, AxisStability};
+/// let m = DVec3::new(1.0, 2.0, 3.0);
+/// assert!(matches!(try_axis_stability(m, 1, 1.0)?, AxisStability::Unstable { .. }));
+/// assert!(try_axis_stability(m, usize::MAX, 1.0).is_err());
+/// assert!(try_axis_stability(m, 1, 1e300).is_err());
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+pub fn try_axis_stability(
+    moments: DVec3,
+    axis: usize,
+    omega: f64,
+) -> Result<AxisStability, DynamicsError> {
+    RigidBody::try_from_principal_moments(moments)?;
+    if axis > 2 {
+        return Err(DynamicsError::InvalidAxis { axis });
+    }
+    let result = axis_stability(moments, axis, omega);
+    let rate = match result {
+        AxisStability::Stable { frequency } => frequency,
+        AxisStability::Unstable { growth_rate } => growth_rate,
+        AxisStability::Neutral => 0.0,
+    };
+    if !(omega.is_finite() && rate.is_finite()) {
+        return Err(DynamicsError::InvalidRate { omega });
+    }
+    Ok(result)
 }
 
 /// The periodic body-frame motion of a free asymmetric body, in the terms
@@ -166,4 +222,36 @@ pub(crate) fn energy_deltas(moments: [f64; 3], l: [f64; 3]) -> [f64; 3] {
     let d2 = term(l1, i1, i2).add(term(l3, i3, i2)).to_f64();
     let d3 = term(l1, i1, i3).neg().add(term(l2, i2, i3).neg()).to_f64();
     [d1, d2, d3]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Regression: `axis_stability(_, usize::MAX, _)` overflowed computing
+    /// `axis + 1`. Any index is taken mod 3 (usize::MAX ≡ 0), and the
+    /// checked twin refuses it.
+    #[test]
+    fn any_axis_index_is_safe() {
+        let m = DVec3::new(1.0, 2.0, 3.0);
+        assert_eq!(
+            axis_stability(m, usize::MAX, 2.0),
+            axis_stability(m, 0, 2.0)
+        );
+        assert_eq!(
+            axis_stability(m, usize::MAX - 1, 2.0),
+            axis_stability(m, 2, 2.0)
+        );
+        assert_eq!(
+            try_axis_stability(m, usize::MAX, 2.0),
+            Err(DynamicsError::InvalidAxis { axis: usize::MAX })
+        );
+        // λ² = Ω² · O(1) no longer overflows through I² for huge moments.
+        assert!(matches!(
+            try_axis_stability(m * 1e200, 1, 1.0),
+            Ok(AxisStability::Unstable { .. })
+        ));
+        assert!(try_axis_stability(m, 1, f64::NAN).is_err());
+        assert!(try_axis_stability(DVec3::new(1.0, 1.0, 3.0), 1, 1.0).is_err());
+    }
 }

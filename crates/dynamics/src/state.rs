@@ -25,8 +25,10 @@ impl PrincipalState {
     /// ```
     ///
     /// # Errors
-    /// [`DynamicsError::InvalidState`] for a zero or non-finite quaternion
-    /// or a non-finite angular velocity. The quaternion is normalised.
+    /// [`DynamicsError::InvalidState`] for a zero or non-finite quaternion,
+    /// a non-finite angular velocity, or one whose angular momentum or
+    /// energy overflows `f64` ([`PrincipalState::validate`]). The
+    /// quaternion is normalised.
     ///
     /// ```
     /// use glam::{DQuat, DVec3};
@@ -34,6 +36,8 @@ impl PrincipalState {
     /// let body = RigidBody::try_from_principal_moments(DVec3::new(1.0, 2.0, 3.0))?;
     /// let s = PrincipalState::try_from_omega_body(&body, DQuat::IDENTITY, DVec3::new(0.01, 1.0, 0.0))?;
     /// assert_eq!(s.l_principal, DVec3::new(0.01, 2.0, 0.0));
+    /// // I ω² overflows: refused rather than holding inf.
+    /// assert!(PrincipalState::try_from_omega_body(&body, DQuat::IDENTITY, DVec3::splat(1e308)).is_err());
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn try_from_omega_body(
@@ -53,10 +57,49 @@ impl PrincipalState {
         }
         let q_bp = body.body_from_principal();
         let omega_p = q_bp.conjugate() * omega_body;
-        Ok(Self {
+        let state = Self {
             world_from_principal: q * q_bp,
             l_principal: omega_p * body.principal_moments(),
-        })
+        };
+        state.validate(body.principal_moments())?;
+        Ok(state)
+    }
+
+    /// Checks that the state can be advanced for principal moments
+    /// `moments`: a finite, non-zero attitude, and an angular momentum whose
+    /// square in the body's unit of inertia and whose energy are finite.
+    ///
+    /// ```text
+    /// q finite, |q| > 0;   |L̂|² < ∞, L̂ = L / 2ᵏ (2ᵏ ≈ max Iₖ);   E = ½ Σ Lₖ²/Iₖ < ∞
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidState`] naming what is wrong.
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::PrincipalState;
+    /// let s = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 1e300, 0.0) };
+    /// assert!(s.validate(DVec3::splat(1e300)).is_ok()); // ω = 1 rad/s
+    /// assert!(s.validate(DVec3::splat(1.0)).is_err()); // E = 5e599 J
+    /// ```
+    pub fn validate(&self, moments: DVec3) -> Result<(), DynamicsError> {
+        let bad = |reason| Err(DynamicsError::InvalidState { reason });
+        let q = self.world_from_principal;
+        if !q.is_finite() || q.length_squared() == 0.0 {
+            return bad("attitude quaternion is zero or not finite");
+        }
+        if !self.l_principal.is_finite() {
+            return bad("angular momentum is not finite (I ω overflows)");
+        }
+        let unit = crate::rigid_body::moment_scale(moments);
+        let l = self.l_principal / unit;
+        if !(l.length_squared().is_finite()
+            && kinetic_energy(moments, self.l_principal).is_finite())
+        {
+            return bad("angular momentum too large: |L|^2 or the energy I w^2/2 overflows");
+        }
+        Ok(())
     }
 
     /// The body-frame attitude: maps body coordinates to world coordinates.
@@ -77,10 +120,12 @@ impl PrincipalState {
         body.body_from_principal() * (self.l_principal / body.principal_moments())
     }
 
-    /// Rotational kinetic energy.
+    /// Rotational kinetic energy, evaluated in the body's unit of inertia
+    /// (an exact power-of-two rescaling), so `Lₖ²` cannot overflow while the
+    /// energy itself is finite (moments of 1e200 kg m² at 1 rad/s).
     ///
     /// ```text
-    /// E = ½ Σ Lₖ² / Iₖ
+    /// E = ½ Σ Lₖ² / Iₖ = 2ᵏ · ½ Σ L̂ₖ² / Îₖ,   L̂ = L/2ᵏ, Î = I/2ᵏ
     /// ```
     ///
     /// ```
@@ -89,10 +134,13 @@ impl PrincipalState {
     /// let body = RigidBody::try_from_principal_moments(DVec3::new(1.0, 2.0, 3.0))?;
     /// let s = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 2.0, 0.0) };
     /// assert_eq!(s.energy(&body), 1.0);
+    /// let big = RigidBody::try_from_principal_moments(DVec3::new(1e200, 2e200, 3e200))?;
+    /// let s = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 2e200, 0.0) };
+    /// assert!((s.energy(&big) / 1e200 - 1.0).abs() < 1e-15);
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn energy(&self, body: &RigidBody) -> f64 {
-        0.5 * (self.l_principal * self.l_principal / body.principal_moments()).element_sum()
+        kinetic_energy(body.principal_moments(), self.l_principal)
     }
 
     /// Angular momentum in world axes (constant for a free body).
@@ -108,4 +156,14 @@ impl PrincipalState {
     pub fn l_world(&self) -> DVec3 {
         self.world_from_principal.normalize() * self.l_principal
     }
+}
+
+/// `½ Σ Lₖ²/Iₖ` in the unit of inertia of `moments` (see
+/// `rigid_body::moment_scale`): bit for bit the plain formula wherever that
+/// does not overflow.
+#[inline]
+pub(crate) fn kinetic_energy(moments: DVec3, l: DVec3) -> f64 {
+    let unit = crate::rigid_body::moment_scale(moments);
+    let l = l / unit;
+    0.5 * (l * l / (moments / unit)).element_sum() * unit
 }

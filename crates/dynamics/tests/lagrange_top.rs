@@ -546,3 +546,217 @@ fn grid_of_edge_cases_stays_finite_and_conservative() {
     );
     assert!(worst.0 < 1e-12, "{worst:?}");
 }
+
+/// One row of `tests/data/lagrange_top/fast_tops.csv` (mpmath, 120 digits).
+struct FastTop {
+    family: String,
+    top: LagrangeTop,
+    initial: LagrangeTopInitial,
+    roots: [f64; 3],
+    theta_min: f64,
+    theta_max: f64,
+    period: f64,
+    precession: f64,
+    kind: TopMotionKind,
+}
+
+fn fast_tops() -> Vec<FastTop> {
+    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let root = manifest
+        .ancestors()
+        .find(|dir| dir.join("tests/data/lagrange_top").is_dir())
+        .expect("tests/data/lagrange_top in an ancestor");
+    let text = std::fs::read_to_string(root.join("tests/data/lagrange_top/fast_tops.csv")).unwrap();
+    let mut out = Vec::new();
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("family"))
+    {
+        let f: Vec<&str> = line.split(',').collect();
+        let x: Vec<f64> = f[1..16].iter().map(|v| v.parse().unwrap()).collect();
+        out.push(FastTop {
+            family: f[0].to_owned(),
+            top: LagrangeTop::new(x[0], x[1], x[2]),
+            initial: LagrangeTopInitial {
+                theta: x[3],
+                theta_dot: x[4],
+                phi_dot: x[5],
+                psi_dot: x[6],
+                ..Default::default()
+            },
+            roots: [x[7], x[8], x[9]],
+            theta_min: x[11],
+            theta_max: x[12],
+            period: x[13],
+            precession: x[14],
+            kind: match f[16] {
+                "no_loops" => TopMotionKind::NoLoops,
+                "loops" => TopMotionKind::Loops,
+                _ => TopMotionKind::Cusps,
+            },
+        });
+    }
+    out
+}
+
+/// Fast tops (ψ̇₀ = 1e3 … 1e15) against mpmath at 120 digits: roots, θ
+/// limits, nutation period and mean precession rate to 1e-12 relative,
+/// whatever the spin (the partial fractions of φ̇ once cancelled to
+/// ~β/a: `kreisel top --psi-dot0 1e10` reported a mean precession of 0).
+/// The `kicked` family swings φ̇ by ±0.5 rad/s about a mean of −2/ψ̇₀; its
+/// mean is held to f64 rounding of that swing, 4e-16 · max|φ̇| (the
+/// turning-point formulas carry it; see the report).
+#[test]
+fn fast_tops_keep_full_precision() {
+    let rel = |x: f64, y: f64| (x - y).abs() / y.abs();
+    for r in fast_tops() {
+        let m = r.top.try_solve(r.initial).unwrap();
+        let name = format!("{} psi_dot0 {:e}", r.family, r.initial.psi_dot);
+        let roots = m.roots();
+        let droot = roots
+            .iter()
+            .zip(&r.roots)
+            .map(|(a, b)| (a - b).abs() / b.abs().max(1.0))
+            .fold(0.0, f64::max);
+        let dth = rel(m.theta_min(), r.theta_min).max(rel(m.theta_max(), r.theta_max));
+        let period = m.nutation_period().unwrap();
+        let dperiod = rel(period, r.period);
+        let prec = m.mean_precession_rate().unwrap();
+        let dprec = rel(prec, r.precession);
+        // φ over one period from the evaluated closed form (φ(T) − φ(0) = ⟨φ̇⟩T).
+        let dphi = m.euler_at(period).phi - m.euler_at(0.0).phi;
+        let dphi_rel = rel(dphi / period, r.precession);
+        println!(
+            "{name}: roots {droot:.1e}, theta {dth:.1e}, period {dperiod:.1e}, \
+             precession {dprec:.1e} (from phi(T): {dphi_rel:.1e})"
+        );
+        assert!(droot <= 1e-15, "{name}: roots {roots:?} vs {:?}", r.roots);
+        assert!(dth <= 1e-15, "{name}: theta limits");
+        assert!(dperiod <= 1e-12, "{name}: period {period} vs {}", r.period);
+        assert_eq!(m.motion(), Some(r.kind), "{name}");
+        let tol = if r.family == "kicked" {
+            // |φ̇| ≤ |θ̇₀|/sin θ₀ ≈ 0.5 rad/s on this band
+            4e-16 * 0.5 / r.precession.abs()
+        } else {
+            1e-12
+        };
+        assert!(
+            dprec <= tol,
+            "{name}: precession {prec} vs {}",
+            r.precession
+        );
+        assert!(
+            dphi_rel <= tol.max(1e-12),
+            "{name}: phi(T) {dphi} over {period}"
+        );
+    }
+}
+
+/// θ₀ outside [0, π], I₃ > 2 I₁ (no real body), subnormal moments and
+/// overflowing rates are errors naming the parameter (once folded silently,
+/// accepted, or NaN).
+#[test]
+fn unphysical_and_unrepresentable_tops_are_errors() {
+    let err = |r: Result<LagrangeTopMotion, DynamicsError>| match r {
+        Err(DynamicsError::InvalidTop { parameter, .. }) => parameter,
+        other => panic!("{other:?}"),
+    };
+    let top = LagrangeTop::new(1.0, 0.5, 1.0);
+    let init = |theta: f64| LagrangeTopInitial {
+        theta,
+        psi_dot: 10.0,
+        ..Default::default()
+    };
+    for theta in [-0.5, -1e-300, 3.2, 3.141_592_653_589_794, 7.0, -7.0] {
+        assert_eq!(err(top.try_solve(init(theta))), "theta", "{theta}");
+    }
+    for theta in [0.0, 0.5, std::f64::consts::PI] {
+        assert!(top.try_solve(init(theta)).is_ok(), "{theta}");
+    }
+    let new_err = |i1: f64, i3: f64, mgl: f64| match LagrangeTop::try_new(i1, i3, mgl) {
+        Err(DynamicsError::InvalidTop { parameter, .. }) => parameter,
+        other => panic!("{i1} {i3} {mgl}: {other:?}"),
+    };
+    assert_eq!(new_err(1.0, 2.000_001, 1.0), "i3");
+    assert_eq!(new_err(0.3, 0.7, 1.0), "i3");
+    assert_eq!(new_err(1e-320, 1e-320, 1.0), "i1");
+    assert_eq!(new_err(1.0, 1e-320, 1.0), "i3");
+    assert_eq!(new_err(1e-300, 1e-300, 1e10), "mgl");
+    assert_eq!(new_err(1e300, 1e300, 1e-20), "mgl");
+    // A disc pivoted at its centre, I₃ = 2 I₁ up to rounding, is a body.
+    let (m, r) = (0.3f64, 0.07f64);
+    assert!(LagrangeTop::try_new(m * r * r / 4.0, m * r * r / 2.0, 0.0).is_ok());
+    assert!(LagrangeTop::try_new(1.0, 2.0 * (1.0 + f64::EPSILON), 0.0).is_ok());
+    let fast = |psi_dot, theta_dot, phi_dot| LagrangeTopInitial {
+        theta: 0.5,
+        psi_dot,
+        theta_dot,
+        phi_dot,
+        ..Default::default()
+    };
+    assert_eq!(err(top.try_solve(fast(1e300, 0.0, 0.0))), "psi_dot");
+    assert_eq!(err(top.try_solve(fast(1.0, 1e300, 0.0))), "theta_dot");
+    assert_eq!(err(top.try_solve(fast(1.0, 0.0, 1e300))), "phi_dot");
+}
+
+/// Magnitudes from 1e-300 to 1e300 in every parameter: `try_new` and
+/// `try_solve` either refuse or give finite numbers everywhere (once a
+/// moment of 1e-320 gave NaN rows).
+#[test]
+fn extreme_magnitudes_are_finite_or_refused() {
+    let mags = [0.0, 1e-300, 1e-30, 1.0, 1e30, 1e300];
+    let (mut solved, mut refused) = (0usize, 0usize);
+    for i1 in [1e-300, 1e-30, 1.0, 1e30, 1e300] {
+        for i3 in [0.5 * i1, 2.0 * i1, 1e-300] {
+            for mgl in [0.0, 1e-300, -1.0, 1.0, 1e30, 1e300] {
+                let Ok(top) = LagrangeTop::try_new(i1, i3, mgl) else {
+                    refused += 1;
+                    continue;
+                };
+                for theta in [0.0, 0.5, 3.0] {
+                    for theta_dot in mags {
+                        for phi_dot in mags {
+                            for psi_dot in mags {
+                                let init = LagrangeTopInitial {
+                                    theta,
+                                    theta_dot,
+                                    phi_dot: -phi_dot,
+                                    psi_dot,
+                                    ..Default::default()
+                                };
+                                let Ok(m) = top.try_solve(init) else {
+                                    refused += 1;
+                                    continue;
+                                };
+                                solved += 1;
+                                let e = m.euler_at(0.37);
+                                let scalars = [
+                                    m.theta_min(),
+                                    m.theta_max(),
+                                    m.nutation_period().unwrap_or(0.0),
+                                    m.mean_precession_rate().unwrap_or(0.0),
+                                    e.phi,
+                                    e.theta,
+                                    e.psi,
+                                    e.phi_dot,
+                                    e.theta_dot,
+                                    e.psi_dot,
+                                ];
+                                let ctx = format!("{i1:e} {i3:e} {mgl:e} {init:?}");
+                                assert!(
+                                    scalars.iter().all(|x| x.is_finite()),
+                                    "{ctx}: {scalars:?}"
+                                );
+                                assert!(m.roots().iter().all(|x| x.is_finite()), "{ctx}");
+                                assert!(m.world_from_body_at(0.37).is_finite(), "{ctx}");
+                                assert!(m.omega_body_at(0.37).is_finite(), "{ctx}");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("extreme magnitudes: {solved} solved, {refused} refused");
+    assert!(solved > 1000);
+}

@@ -6,7 +6,7 @@
 
 use glam::{DQuat, DVec3};
 use kreisel_dynamics::{
-    FreeBodyIntegrator, MoserVeselov, PreprocessedMoserVeselov, PrincipalState, method,
+    FreeBodyIntegrator, MoserVeselov, PreprocessedMoserVeselov, PrincipalState, integrate, method,
 };
 use kreisel_kinematics::rotation_angle_between;
 
@@ -197,8 +197,11 @@ fn errors_at_dt_0_01_and_0_1() {
     }
 }
 
-/// Steps the solve cannot handle (zero moments, huge h, zero L) leave a
-/// finite state and do not panic.
+/// Steps the solve cannot handle (zero moments, huge h) do not panic and
+/// do not freeze the body: a step is either taken (finite state) or leaves
+/// a NaN state, and `integrate` turns that into a typed error naming the
+/// method (regression: DMV/PDMV used to leave the state unchanged, so a
+/// body at |h ω| = 100 silently never turned).
 #[test]
 fn degenerate_inputs_do_not_panic() {
     let s0 = PrincipalState {
@@ -214,12 +217,33 @@ fn degenerate_inputs_do_not_panic() {
             for m in methods() {
                 let mut s = s0;
                 m.step(moments, &mut s, h);
-                assert!(
-                    s.l_principal.is_finite() && s.world_from_principal.is_finite(),
-                    "{} {moments} {h}",
-                    m.name()
-                );
+                let finite = s.l_principal.is_finite() && s.world_from_principal.is_finite();
+                let nan = s.l_principal.is_nan() && s.world_from_principal.is_nan();
+                assert!(finite || nan, "{} {moments} {h}: {s:?}", m.name());
+                if h > 0.0 {
+                    let mut s = s0;
+                    let result = integrate(m.as_ref(), moments, &mut s, h, 3);
+                    let taken = result.is_ok() && s.l_principal.is_finite();
+                    assert!(taken || result.is_err(), "{} {moments} {h}", m.name());
+                    if h == 1e300 || moments != DVec3::new(1.0, 2.0, 3.0) {
+                        let e = result.unwrap_err().to_string();
+                        assert!(!e.is_empty() && s == s0, "{} {moments} {h}: {e}", m.name());
+                    }
+                }
             }
+        }
+    }
+    // |h ω| = 100: no DMV rotation exists; an error, not a frozen body.
+    for m in methods() {
+        let mut s = PrincipalState {
+            world_from_principal: DQuat::IDENTITY,
+            l_principal: DVec3::new(1e4, 2e2, 0.0),
+        };
+        match integrate(m.as_ref(), DVec3::new(1.0, 2.0, 3.0), &mut s, 0.01, 10) {
+            Err(kreisel_dynamics::DynamicsError::Diverged { method, time, .. }) => {
+                assert_eq!((method, time), (m.name(), 0.01));
+            }
+            other => panic!("{}: {other:?}", m.name()),
         }
     }
     let mut s = PrincipalState {

@@ -2,6 +2,8 @@
 
 use std::path::PathBuf;
 
+use glam::DVec3;
+
 use crate::io::MeshFormat;
 
 /// Everything that can go wrong when loading a mesh or computing mass properties.
@@ -73,17 +75,36 @@ pub enum InertiaError {
     },
     /// The surface is not closed, so it encloses no volume.
     #[error(
-        "mesh is open: {boundary_edges} boundary edges (edges used by only one triangle); it encloses no volume (use a shell model or the convex hull instead)"
+        "mesh is open: {boundary_edges} boundary edges (edges used by only one triangle), one at ({}, {}, {}){}",
+        at.x, at.y, at.z,
+        match weld_gap {
+            Some(g) => format!("; every boundary vertex lies within {g:.2e} of another boundary vertex (cracks rather than holes)"),
+            None => "; it has holes and encloses no volume".to_owned(),
+        }
     )]
     OpenMesh {
         /// Number of edges used by exactly one triangle.
         boundary_edges: usize,
+        /// The midpoint of one boundary edge.
+        at: DVec3,
+        /// When the boundary looks like cracks: the largest distance from a
+        /// boundary vertex to its nearest other boundary vertex (reported
+        /// when at most 0.001 × the bounding-box diagonal), the smallest
+        /// weld tolerance that could close them.
+        weld_gap: Option<f64>,
     },
-    /// Some edges are shared by more than two triangles.
-    #[error("mesh is not manifold: {edges} edges are shared by more than two triangles")]
+    /// Some edges are shared by more than two triangles whose windings do
+    /// not cancel (as many must run along the edge one way as the other),
+    /// so the surface bounds no well-defined volume.
+    #[error(
+        "mesh is not closed: {edges} edges are shared by more than two triangles whose windings do not cancel (as many must run along an edge one way as the other), one at ({}, {}, {})",
+        at.x, at.y, at.z
+    )]
     NonManifold {
         /// Number of such edges.
         edges: usize,
+        /// The midpoint of one such edge.
+        at: DVec3,
     },
     /// A connected surface cannot be oriented consistently (a Möbius strip or
     /// Klein bottle).
@@ -112,10 +133,37 @@ pub enum InertiaError {
         /// The value given.
         value: f64,
     },
+    /// A parameter that must be a finite number (and non-negative where
+    /// that matters) is not.
+    #[error("{quantity} must be finite, got {value}")]
+    NotFinite {
+        /// What it is (`"scale factor"`, `"weld tolerance"`, …).
+        quantity: &'static str,
+        /// The value given.
+        value: f64,
+    },
     /// An inertia tensor that no physical body has.
     #[error("inertia tensor is not physical: {reason}")]
     UnphysicalInertia {
         /// Why (not symmetric, not positive definite, triangle inequality broken).
         reason: String,
+    },
+    /// A convex hull failed its checks (closed, outward, convex, containing
+    /// every point): no result rather than a wrong one.
+    #[error("convex hull of {points} points failed its check: {reason}")]
+    HullCheckFailed {
+        /// Number of distinct input points.
+        points: usize,
+        /// Which check failed, and where.
+        reason: String,
+    },
+    /// A result overflows (or underflows to zero) in f64: the inputs are out
+    /// of the representable range.
+    #[error("{quantity} is not representable in f64 (got {value:e}): inputs out of range")]
+    NotRepresentable {
+        /// What overflowed (`"mass"`, `"inertia"`, …).
+        quantity: &'static str,
+        /// The value computed.
+        value: f64,
     },
 }

@@ -17,6 +17,7 @@
 // run-time CPU check; everything else is safe code.
 #![deny(unsafe_code)]
 
+mod convex_hull;
 mod error;
 pub mod io;
 mod mass_properties;
@@ -28,14 +29,15 @@ mod primitives;
 mod principal_axes;
 mod solid_kernel;
 mod tri_mesh;
+mod weld;
 
+pub use convex_hull::convex_hull;
 pub use error::InertiaError;
 pub use mass_properties::MassProperties;
 pub use mesh_check::{CheckedMesh, MeshWarning, prepare_shell, prepare_solid};
 pub use mesh_integration::MeshMoments;
 pub use mesh_mass::{MassModel, Material, MeshMassReport, mesh_mass_properties};
-pub use parry_interop::{
-    convex_hull, from_parry, from_parry_mass_properties, parry_mass_properties, to_parry,
-};
+pub use parry_interop::{from_parry, from_parry_mass_properties, parry_mass_properties, to_parry};
 pub use principal_axes::PrincipalAxes;
 pub use tri_mesh::TriMesh;
+pub use weld::{DEFAULT_RELATIVE_WELD, Weld, Welded};

@@ -164,7 +164,9 @@ impl MassProperties {
     /// # Errors
     /// [`InertiaError::EmptyMesh`] for no points, [`InertiaError::NonPositive`]
     /// for a point mass that is not positive and finite,
-    /// [`InertiaError::NonFiniteVertex`] for a non-finite position.
+    /// [`InertiaError::NonFiniteVertex`] for a non-finite position,
+    /// [`InertiaError::NotRepresentable`] when the total mass or a tensor
+    /// element overflows f64.
     ///
     /// ```
     /// use glam::DVec3;
@@ -196,7 +198,7 @@ impl MassProperties {
         let inertia = points.iter().fold(DMat3::ZERO, |acc, &(m, x)| {
             acc + point_tensor(m, x - origin - c)
         });
-        Ok(Self {
+        representable(Self {
             mass,
             center_of_mass: origin + c,
             inertia,
@@ -328,7 +330,8 @@ impl MassProperties {
     /// ```
     ///
     /// # Errors
-    /// [`InertiaError::NonPositive`] if `mass` is not positive and finite.
+    /// [`InertiaError::NonPositive`] if `mass` is not positive and finite;
+    /// [`InertiaError::NotRepresentable`] if the scaled tensor overflows.
     ///
     /// ```
     /// use kreisel_inertia::MassProperties;
@@ -338,7 +341,7 @@ impl MassProperties {
     /// ```
     pub fn with_mass(self, mass: f64) -> Result<Self, InertiaError> {
         check_positive("mass", mass)?;
-        Ok(Self {
+        representable(Self {
             mass,
             inertia: self.inertia * (mass / self.mass),
             ..self
@@ -397,6 +400,32 @@ impl Sum for MassProperties {
         })
         .unwrap_or(MassProperties::point(0.0, DVec3::ZERO))
     }
+}
+
+/// `Ok` for properties with a positive finite mass, a finite centre of mass
+/// and a finite tensor, else [`InertiaError::NotRepresentable`] (what a
+/// closed form gives when its inputs overflow or underflow f64).
+pub(crate) fn representable(props: MassProperties) -> Result<MassProperties, InertiaError> {
+    let worst = |values: &[f64]| values.iter().copied().find(|v| !v.is_finite());
+    if !(props.mass > 0.0 && props.mass.is_finite()) {
+        return Err(InertiaError::NotRepresentable {
+            quantity: "mass",
+            value: props.mass,
+        });
+    }
+    if let Some(value) = worst(&props.center_of_mass.to_array()) {
+        return Err(InertiaError::NotRepresentable {
+            quantity: "centre of mass",
+            value,
+        });
+    }
+    if let Some(value) = worst(&props.inertia.to_cols_array()) {
+        return Err(InertiaError::NotRepresentable {
+            quantity: "inertia tensor",
+            value,
+        });
+    }
+    Ok(props)
 }
 
 /// `Ok` for a positive finite value, else [`InertiaError::NonPositive`].
@@ -502,6 +531,31 @@ mod tests {
                 DMat3::from_diagonal(DVec3::new(1.0, 1.0, 2.0))
             )
             .is_ok()
+        );
+    }
+
+    #[test]
+    fn overflowing_point_masses_are_errors() {
+        // Regression: masses of 1e200 at 1e200 m gave Ok with an infinite tensor.
+        let far = MassProperties::from_point_masses(&[
+            (1e200, DVec3::new(-1e200, 0.0, 0.0)),
+            (1e200, DVec3::new(1e200, 0.0, 0.0)),
+        ]);
+        assert!(
+            matches!(far, Err(InertiaError::NotRepresentable { .. })),
+            "{far:?}"
+        );
+        let heavy = MassProperties::from_point_masses(&[(1e308, DVec3::ZERO), (1e308, DVec3::X)]);
+        assert!(
+            matches!(heavy, Err(InertiaError::NotRepresentable { .. })),
+            "{heavy:?}"
+        );
+        let scaled = MassProperties::solid_box(1.0, DVec3::splat(1e50))
+            .unwrap()
+            .with_mass(1e300);
+        assert!(
+            matches!(scaled, Err(InertiaError::NotRepresentable { .. })),
+            "{scaled:?}"
         );
     }
 }

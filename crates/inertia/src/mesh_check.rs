@@ -1,6 +1,21 @@
 //! Topology checks and repairs of triangle meshes before integration:
 //! degenerate triangles, open boundaries, non-manifold edges, inconsistent
 //! winding, inside-out surfaces.
+//!
+//! What makes a solid: the oriented triangles form a closed 2-cycle, i.e.
+//! along every edge as many triangles run one way as the other. Then the
+//! winding number of every point off the surface is defined and the signed
+//! tetrahedra sum to its integral, the enclosed volume. A manifold closed
+//! surface is the usual case; an edge shared by four triangles (two cubes
+//! touching along an edge) is accepted with a warning when their windings
+//! cancel.
+//!
+//! Zero-area triangles (a collinear sliver closing a T-junction) are part of
+//! the topology: they are kept for the closure check and left out of the
+//! integrals only, where they contribute nothing. A sliver that only dangles
+//! off the surface is tolerated too: when the check with slivers fails, it is
+//! retried without them. Triangles with a repeated vertex index (collapsed by
+//! welding) have no edges to share and are dropped first.
 
 use core::fmt;
 
@@ -10,11 +25,19 @@ use crate::{InertiaError, TriMesh};
 
 /// Something found in a mesh and repaired; the result is still exact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum MeshWarning {
-    /// Triangles with a repeated vertex or zero area were skipped.
+    /// Triangles with a repeated vertex or zero area were left out of the
+    /// integrals (zero-area ones still count for the closure check).
     DegenerateTriangles {
         /// How many.
         count: usize,
+    },
+    /// Edges shared by more than two triangles whose windings cancel: a
+    /// closed surface touching itself, whose enclosed volume is well defined.
+    NonManifoldEdges {
+        /// How many such edges.
+        edges: usize,
     },
     /// Some triangles were wound against their neighbours and were flipped.
     Reoriented {
@@ -34,9 +57,13 @@ impl fmt::Display for MeshWarning {
             MeshWarning::DegenerateTriangles { count } => {
                 write!(
                     f,
-                    "skipped {count} degenerate triangles (repeated vertex or zero area)"
+                    "left {count} degenerate triangles (repeated vertex or zero area) out of the integrals, where they contribute nothing"
                 )
             }
+            MeshWarning::NonManifoldEdges { edges } => write!(
+                f,
+                "{edges} edges are shared by more than two triangles (the surface touches itself); their windings cancel, so the enclosed volume is well defined"
+            ),
             MeshWarning::Reoriented { triangles } => write!(
                 f,
                 "winding was inconsistent: flipped {triangles} triangles to match their neighbours"
@@ -67,24 +94,69 @@ struct EdgeUse {
     forward: bool,
 }
 
-/// Drops triangles with a repeated index or an exactly zero cross product.
+/// Whether a triangle has an exactly zero cross product (zero area).
+fn zero_area(vertices: &[DVec3], [a, b, c]: [u32; 3]) -> bool {
+    let (pa, pb, pc) = (
+        vertices[a as usize],
+        vertices[b as usize],
+        vertices[c as usize],
+    );
+    (pb - pa).cross(pc - pa) == DVec3::ZERO
+}
+
+/// Whether a triangle repeats a vertex index.
+fn collapsed([a, b, c]: [u32; 3]) -> bool {
+    a == b || b == c || a == c
+}
+
+/// Drops triangles with a repeated index or zero area.
 fn drop_degenerate(mesh: TriMesh) -> (TriMesh, usize) {
-    let (vertices, triangles) = mesh.into_parts();
+    let (vertices, mut triangles) = mesh.into_parts();
     let before = triangles.len();
-    let kept: Vec<[u32; 3]> = triangles
-        .into_iter()
-        .filter(|&[a, b, c]| {
-            let (pa, pb, pc) = (
-                vertices[a as usize],
-                vertices[b as usize],
-                vertices[c as usize],
-            );
-            a != b && b != c && a != c && (pb - pa).cross(pc - pa) != DVec3::ZERO
-        })
-        .collect();
-    let dropped = before - kept.len();
+    triangles.retain(|&t| !collapsed(t) && !zero_area(&vertices, t));
+    let dropped = before - triangles.len();
     // The vertex list is unchanged, so every index stays in range.
-    (TriMesh::from_checked_parts(vertices, kept), dropped)
+    (TriMesh::from_checked_parts(vertices, triangles), dropped)
+}
+
+/// The midpoint of the edge of an [`EdgeUse`] key.
+fn edge_midpoint(vertices: &[DVec3], key: u64) -> DVec3 {
+    let (low, high) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
+    0.5 * (vertices[low] + vertices[high])
+}
+
+/// Boundary vertices considered for the weld gap (quadratic search).
+const MAX_GAP_VERTICES: usize = 4096;
+
+/// When the boundary looks like cracks: the largest distance from a
+/// boundary vertex to the nearest boundary vertex it shares no boundary
+/// edge with, if at most `0.001 ×` the mesh size.
+fn weld_gap(vertices: &[DVec3], boundary: &[u64]) -> Option<f64> {
+    let ends = |k: u64| ((k >> 32) as u32, (k & 0xFFFF_FFFF) as u32);
+    let mut ids: Vec<u32> = boundary
+        .iter()
+        .flat_map(|&k| <[u32; 2]>::from(ends(k)))
+        .collect();
+    ids.sort_unstable();
+    ids.dedup();
+    if ids.len() > MAX_GAP_VERTICES {
+        return None;
+    }
+    let adjacent = |a: u32, b: u32| {
+        let k = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+        boundary.binary_search(&k).is_ok()
+    };
+    let mut gap: f64 = 0.0;
+    for &a in &ids {
+        let nearest = ids
+            .iter()
+            .filter(|&&b| b != a && !adjacent(a, b))
+            .map(|&b| vertices[a as usize].distance(vertices[b as usize]))
+            .fold(f64::INFINITY, f64::min);
+        gap = gap.max(nearest);
+    }
+    let size = crate::weld::bounding_diagonal(vertices);
+    (gap.is_finite() && gap <= 1e-3 * size).then_some(gap)
 }
 
 /// Every undirected edge's uses, sorted so that uses of one edge are adjacent.
@@ -142,15 +214,18 @@ fn solid_angle(a: DVec3, b: DVec3, c: DVec3) -> f64 {
 /// Checks a mesh for use as a solid and repairs what can be repaired.
 ///
 /// ```text
-/// skip degenerate triangles;  every edge used by exactly two triangles (closed, manifold);
-/// flip triangles to agree with their neighbours;  turn inside-out surfaces outwards
-/// (a surface with negative volume that no other surface encloses)
+/// along every edge, as many triangles run one way as the other (a closed 2-cycle);
+/// flip triangles to agree with their neighbours across edges of two triangles;
+/// turn inside-out surfaces outwards (negative volume, enclosed by no other surface);
+/// leave degenerate triangles out of the result (zero-area ones count for the check)
 /// ```
 ///
 /// # Errors
-/// [`InertiaError::OpenMesh`] (with the number of boundary edges),
-/// [`InertiaError::NonManifold`], [`InertiaError::NonOrientable`],
-/// [`InertiaError::EmptyMesh`] when no triangle is left.
+/// [`InertiaError::OpenMesh`] (how many boundary edges, where, and whether
+/// welding would close them), [`InertiaError::NonManifold`] (edges of more
+/// than two triangles whose windings do not cancel),
+/// [`InertiaError::NonOrientable`], [`InertiaError::EmptyMesh`] when no
+/// triangle is left.
 ///
 /// ```
 /// use glam::DVec3;
@@ -163,41 +238,86 @@ fn solid_angle(a: DVec3, b: DVec3, c: DVec3) -> f64 {
 /// # Ok::<(), kreisel_inertia::InertiaError>(())
 /// ```
 pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
-    let mut warnings = Vec::new();
-    let (mesh, dropped) = drop_degenerate(mesh);
-    if dropped > 0 {
-        warnings.push(MeshWarning::DegenerateTriangles { count: dropped });
-    }
     let (vertices, mut triangles) = mesh.into_parts();
+    let before = triangles.len();
+    triangles.retain(|&t| !collapsed(t));
+    let collapsed_count = before - triangles.len();
     if triangles.is_empty() {
         return Err(InertiaError::EmptyMesh {
             vertices: vertices.len(),
             triangles: 0,
         });
     }
+    let checked = match orient(&vertices, &triangles) {
+        Ok(checked) => checked,
+        Err(error) => {
+            // A zero-area sliver dangling off the surface: retry without them.
+            let flat: Vec<[u32; 3]> = triangles
+                .iter()
+                .copied()
+                .filter(|&t| !zero_area(&vertices, t))
+                .collect();
+            if flat.len() == triangles.len() || flat.is_empty() {
+                return Err(error);
+            }
+            orient(&vertices, &flat).map_err(|_| error)?
+        }
+    };
+    let Oriented {
+        mut triangles,
+        mut warnings,
+    } = checked;
+    let kept = triangles.len();
+    triangles.retain(|&t| !zero_area(&vertices, t));
+    let degenerate = collapsed_count + (before - collapsed_count - kept) + (kept - triangles.len());
+    if degenerate > 0 {
+        warnings.insert(0, MeshWarning::DegenerateTriangles { count: degenerate });
+    }
+    if triangles.is_empty() {
+        return Err(InertiaError::EmptyMesh {
+            vertices: vertices.len(),
+            triangles: 0,
+        });
+    }
+    Ok(CheckedMesh {
+        mesh: TriMesh::from_checked_parts(vertices, triangles),
+        warnings,
+    })
+}
+
+/// Consistently oriented, outward triangles and what was repaired.
+struct Oriented {
+    triangles: Vec<[u32; 3]>,
+    warnings: Vec<MeshWarning>,
+}
+
+/// Checks closure and orients the triangles (none has a repeated index).
+fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, InertiaError> {
+    let mut triangles = triangles.to_vec();
+    let mut warnings = Vec::new();
     let uses = edge_uses(&triangles);
-    // Neighbours across each edge: (other triangle, same direction?).
+    // Neighbours across each edge of two triangles: (other triangle, same direction?).
     let mut neighbours: Vec<Vec<(u32, bool)>> = vec![Vec::new(); triangles.len()];
-    let (mut boundary, mut non_manifold) = (0, 0);
+    let mut boundary = Vec::new();
+    let mut shared_edges = 0;
     for group in uses.chunk_by(|x, y| x.key == y.key) {
         match group {
-            [_] => boundary += 1,
+            [u] => boundary.push(u.key),
             [u, w] => {
                 let same = u.forward == w.forward;
                 neighbours[u.triangle as usize].push((w.triangle, same));
                 neighbours[w.triangle as usize].push((u.triangle, same));
             }
-            _ => non_manifold += 1,
+            // Orientation does not propagate across these (which pairs?);
+            // they are checked once every surface is oriented.
+            _ => shared_edges += 1,
         }
     }
-    if boundary > 0 {
+    if let Some(&first) = boundary.first() {
         return Err(InertiaError::OpenMesh {
-            boundary_edges: boundary,
-        });
-    }
-    if non_manifold > 0 {
-        return Err(InertiaError::NonManifold {
-            edges: non_manifold,
+            boundary_edges: boundary.len(),
+            at: edge_midpoint(vertices, first),
+            weld_gap: weld_gap(vertices, &boundary),
         });
     }
 
@@ -257,7 +377,7 @@ pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
         .iter()
         .enumerate()
         .map(|(id, members)| {
-            signed_volume(members) < 0.0 && !enclosed(id, &components, &consistent, &vertices)
+            signed_volume(members) < 0.0 && !enclosed(id, &components, &consistent, vertices)
         })
         .collect();
     let (mut reoriented, mut inside_out) = (0, 0);
@@ -281,6 +401,24 @@ pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
             };
         }
     }
+    if shared_edges > 0 {
+        // Oriented, every edge of more than two triangles must cancel.
+        let uses = edge_uses(&triangles);
+        let unbalanced: Vec<u64> = uses
+            .chunk_by(|x, y| x.key == y.key)
+            .filter(|g| g.len() > 2 && 2 * g.iter().filter(|u| u.forward).count() != g.len())
+            .map(|g| g[0].key)
+            .collect();
+        if let Some(&first) = unbalanced.first() {
+            return Err(InertiaError::NonManifold {
+                edges: unbalanced.len(),
+                at: edge_midpoint(vertices, first),
+            });
+        }
+        warnings.push(MeshWarning::NonManifoldEdges {
+            edges: shared_edges,
+        });
+    }
     if reoriented > 0 {
         warnings.push(MeshWarning::Reoriented {
             triangles: reoriented,
@@ -291,8 +429,8 @@ pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
             surfaces: inside_out,
         });
     }
-    Ok(CheckedMesh {
-        mesh: TriMesh::from_checked_parts(vertices, triangles),
+    Ok(Oriented {
+        triangles,
         warnings,
     })
 }
@@ -351,23 +489,107 @@ mod tests {
     }
 
     #[test]
-    fn open_and_non_manifold_are_errors() {
+    fn open_and_unbalanced_non_manifold_are_errors() {
         let (v, mut t) = cube(DVec3::ZERO, 1.0);
         t.pop();
         match prepare_solid(TriMesh::new(v.clone(), t.clone())) {
-            Err(InertiaError::OpenMesh { boundary_edges }) => assert_eq!(boundary_edges, 3),
+            Err(InertiaError::OpenMesh {
+                boundary_edges,
+                weld_gap,
+                ..
+            }) => {
+                assert_eq!(boundary_edges, 3);
+                // A hole, not a crack: no weld closes it.
+                assert_eq!(weld_gap, None);
+            }
             other => panic!("{other:?}"),
         }
-        // A fin: one extra triangle on an existing edge.
-        let (v2, mut t2) = cube(DVec3::ZERO, 1.0);
-        let mut v2 = v2;
+        // A one-sided fin on an existing edge: two boundary edges.
+        let (mut v2, mut t2) = cube(DVec3::ZERO, 1.0);
         v2.push(DVec3::new(0.5, -1.0, 0.0));
         t2.push([0, 1, 8]);
-        t2.push([1, 0, 8]);
         assert!(matches!(
-            prepare_solid(TriMesh::new(v2, t2)),
-            Err(InertiaError::NonManifold { .. })
+            prepare_solid(TriMesh::new(v2.clone(), t2.clone())),
+            Err(InertiaError::OpenMesh {
+                boundary_edges: 2,
+                ..
+            })
         ));
+        // A tetrahedron with one face repeated: three triangles on each of
+        // its edges, which cannot cancel.
+        let v3 = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+        let t3 = vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 2, 1]];
+        match prepare_solid(TriMesh::new(v3, t3)) {
+            Err(InertiaError::NonManifold { edges, at }) => {
+                assert_eq!(edges, 3);
+                assert!(at.z == 0.0, "{at}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn cracks_report_the_weld_gap_that_closes_them() {
+        // The top four triangles on their own copies of the top vertices, 1e-7 up.
+        let (mut v, mut t) = cube(DVec3::ZERO, 1.0);
+        let top: Vec<u32> = (4..8).collect();
+        for &i in &top {
+            v.push(v[i as usize] + DVec3::new(0.0, 0.0, 1e-7));
+        }
+        for tri in &mut t[2..4] {
+            *tri = tri.map(|i| if i >= 4 { i + 4 } else { i });
+        }
+        match prepare_solid(TriMesh::new(v, t)) {
+            Err(InertiaError::OpenMesh {
+                boundary_edges: 8,
+                weld_gap: Some(gap),
+                ..
+            }) => assert!((gap - 1e-7).abs() < 1e-15, "{gap}"),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn closed_non_manifold_surfaces_are_solids() {
+        // Two unit cubes touching along the edge x = 1, y = 1: four triangles
+        // on each of its two mesh edges, two each way.
+        let (mut v, mut t) = cube(DVec3::ZERO, 1.0);
+        let (v2, t2) = cube(DVec3::new(1.0, 1.0, 0.0), 1.0);
+        let base = v.len() as u32;
+        v.extend(v2);
+        t.extend(t2.iter().map(|tri| tri.map(|i| i + base)));
+        let mesh = TriMesh::new(v, t).merge_duplicate_vertices();
+        let checked = prepare_solid(mesh).unwrap();
+        assert_eq!(
+            checked.warnings,
+            vec![MeshWarning::NonManifoldEdges { edges: 1 }]
+        );
+        let volume = crate::MeshMoments::solid(&checked.mesh).zeroth;
+        assert!((volume - 2.0).abs() < 1e-14, "{volume}");
+    }
+
+    #[test]
+    fn a_sliver_closing_a_t_junction_keeps_the_surface_closed() {
+        // Cube whose bottom face (z = 0) has a vertex m at the middle of
+        // edge 0–1, used by the two bottom triangles and a zero-area sliver
+        // (0, m, 1) that closes the side face's edge 0–1.
+        let (mut v, mut t) = cube(DVec3::ZERO, 1.0);
+        v.push(DVec3::new(0.5, 0.0, 0.0));
+        let m = 8;
+        // Bottom: [0, 2, 1], [1, 2, 3] become [0, 2, m], [m, 2, 1], [1, 2, 3].
+        t[0] = [0, 2, m];
+        t.push([m, 2, 1]);
+        // The bottom runs m→0 and 1→m and the side y = 0 runs 0→1, so the
+        // sliver 0→m→1→0 pairs with all three.
+        t.push([0, m, 1]);
+        let checked = prepare_solid(TriMesh::new(v, t)).unwrap();
+        assert_eq!(
+            checked.warnings,
+            vec![MeshWarning::DegenerateTriangles { count: 1 }]
+        );
+        assert_eq!(checked.mesh.triangles().len(), 13);
+        let volume = crate::MeshMoments::solid(&checked.mesh).zeroth;
+        assert!((volume - 1.0).abs() < 1e-15, "{volume}");
     }
 
     #[test]

@@ -1,11 +1,11 @@
-//! The bridge to parry3d: convex hulls, and conversions to and from parry's
+//! The bridge to parry3d: mass properties for cross-checks, and conversions to and from parry's
 //! types (parry 0.31 uses glam 0.33 vectors; kreisel uses glam 0.34).
 
 use glam::{DMat3, DVec3};
 use parry3d_f64::mass_properties::MassProperties as ParryMassProperties;
 use parry3d_f64::math::Vector as ParryVector;
 
-use crate::{InertiaError, MassProperties, TriMesh};
+use crate::{MassProperties, TriMesh};
 
 /// A kreisel vector as a parry vector.
 #[inline]
@@ -17,68 +17,6 @@ pub fn to_parry(v: DVec3) -> ParryVector {
 #[inline]
 pub fn from_parry(v: ParryVector) -> DVec3 {
     DVec3::new(v.x, v.y, v.z)
-}
-
-/// The convex hull of a mesh's vertices, as an outward-wound closed mesh
-/// (parry's quickhull).
-///
-/// # Errors
-/// [`InertiaError::DegenerateHull`] for fewer than four points or points
-/// that all lie in one plane or on one line.
-///
-/// ```
-/// use glam::DVec3;
-/// use kreisel_inertia::{convex_hull, MeshMoments, TriMesh};
-/// // A tetrahedron's corners plus an inner point: the hull drops the inner point.
-/// let v = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z, DVec3::splat(0.1)];
-/// let mesh = TriMesh::new(v, vec![[0, 1, 4]]);
-/// let hull = convex_hull(&mesh)?;
-/// assert_eq!(hull.triangles().len(), 4);
-/// assert!((MeshMoments::solid(&hull).zeroth - 1.0 / 6.0).abs() < 1e-15);
-/// # Ok::<(), kreisel_inertia::InertiaError>(())
-/// ```
-pub fn convex_hull(mesh: &TriMesh) -> Result<TriMesh, InertiaError> {
-    let v = mesh.vertices();
-    // parry's quickhull needs a full-dimensional point set; check it here
-    // so that degenerate input is a clear error.
-    let origin = v[0];
-    let far = v
-        .iter()
-        .copied()
-        .max_by(|a, b| {
-            (*a - origin)
-                .length_squared()
-                .total_cmp(&(*b - origin).length_squared())
-        })
-        .unwrap_or(origin);
-    let axis = far - origin;
-    let normal = v
-        .iter()
-        .map(|&p| axis.cross(p - origin))
-        .max_by(|a, b| a.length_squared().total_cmp(&b.length_squared()))
-        .unwrap_or(DVec3::ZERO);
-    let spread = v
-        .iter()
-        .map(|&p| normal.dot(p - origin).abs())
-        .fold(0.0_f64, f64::max);
-    let scale = axis.length() * normal.length() * axis.length();
-    // `<=` would let NaN through: compare the other way round.
-    if v.len() < 4 || spread.partial_cmp(&(1e-12 * scale)) != Some(core::cmp::Ordering::Greater) {
-        return Err(InertiaError::DegenerateHull {
-            reason: format!(
-                "{} points that span no volume (all on one plane or line)",
-                v.len()
-            ),
-        });
-    }
-    let points: Vec<ParryVector> = v.iter().map(|&p| to_parry(p)).collect();
-    let (hull_points, triangles) =
-        parry3d_f64::transformation::try_convex_hull(&points).map_err(|e| {
-            InertiaError::DegenerateHull {
-                reason: format!("{e:?}"),
-            }
-        })?;
-    TriMesh::try_new(hull_points.into_iter().map(from_parry).collect(), triangles)
 }
 
 /// parry's mass properties of a closed mesh, converted to kreisel's type

@@ -9,7 +9,7 @@ use core::f64::consts::PI;
 
 use glam::{DMat3, DVec3};
 
-use crate::mass_properties::check_positive;
+use crate::mass_properties::{check_positive, representable};
 use crate::{InertiaError, MassProperties};
 
 /// A body symmetric about z with moments `i_perp` (x, y) and `i_axis` (z).
@@ -30,6 +30,8 @@ impl MassProperties {
     ///
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or radius that is not positive and finite.
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use kreisel_inertia::MassProperties;
@@ -43,7 +45,7 @@ impl MassProperties {
         check_positive("radius", radius)?;
         let m = density * 4.0 / 3.0 * PI * radius.powi(3);
         let i = 0.4 * m * radius * radius;
-        Ok(symmetric(m, DVec3::ZERO, i, i))
+        representable(symmetric(m, DVec3::ZERO, i, i))
     }
 
     /// A hollow sphere (spherical shell of finite thickness) between radii
@@ -60,6 +62,8 @@ impl MassProperties {
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or outer radius that is not
     /// positive, or an inner radius not in `[0, outer)`.
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use kreisel_inertia::MassProperties;
@@ -81,7 +85,7 @@ impl MassProperties {
         let m = density * 4.0 / 3.0 * PI * (a - b) * q;
         let ratio = (a.powi(4) + a.powi(3) * b + a * a * b * b + a * b.powi(3) + b.powi(4)) / q;
         let i = 0.4 * m * ratio;
-        Ok(symmetric(m, DVec3::ZERO, i, i))
+        representable(symmetric(m, DVec3::ZERO, i, i))
     }
 
     /// A solid rectangular box with edge lengths `size` along x, y, z, centred at the origin.
@@ -92,6 +96,8 @@ impl MassProperties {
     ///
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or edge that is not positive and finite.
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use glam::DVec3;
@@ -108,7 +114,7 @@ impl MassProperties {
         }
         let m = density * size.x * size.y * size.z;
         let s = size * size;
-        Ok(Self {
+        representable(Self {
             mass: m,
             center_of_mass: DVec3::ZERO,
             inertia: DMat3::from_diagonal(DVec3::new(s.y + s.z, s.x + s.z, s.x + s.y) * (m / 12.0)),
@@ -123,6 +129,8 @@ impl MassProperties {
     ///
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or dimension that is not positive and finite.
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use kreisel_inertia::MassProperties;
@@ -136,7 +144,7 @@ impl MassProperties {
         check_positive("height", height)?;
         let m = density * PI * radius * radius * height;
         let r2 = radius * radius;
-        Ok(symmetric(
+        representable(symmetric(
             m,
             DVec3::ZERO,
             m * (3.0 * r2 + height * height) / 12.0,
@@ -153,6 +161,8 @@ impl MassProperties {
     ///
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or dimension that is not positive and finite.
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use kreisel_inertia::MassProperties;
@@ -166,7 +176,7 @@ impl MassProperties {
         check_positive("height", height)?;
         let m = density * PI * radius * radius * height / 3.0;
         let (r2, h2) = (radius * radius, height * height);
-        Ok(symmetric(
+        representable(symmetric(
             m,
             DVec3::new(0.0, 0.0, height / 4.0),
             m * (3.0 * r2 / 20.0 + 3.0 * h2 / 80.0),
@@ -186,6 +196,8 @@ impl MassProperties {
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or radius that is not
     /// positive, or a negative length (0 is a sphere).
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use kreisel_inertia::MassProperties;
@@ -209,7 +221,7 @@ impl MassProperties {
         let i_axis = mc * r * r / 2.0 + 0.4 * ms * r * r;
         let i_perp = mc * (l * l / 12.0 + r * r / 4.0)
             + ms * (0.4 * r * r + l * l / 4.0 + 3.0 * l * r / 8.0);
-        Ok(symmetric(mc + ms, DVec3::ZERO, i_perp, i_axis))
+        representable(symmetric(mc + ms, DVec3::ZERO, i_perp, i_axis))
     }
 
     /// A solid ellipsoid with semi-axes `semi_axes` along x, y, z, centred at the origin.
@@ -220,6 +232,8 @@ impl MassProperties {
     ///
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or semi-axis that is not positive and finite.
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use glam::DVec3;
@@ -236,7 +250,7 @@ impl MassProperties {
         }
         let m = density * 4.0 / 3.0 * PI * semi_axes.x * semi_axes.y * semi_axes.z;
         let s = semi_axes * semi_axes;
-        Ok(Self {
+        representable(Self {
             mass: m,
             center_of_mass: DVec3::ZERO,
             inertia: DMat3::from_diagonal(DVec3::new(s.y + s.z, s.x + s.z, s.x + s.y) * (m / 5.0)),
@@ -253,6 +267,8 @@ impl MassProperties {
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density or radius that is not
     /// positive, or `minor ≥ major` (a self-intersecting torus).
+    /// [`InertiaError::NotRepresentable`] when the mass or a moment overflows
+    /// f64 (or the mass underflows to zero).
     ///
     /// ```
     /// use kreisel_inertia::MassProperties;
@@ -266,7 +282,7 @@ impl MassProperties {
         check_positive("major − minor radius", major - minor)?;
         let (rr, r) = (major, minor);
         let m = density * 2.0 * PI * PI * rr * r * r;
-        Ok(symmetric(
+        representable(symmetric(
             m,
             DVec3::ZERO,
             m * (rr * rr / 2.0 + 5.0 / 8.0 * r * r),
@@ -288,6 +304,29 @@ mod tests {
         assert!(MassProperties::solid_box(1.0, DVec3::new(1.0, 0.0, 1.0)).is_err());
         assert!(MassProperties::solid_torus(1.0, 1.0, 1.0).is_err());
         assert!(MassProperties::solid_capsule(1.0, 1.0, -1.0).is_err());
+    }
+
+    #[test]
+    fn overflowing_primitives_are_errors_not_infinities() {
+        // Regression: solid_sphere(1000, 1e200) was Ok with mass = inf.
+        let huge = [
+            MassProperties::solid_sphere(1000.0, 1e200),
+            MassProperties::hollow_sphere(1000.0, 0.0, 1e200),
+            MassProperties::solid_box(1000.0, DVec3::splat(1e200)),
+            MassProperties::solid_cylinder(1000.0, 1e200, 1.0),
+            MassProperties::solid_cone(1000.0, 1.0, 1e200),
+            MassProperties::solid_capsule(1000.0, 1e110, 1.0),
+            MassProperties::solid_ellipsoid(1e300, DVec3::new(1e10, 1.0, 1.0)),
+            MassProperties::solid_torus(1000.0, 1e200, 1.0),
+            // Underflow: a mass of zero is no body either.
+            MassProperties::solid_sphere(1e-300, 1e-100),
+        ];
+        for (k, p) in huge.into_iter().enumerate() {
+            assert!(
+                matches!(p, Err(InertiaError::NotRepresentable { .. })),
+                "{k}: {p:?}"
+            );
+        }
     }
 
     #[test]

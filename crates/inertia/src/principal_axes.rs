@@ -4,6 +4,8 @@
 use glam::{DMat3, DQuat, DVec3};
 use kreisel_kinematics::quat_from_rotation_matrix;
 
+use crate::InertiaError;
+
 /// Principal moments of inertia and the principal frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PrincipalAxes {
@@ -19,6 +21,29 @@ pub struct PrincipalAxes {
 }
 
 impl PrincipalAxes {
+    /// Diagonalises a symmetric tensor, refusing a non-finite one (where
+    /// [`PrincipalAxes::from_tensor`] gives NaN throughout).
+    ///
+    /// # Errors
+    /// [`InertiaError::UnphysicalInertia`] if an element is NaN or infinite.
+    ///
+    /// ```
+    /// use glam::{DMat3, DVec3};
+    /// use kreisel_inertia::PrincipalAxes;
+    /// let p = PrincipalAxes::try_from_tensor(DMat3::from_diagonal(DVec3::new(2.0, 1.0, 3.0)))?;
+    /// assert_eq!(p.moments, DVec3::new(1.0, 2.0, 3.0));
+    /// assert!(PrincipalAxes::try_from_tensor(DMat3::from_diagonal(DVec3::INFINITY)).is_err());
+    /// # Ok::<(), kreisel_inertia::InertiaError>(())
+    /// ```
+    pub fn try_from_tensor(tensor: DMat3) -> Result<Self, InertiaError> {
+        if !tensor.is_finite() {
+            return Err(InertiaError::UnphysicalInertia {
+                reason: "tensor has a non-finite element".into(),
+            });
+        }
+        Ok(Self::from_tensor(tensor))
+    }
+
     /// Diagonalises a symmetric tensor: `I = R diag(moments) Rᵀ`.
     ///
     /// Cyclic Jacobi rotations (Jacobi 1846; Golub & Van Loan, *Matrix
@@ -33,7 +58,8 @@ impl PrincipalAxes {
     ///
     /// Signs: the first two axes have their largest component positive, the
     /// third is their cross product. Only the symmetric part of `tensor` is
-    /// used (the upper triangle). A non-finite tensor gives NaN throughout.
+    /// used (the upper triangle). A non-finite tensor gives NaN throughout
+    /// (see [`PrincipalAxes::try_from_tensor`]).
     ///
     /// ```
     /// use glam::{DMat3, DVec3};
@@ -222,5 +248,13 @@ mod tests {
         m.y_axis.x = f64::NAN;
         let p = PrincipalAxes::from_tensor(m);
         assert!(p.moments.is_nan() && p.axes.is_nan());
+    }
+
+    #[test]
+    fn non_finite_tensors_are_refused_by_the_try_form() {
+        let mut t = DMat3::IDENTITY;
+        t.y_axis.x = f64::NAN;
+        assert!(PrincipalAxes::try_from_tensor(t).is_err());
+        assert!(PrincipalAxes::from_tensor(t).moments.is_nan());
     }
 }

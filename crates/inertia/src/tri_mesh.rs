@@ -1,7 +1,5 @@
 //! Indexed triangle meshes: vertices and triangles, validated on construction.
 
-use std::collections::HashMap;
-
 use glam::DVec3;
 
 use crate::InertiaError;
@@ -106,9 +104,36 @@ impl TriMesh {
     }
 
     /// The three corners of triangle `t`.
+    ///
+    /// # Panics
+    /// When an index of `t` is not a vertex of this mesh (never for the
+    /// mesh's own [`TriMesh::triangles`]); [`TriMesh::try_corners`] returns
+    /// `None` instead.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_inertia::TriMesh;
+    /// let mesh = TriMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
+    /// assert_eq!(mesh.corners([2, 1, 0]), [DVec3::Y, DVec3::X, DVec3::ZERO]);
+    /// ```
     #[inline]
     pub fn corners(&self, t: [u32; 3]) -> [DVec3; 3] {
         t.map(|i| self.vertices[i as usize])
+    }
+
+    /// The three corners of triangle `t`, or `None` when an index is not a
+    /// vertex of this mesh.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_inertia::TriMesh;
+    /// let mesh = TriMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
+    /// assert_eq!(mesh.try_corners([0, 1, 2]), Some([DVec3::ZERO, DVec3::X, DVec3::Y]));
+    /// assert_eq!(mesh.try_corners([0, 1, 3]), None);
+    /// ```
+    pub fn try_corners(&self, t: [u32; 3]) -> Option<[DVec3; 3]> {
+        let [a, b, c] = t.map(|i| self.vertices.get(i as usize).copied());
+        Some([a?, b?, c?])
     }
 
     /// The mesh with every vertex scaled about the origin by `factor`.
@@ -117,17 +142,45 @@ impl TriMesh {
     /// v ↦ s · v
     /// ```
     ///
+    /// # Errors
+    /// [`InertiaError::NotFinite`] for a NaN or infinite factor,
+    /// [`InertiaError::NonFiniteVertex`] when a scaled coordinate overflows.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_inertia::TriMesh;
+    /// let mesh = TriMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
+    /// assert_eq!(mesh.clone().try_scaled(1e-3)?.vertices()[1], DVec3::new(1e-3, 0.0, 0.0));
+    /// assert!(mesh.clone().try_scaled(f64::NAN).is_err());
+    /// assert!(mesh.try_scaled(1e308)?.try_scaled(10.0).is_err());
+    /// # Ok::<(), kreisel_inertia::InertiaError>(())
+    /// ```
+    pub fn try_scaled(mut self, factor: f64) -> Result<Self, InertiaError> {
+        if !factor.is_finite() {
+            return Err(InertiaError::NotFinite {
+                quantity: "scale factor",
+                value: factor,
+            });
+        }
+        for v in &mut self.vertices {
+            *v *= factor;
+        }
+        self.check_finite()
+    }
+
+    /// The mesh with every vertex scaled about the origin by `factor`.
+    ///
+    /// # Panics
+    /// When [`TriMesh::try_scaled`] fails (a non-finite factor, overflow).
+    ///
     /// ```
     /// use glam::DVec3;
     /// use kreisel_inertia::TriMesh;
     /// let mesh = TriMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]).scaled(1e-3);
     /// assert_eq!(mesh.vertices()[1], DVec3::new(1e-3, 0.0, 0.0));
     /// ```
-    pub fn scaled(mut self, factor: f64) -> Self {
-        for v in &mut self.vertices {
-            *v *= factor;
-        }
-        self
+    pub fn scaled(self, factor: f64) -> Self {
+        self.try_scaled(factor).unwrap_or_else(|e| panic!("{e}"))
     }
 
     /// The mesh with every vertex moved by `offset`.
@@ -136,22 +189,59 @@ impl TriMesh {
     /// v ↦ v + offset
     /// ```
     ///
+    /// # Errors
+    /// [`InertiaError::NotFinite`] for a non-finite offset,
+    /// [`InertiaError::NonFiniteVertex`] when a moved coordinate overflows.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_inertia::TriMesh;
+    /// let mesh = TriMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]);
+    /// assert_eq!(mesh.clone().try_translated(DVec3::Z)?.vertices()[0], DVec3::Z);
+    /// assert!(mesh.try_translated(DVec3::splat(f64::INFINITY)).is_err());
+    /// # Ok::<(), kreisel_inertia::InertiaError>(())
+    /// ```
+    pub fn try_translated(mut self, offset: DVec3) -> Result<Self, InertiaError> {
+        if let Some(&value) = offset.to_array().iter().find(|x| !x.is_finite()) {
+            return Err(InertiaError::NotFinite {
+                quantity: "offset",
+                value,
+            });
+        }
+        for v in &mut self.vertices {
+            *v += offset;
+        }
+        self.check_finite()
+    }
+
+    /// The mesh with every vertex moved by `offset`.
+    ///
+    /// # Panics
+    /// When [`TriMesh::try_translated`] fails (a non-finite offset, overflow).
+    ///
     /// ```
     /// use glam::DVec3;
     /// use kreisel_inertia::TriMesh;
     /// let mesh = TriMesh::new(vec![DVec3::ZERO, DVec3::X, DVec3::Y], vec![[0, 1, 2]]).translated(DVec3::Z);
     /// assert_eq!(mesh.vertices()[0], DVec3::Z);
     /// ```
-    pub fn translated(mut self, offset: DVec3) -> Self {
-        for v in &mut self.vertices {
-            *v += offset;
+    pub fn translated(self, offset: DVec3) -> Self {
+        self.try_translated(offset)
+            .unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// `self`, or the first vertex with a non-finite coordinate.
+    fn check_finite(self) -> Result<Self, InertiaError> {
+        match self.vertices.iter().position(|v| !v.is_finite()) {
+            Some(vertex) => Err(InertiaError::NonFiniteVertex { vertex }),
+            None => Ok(self),
         }
-        self
     }
 
     /// Merges vertices with bit-identical coordinates (as STL files repeat
     /// every vertex once per triangle), so that topology checks see shared
-    /// edges. Unused vertices are dropped; triangle order is kept.
+    /// edges. Unused vertices are dropped; triangle order is kept. The same
+    /// as [`TriMesh::welded`] with [`crate::Weld::Exact`].
     ///
     /// ```text
     /// v_i ≡ v_j  ⇔  v_i == v_j exactly   (−0.0 ≡ +0.0)
@@ -166,31 +256,10 @@ impl TriMesh {
     /// assert_eq!(mesh.triangles()[1], [1, 3, 2]);
     /// ```
     pub fn merge_duplicate_vertices(self) -> Self {
-        let key = |v: DVec3| (v + DVec3::ZERO).to_array().map(f64::to_bits);
-        let mut index_of: HashMap<[u64; 3], u32> = HashMap::with_capacity(self.vertices.len());
-        let mut vertices = Vec::new();
-        let mut remap = vec![u32::MAX; self.vertices.len()];
-        let triangles = self
-            .triangles
-            .iter()
-            .map(|t| {
-                t.map(|i| {
-                    let i = i as usize;
-                    if remap[i] == u32::MAX {
-                        let v = self.vertices[i];
-                        remap[i] = *index_of.entry(key(v)).or_insert_with(|| {
-                            vertices.push(v);
-                            // Fewer vertices than the input, which had u32 indices.
-                            (vertices.len() - 1) as u32
-                        });
-                    }
-                    remap[i]
-                })
-            })
-            .collect();
-        Self {
-            vertices,
-            triangles,
+        match self.welded(crate::Weld::Exact) {
+            Ok((mesh, _)) => mesh,
+            // Exact welding has no tolerance to reject.
+            Err(_) => unreachable!("exact welding cannot fail"),
         }
     }
 }

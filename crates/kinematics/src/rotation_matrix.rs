@@ -59,9 +59,16 @@ pub fn orthonormality_error(m: DMat3) -> f64 {
 /// w-case: r = √(1 + M₀₀ + M₁₁ + M₂₂),  w = r/2,  x = (M₂₁ − M₁₂)/(2r), …
 /// ```
 ///
-/// The result is normalised. For a matrix that is not orthonormal the
-/// result is some nearby rotation; use [`try_quat_from_rotation_matrix`] on
-/// untrusted input.
+/// The result is normalised. For a matrix that is slightly off orthonormal
+/// (rounded digits) the result is a nearby rotation; use
+/// [`try_quat_from_rotation_matrix`] on untrusted input.
+///
+/// # Panics
+/// If `m` has a non-finite element or `det M ≤ 0` (the zero matrix, a
+/// reflection such as `−I`): no rotation is near such a matrix, and
+/// returning one (the identity for the zero matrix, a half turn for `−I`)
+/// would be a silently wrong answer. [`try_quat_from_rotation_matrix`]
+/// returns a typed error instead.
 ///
 /// ```
 /// use glam::{DMat3, DQuat};
@@ -71,6 +78,13 @@ pub fn orthonormality_error(m: DMat3) -> f64 {
 /// assert!(rotation_angle_between(q, back) < 1e-15);
 /// ```
 pub fn quat_from_rotation_matrix(m: DMat3) -> DQuat {
+    let determinant = m.determinant();
+    // `>` is false for NaN, so a non-finite matrix lands here too.
+    if !(determinant > 0.0 && m.is_finite()) {
+        panic!(
+            "quat_from_rotation_matrix: not a rotation (determinant {determinant}); use try_quat_from_rotation_matrix"
+        );
+    }
     // m.col(c)[r] = M_rc
     let e = |r: usize, c: usize| m.col(c)[r];
     let (m00, m11, m22) = (e(0, 0), e(1, 1), e(2, 2));
@@ -174,6 +188,28 @@ mod tests {
                 let err = rotation_angle_between(q, back);
                 assert!(err < 1e-15, "{axis} {angle} {err}");
             }
+        }
+    }
+
+    #[test]
+    fn zero_matrix_and_point_reflection_are_rejected() {
+        // Regression: the zero matrix gave the identity, −I a half turn.
+        let tol = ORTHONORMALITY_TOLERANCE;
+        assert!(matches!(
+            try_quat_from_rotation_matrix(DMat3::ZERO, tol),
+            Err(KinematicsError::NotOrthonormal { .. })
+        ));
+        assert!(matches!(
+            try_quat_from_rotation_matrix(-DMat3::IDENTITY, tol),
+            Err(KinematicsError::Reflection { .. })
+        ));
+        for m in [
+            DMat3::ZERO,
+            -DMat3::IDENTITY,
+            DMat3::from_diagonal(DVec3::NAN),
+        ] {
+            let unchecked = std::panic::catch_unwind(|| quat_from_rotation_matrix(m));
+            assert!(unchecked.is_err(), "{m}");
         }
     }
 

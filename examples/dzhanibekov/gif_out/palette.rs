@@ -169,13 +169,13 @@ fn cell_representatives(distinct: &[(u32, u32)]) -> Vec<u32> {
 }
 
 /// Maps pixels to palette indices through a lazily filled 15-bit lookup table.
-pub(super) struct Mapper<'a> {
-    palette: &'a Palette,
+pub(super) struct Mapper {
+    palette: Palette,
     lut: Vec<u16>,
 }
 
-impl<'a> Mapper<'a> {
-    pub(super) fn new(palette: &'a Palette) -> Mapper<'a> {
+impl Mapper {
+    pub(super) fn new(palette: Palette) -> Mapper {
         let mut lut = vec![LUT_UNSET; LUT_CELLS];
         // Seeds are ordered most frequent first; the first seed in a cell wins.
         for (i, &c) in palette.colors[..palette.seeds].iter().enumerate() {

@@ -3,12 +3,14 @@
 
 use std::path::PathBuf;
 
-use kreisel_inertia::io::{Body, load_bodies};
+use glam::DVec3;
+use kreisel_inertia::io::{Body, LoadOptions, LoadWarning};
 use kreisel_inertia::{
-    MassModel, MassProperties, Material, MeshMassReport, PrincipalAxes, mesh_mass_properties,
+    InertiaError, MassModel, MassProperties, Material, MeshMassReport, PrincipalAxes,
+    mesh_mass_properties, prepare_solid,
 };
 
-use super::{DEFAULT_DENSITY, Units};
+use super::{DEFAULT_DENSITY, Units, WeldChoice};
 use crate::error::{BodyProblem, CliError};
 use crate::numbers::Shortest;
 
@@ -36,9 +38,21 @@ pub struct Setup {
     pub model: MassModel,
     /// The density, or how it is derived.
     pub density: DensityChoice,
+    /// How vertices are welded on loading.
+    pub weld: WeldChoice,
+    /// All bodies of the file as one (`--merge`).
+    pub merge: bool,
 }
 
 impl Setup {
+    /// How the library loads the file.
+    fn load_options(&self, merge: bool) -> LoadOptions {
+        LoadOptions {
+            weld: self.weld.weld(self.scale),
+            merge,
+        }
+    }
+
     /// `m (scale 1)`, `mm (scale 0.001)`, or `1 unit = 2 m (scale 2)`.
     pub fn units_text(&self) -> String {
         match self.units {
@@ -122,13 +136,16 @@ pub struct Summary {
     pub area: f64,
     /// Triangles integrated (after repairs; of the hull for `--hull`).
     pub triangles: usize,
-    /// Repairs made to the mesh (for the assembly: prefixed with the body).
+    /// Repairs made to the mesh (for the assembly: the file's warnings, then
+    /// each body's prefixed with its name).
     pub warnings: Vec<String>,
 }
 
 impl Summary {
-    /// One body's summary from the library's report.
-    fn of_body(name: String, report: MeshMassReport) -> Self {
+    /// One body's summary from the loader's warnings and the library's report.
+    fn of_body(name: String, loaded: Vec<String>, report: MeshMassReport) -> Self {
+        let mut warnings = loaded;
+        warnings.extend(report.warnings.iter().map(ToString::to_string));
         Self {
             name,
             principal: report.properties.principal(),
@@ -137,7 +154,7 @@ impl Summary {
             volume: report.volume,
             area: report.area,
             triangles: report.triangles,
-            warnings: report.warnings.iter().map(ToString::to_string).collect(),
+            warnings,
         }
     }
 }
@@ -151,6 +168,90 @@ pub struct Report {
     pub bodies: Vec<Summary>,
     /// The rigid sum of all bodies (equal to the body when there is one).
     pub assembly: Summary,
+    /// Warnings about the file as a whole (implausible units).
+    pub file_warnings: Vec<String>,
+}
+
+/// A loader warning in the CLI's terms: lengths in metres, the option that
+/// controls it.
+fn load_warning_text(warning: &LoadWarning, scale: f64) -> String {
+    match warning {
+        LoadWarning::Welded {
+            vertices,
+            tolerance,
+            max_move,
+        } => format!(
+            "welded {vertices} vertices lying within {:.2e} m of another (largest move {:.2e} m); \
+             --weld sets the tolerance",
+            tolerance * scale,
+            max_move * scale
+        ),
+        other => other.to_string(),
+    }
+}
+
+/// Smallest and largest plausible size of a part, m.
+const PLAUSIBLE_SIZE: (f64, f64) = (1e-3, 10.0);
+
+/// A warning when the bodies' bounding box (m) is implausibly large or
+/// small for the stated units, naming the unit that makes it plausible.
+fn units_warning(setup: &Setup, bodies: &[(Body, Vec<String>)]) -> Option<String> {
+    let (lo, hi) = bodies
+        .iter()
+        .flat_map(|(b, _)| b.mesh.vertices())
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        });
+    let extent = hi - lo;
+    let size = extent.max_element();
+    let (small, large) = PLAUSIBLE_SIZE;
+    if !size.is_finite() || (small..=large).contains(&size) || size == 0.0 {
+        return None;
+    }
+    let raw = size / setup.scale;
+    let order = if size > large {
+        [Units::Mm, Units::Cm, Units::In, Units::M]
+    } else {
+        [Units::M, Units::In, Units::Cm, Units::Mm]
+    };
+    let advice = order
+        .into_iter()
+        .filter(|&u| setup.units != Some(u))
+        .find(|&u| (small..=large).contains(&(raw * u.scale())))
+        .map_or_else(
+            || "if that is not its size, rerun with --scale S (metres per mesh unit)".to_owned(),
+            |u| {
+                format!(
+                    "if its coordinates are in {}, rerun with --units {} ({} m across)",
+                    unit_name(u),
+                    u.symbol(),
+                    three_digits(raw * u.scale())
+                )
+            },
+        );
+    Some(format!(
+        "the mesh is {} m across ({} x {} x {} m) with mesh units {}, implausible for a part; {advice}",
+        three_digits(size),
+        three_digits(extent.x),
+        three_digits(extent.y),
+        three_digits(extent.z),
+        setup.units_text()
+    ))
+}
+
+/// `x` rounded to three significant digits, in shortest form (`49.3`).
+fn three_digits(x: f64) -> Shortest {
+    Shortest(format!("{x:.2e}").parse().unwrap_or(x))
+}
+
+/// The unit's name in words.
+fn unit_name(u: Units) -> &'static str {
+    match u {
+        Units::Mm => "millimetres",
+        Units::Cm => "centimetres",
+        Units::M => "metres",
+        Units::In => "inches",
+    }
 }
 
 /// Loads the mesh file and computes every body and the assembly.
@@ -159,35 +260,25 @@ pub struct Report {
 /// [`CliError::LoadMesh`], [`CliError::NoBodies`], [`CliError::Body`] (naming the body; for an open
 /// mesh suggesting `--shell` or `--hull`), [`CliError::DerivedDensity`].
 pub fn compute(setup: Setup) -> Result<Report, CliError> {
-    let bodies = load_bodies(&setup.file).map_err(|source| CliError::LoadMesh { source })?;
+    let bodies = load_scaled(&setup, setup.merge)?;
     if bodies.is_empty() {
         return Err(CliError::NoBodies {
             path: setup.file.clone(),
         });
     }
-    let mut scaled = Vec::with_capacity(bodies.len());
-    for Body { name, mesh } in bodies {
-        let mesh = if setup.scale == 1.0 {
-            mesh
-        } else {
-            mesh.scaled(setup.scale)
-        };
-        if !mesh.vertices().iter().all(|v| v.is_finite()) {
-            let problem = BodyProblem::ScaleOverflow { scale: setup.scale };
-            return Err(body_error(&setup, name, problem));
-        }
-        scaled.push(Body { name, mesh });
-    }
+    let file_warnings: Vec<String> = units_warning(&setup, &bodies).into_iter().collect();
+    let several = bodies.len() > 1;
+    let fail = |name: String, e: InertiaError| body_error(&setup, name, several, e);
     let density = match setup.density {
         DensityChoice::Default => DEFAULT_DENSITY,
         DensityChoice::Given(d) => d,
         DensityChoice::TotalMass(mass) => {
             // One density for the whole file: integrate once for the volumes.
             let mut volume = 0.0;
-            for body in &scaled {
+            for (body, _) in &bodies {
                 let unit =
                     mesh_mass_properties(body.mesh.clone(), setup.model, Material::Density(1.0))
-                        .map_err(|e| body_error(&setup, body.name.clone(), e.into()))?;
+                        .map_err(|e| fail(body.name.clone(), e))?;
                 volume += unit.volume;
             }
             let density = mass / volume;
@@ -201,31 +292,64 @@ pub fn compute(setup: Setup) -> Result<Report, CliError> {
             density
         }
     };
-    let mut summaries = Vec::with_capacity(scaled.len());
-    for Body { name, mesh } in scaled {
+    let mut summaries = Vec::with_capacity(bodies.len());
+    for (Body { name, mesh, .. }, loaded) in bodies {
         match mesh_mass_properties(mesh, setup.model, Material::Density(density)) {
-            Ok(report) => summaries.push(Summary::of_body(name, report)),
-            Err(e) => return Err(body_error(&setup, name, e.into())),
+            Ok(report) => summaries.push(Summary::of_body(name, loaded, report)),
+            Err(e) => return Err(fail(name, e)),
         }
     }
-    let assembly = assemble(&summaries, density);
+    let assembly = assemble(&summaries, &file_warnings, density);
     Ok(Report {
         setup,
         bodies: summaries,
         assembly,
+        file_warnings,
     })
 }
 
+/// The file's bodies, scaled to metres, each with its loader warnings as text.
+fn load_scaled(setup: &Setup, merge: bool) -> Result<Vec<(Body, Vec<String>)>, CliError> {
+    let bodies = setup
+        .load_options(merge)
+        .load(&setup.file)
+        .map_err(|source| CliError::LoadMesh { source })?;
+    let mut scaled = Vec::with_capacity(bodies.len());
+    for mut body in bodies {
+        if setup.scale != 1.0 {
+            body.mesh = match body.mesh.try_scaled(setup.scale) {
+                Ok(mesh) => mesh,
+                Err(_) => {
+                    let problem = BodyProblem::ScaleOverflow { scale: setup.scale };
+                    return Err(CliError::Body {
+                        path: setup.file.clone(),
+                        body: body.name,
+                        problem,
+                    });
+                }
+            };
+        }
+        let loaded = body
+            .warnings
+            .iter()
+            .map(|w| load_warning_text(w, setup.scale))
+            .collect();
+        scaled.push((body, loaded));
+    }
+    Ok(scaled)
+}
+
 /// The rigid sum of the bodies (all in the mesh frame).
-fn assemble(bodies: &[Summary], density: f64) -> Summary {
+fn assemble(bodies: &[Summary], file_warnings: &[String], density: f64) -> Summary {
     let properties: MassProperties = bodies.iter().map(|b| b.properties).sum();
-    let warnings = bodies
+    let warnings = file_warnings
         .iter()
-        .flat_map(|b| {
+        .cloned()
+        .chain(bodies.iter().flat_map(|b| {
             b.warnings
                 .iter()
                 .map(move |w| format!("body '{}': {w}", b.name))
-        })
+        }))
         .collect();
     Summary {
         name: "assembly".into(),
@@ -239,12 +363,66 @@ fn assemble(bodies: &[Summary], density: f64) -> Summary {
     }
 }
 
-/// The error of one body of the setup's file.
-fn body_error(setup: &Setup, body: String, problem: BodyProblem) -> CliError {
+/// The error of one body of the setup's file: when the body is open but
+/// the file's bodies merged form a solid, the error says to use `--merge`.
+fn body_error(setup: &Setup, body: String, several: bool, error: InertiaError) -> CliError {
+    let topology = matches!(
+        error,
+        InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. }
+    );
+    let closing_weld = match error {
+        InertiaError::OpenMesh {
+            weld_gap: Some(gap),
+            ..
+        } => Some(round_up(1.5 * gap)),
+        _ => None,
+    };
+    let problem = if several && topology && !setup.merge && merged_is_solid(setup) {
+        BodyProblem::ClosedOnlyMerged { source: error }
+    } else if let Some(weld) = closing_weld.filter(|&w| welded_is_solid(setup, &body, w)) {
+        BodyProblem::Cracks {
+            source: error,
+            weld,
+        }
+    } else {
+        BodyProblem::from(error)
+    };
     CliError::Body {
         path: setup.file.clone(),
         body,
         problem,
+    }
+}
+
+/// Whether body `name` is a closed surface when welded within `weld` metres.
+fn welded_is_solid(setup: &Setup, name: &str, weld: f64) -> bool {
+    let trial = Setup {
+        weld: WeldChoice::Metres(weld),
+        ..setup.clone()
+    };
+    match load_scaled(&trial, setup.merge) {
+        Ok(bodies) => bodies
+            .into_iter()
+            .find(|(body, _)| body.name == name)
+            .is_some_and(|(body, _)| prepare_solid(body.mesh).is_ok()),
+        Err(_) => false,
+    }
+}
+
+/// `x` rounded up to one significant digit (`1.3e-7` → `2e-7`).
+fn round_up(x: f64) -> f64 {
+    let unit = 10f64.powf(x.log10().floor());
+    let up = (x / unit).ceil() * unit;
+    if up.is_finite() && up >= x { up } else { x }
+}
+
+/// Whether all bodies of the file together form a closed surface.
+fn merged_is_solid(setup: &Setup) -> bool {
+    match load_scaled(setup, true) {
+        Ok(bodies) => bodies
+            .into_iter()
+            .all(|(body, _)| prepare_solid(body.mesh).is_ok()),
+        Err(_) => false,
     }
 }
 
@@ -259,6 +437,8 @@ mod tests {
             scale,
             model,
             density,
+            weld: WeldChoice::Default,
+            merge: false,
         }
     }
 

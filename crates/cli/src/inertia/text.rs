@@ -40,6 +40,9 @@ pub fn render(report: &Report) -> String {
         "bodies",
         &format!("{} ({})", report.bodies.len(), names.join(", ")),
     );
+    for w in &report.file_warnings {
+        line(&mut out, "warning", &one_line(w));
+    }
     for body in &report.bodies {
         out.push('\n');
         section(&mut out, &format!("body '{}'", one_line(&body.name)), body);

@@ -4,6 +4,7 @@
 //! the largest errors measured against the exact reference values.
 
 mod assets;
+mod closed_in_practice;
 mod errors;
 mod meshes;
 mod options;

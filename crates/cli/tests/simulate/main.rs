@@ -5,6 +5,7 @@
 //! Run with `cargo test -p kreisel-cli --test simulate -- --nocapture` to see
 //! the measured errors and flip intervals.
 
+mod divergence;
 mod errors;
 mod heavy_top;
 mod output;

@@ -75,3 +75,43 @@ fn usage_errors_come_from_clap() {
     let run = with("--format", "xml");
     assert_eq!(run.code, Some(2));
 }
+
+/// θ₀ outside [0, π] (once folded silently), I₃ > 2 I₁ (no real body), a
+/// subnormal moment and overflowing products are one-line errors naming
+/// the option, never a report with NaN.
+#[test]
+fn unphysical_and_unrepresentable_tops_name_the_option() {
+    for (option, value) in [
+        ("--theta0", "4"),
+        ("--theta0", "-0.1"),
+        ("--theta0", "3.1415926535897936"),
+        ("--i3", "2.5"),
+        ("--i1", "1e-320"),
+        ("--psi-dot0", "1e300"),
+        ("--theta-dot0", "1e200"),
+        ("--mgl", "1e308"),
+    ] {
+        let run = with(option, value);
+        let line = run.error_line(1);
+        assert!(
+            line.starts_with(&format!("kreisel: error: {option}: {value}: "))
+                || line.starts_with(&format!("kreisel: error: {option}: ")),
+            "{option} {value}: {line}"
+        );
+        assert!(line.len() < 200, "{line}");
+    }
+    let line = with("--theta0", "4").error_line(1).to_owned();
+    assert!(line.contains("[0, pi]"), "{line}");
+    let line = with("--i3", "2.5").error_line(1).to_owned();
+    assert!(line.contains("2 i1"), "{line}");
+    // The edges are tops: θ₀ = 0 and π (as f64), a disc pivoted at its centre.
+    for (option, value) in [
+        ("--theta0", "0"),
+        ("--theta0", "3.141592653589793"),
+        ("--i3", "2"),
+    ] {
+        let run = with(option, value);
+        assert_eq!(run.code, Some(0), "{option} {value}: {}", run.stderr);
+        assert!(!run.stdout.contains("NaN") && !run.stdout.contains("inf"));
+    }
+}

@@ -201,3 +201,39 @@ fn defaults_are_zero_rates() {
     assert_eq!(full.stdout, short.stdout);
     assert_eq!(case_args(&CASES[0])[1], "--i1");
 }
+
+/// A fast top keeps full precision through the CLI: the mean precession
+/// rate at ψ̇₀ = 1e10 against mpmath (tests/data/lagrange_top/fast_tops.csv,
+/// 120 digits); it was reported as 0 (true 2e-9 rad/s).
+#[test]
+fn fast_top_mean_precession_is_exact() {
+    let manifest = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let csv = manifest
+        .ancestors()
+        .map(|d| d.join("tests/data/lagrange_top/fast_tops.csv"))
+        .find(|p| p.is_file())
+        .expect("fast_tops.csv");
+    let text = std::fs::read_to_string(csv).unwrap();
+    let mut checked = 0;
+    for line in text.lines().filter(|l| l.starts_with("released,")) {
+        let f: Vec<&str> = line.split(',').collect();
+        let x: Vec<f64> = f[1..16].iter().map(|v| v.parse().unwrap()).collect();
+        let case = [x[0], x[1], x[2], x[3], x[4], x[5], x[6]];
+        let run = run_case(&case, &["--format", "json"]);
+        let raw = raw_members(&run.stdout);
+        for (key, want) in [
+            ("mean_precession_rate", x[14]),
+            ("nutation_period", x[13]),
+            ("theta_max", x[12]),
+        ] {
+            let got = number(&raw, key).unwrap();
+            assert!(
+                (got - want).abs() <= 1e-12 * want.abs(),
+                "psi_dot0 {}: {key} {got} vs {want}",
+                x[6]
+            );
+        }
+        checked += 1;
+    }
+    assert_eq!(checked, 5);
+}

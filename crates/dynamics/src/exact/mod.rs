@@ -11,6 +11,7 @@ use glam::{DQuat, DVec3};
 use self::asymmetric::Asymmetric;
 use crate::elliptic::dd::Dd;
 use crate::integrator::Propagator;
+use crate::rigid_body::moment_scale;
 use crate::splitting::{axis_flow, casimir_flow};
 use crate::{DynamicsError, FreeBodyIntegrator, PrincipalState, RigidBody};
 
@@ -51,6 +52,10 @@ use crate::{DynamicsError, FreeBodyIntegrator, PrincipalState, RigidBody};
 #[derive(Clone, Debug)]
 pub struct ExactSolution {
     motion: Motion,
+    /// The body's unit of inertia (a power of two, see
+    /// `rigid_body::moment_scale`): the motion is prepared for `I / unit`
+    /// and `L / unit`, and `L` is multiplied back.
+    unit: f64,
 }
 
 #[derive(Clone, Debug)]
@@ -80,10 +85,15 @@ impl ExactSolution {
     /// two of I₁, I₂, I₃ equal: symmetric;  all equal or L ∥ eₖ: uniform;  else elliptic
     /// ```
     ///
+    /// The motion is prepared in the body's own unit of inertia (the largest
+    /// moment in `[1, 2)`, an exact power-of-two rescaling of `I` and `L`),
+    /// so it is the same in every unit system.
+    ///
     /// # Errors
-    /// [`DynamicsError::UnphysicalInertia`] for moments that are not positive
-    /// and finite; [`DynamicsError::InvalidState`] for a non-finite state or
-    /// a zero quaternion (the attitude is normalised).
+    /// [`DynamicsError::UnphysicalInertia`] for moments that
+    /// [`RigidBody::try_from_principal_moments`] refuses;
+    /// [`DynamicsError::InvalidState`] for a state that
+    /// [`PrincipalState::validate`] refuses (the attitude is normalised).
     ///
     /// ```
     /// use glam::{DQuat, DVec3};
@@ -97,18 +107,15 @@ impl ExactSolution {
     /// ```
     pub fn try_new(moments: DVec3, state: PrincipalState) -> Result<ExactSolution, DynamicsError> {
         RigidBody::try_from_principal_moments(moments)?;
-        if !state.l_principal.is_finite() {
-            return Err(DynamicsError::InvalidState {
-                reason: "angular momentum is not finite",
-            });
-        }
+        state.validate(moments)?;
+        let unit = moment_scale(moments);
+        let (moments, l) = (moments / unit, state.l_principal / unit);
         let q0 =
             kreisel_kinematics::try_normalize_quat(state.world_from_principal).map_err(|_| {
                 DynamicsError::InvalidState {
                     reason: "attitude quaternion is zero or not finite",
                 }
             })?;
-        let l = state.l_principal;
         let [i1, i2, i3] = moments.to_array();
         let zeros = l.to_array().iter().filter(|&&x| x == 0.0).count();
         let uniform = Motion::Uniform {
@@ -142,7 +149,7 @@ impl ExactSolution {
                 None => uniform,
             }
         };
-        Ok(ExactSolution { motion })
+        Ok(ExactSolution { motion, unit })
     }
 
     /// The state `t` seconds after the initial state (`t` may be negative).
@@ -178,7 +185,7 @@ impl ExactSolution {
         };
         PrincipalState {
             world_from_principal,
-            l_principal,
+            l_principal: l_principal * self.unit,
         }
     }
 
@@ -280,6 +287,7 @@ impl FreeBodyIntegrator for ExactFlow {
                         l: DVec3::NAN,
                         omega: DVec3::NAN,
                     },
+                    unit: 1.0,
                 },
                 time: Dd::from_f64(0.0),
                 state,

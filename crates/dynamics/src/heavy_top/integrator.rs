@@ -3,7 +3,7 @@
 use super::HeavyTop;
 use super::rk4::HeavyTopRk4;
 use super::splitting::HeavyTopSplitting;
-use crate::{DynamicsError, PrincipalState, Propagator};
+use crate::{DivergenceCheck, DynamicsError, PrincipalState, Propagator};
 
 /// A one-step method for the heavy top.
 pub trait HeavyTopIntegrator {
@@ -12,7 +12,27 @@ pub trait HeavyTopIntegrator {
     /// The order of the method (global error `O(hᵖ)`).
     fn order(&self) -> u32;
     /// Advances `state` by `h` seconds.
+    ///
+    /// Infallible (the inner loop of every run): a step the method cannot
+    /// take leaves a non-finite state, which [`integrate_heavy_top`] and
+    /// [`crate::DivergenceCheck`] report.
     fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64);
+
+    /// Advances `state` by `h` seconds, or says why the method refuses the
+    /// step (the sub-step cap of [`crate::HeavyTopAuto`]). By default one
+    /// [`HeavyTopIntegrator::step`].
+    ///
+    /// # Errors
+    /// The method's refusal, e.g. [`DynamicsError::TooManySubsteps`].
+    fn try_step(
+        &self,
+        top: &HeavyTop,
+        state: &mut PrincipalState,
+        h: f64,
+    ) -> Result<(), DynamicsError> {
+        self.step(top, state, h);
+        Ok(())
+    }
 
     /// One top from `state`, to be advanced step after step (what
     /// `kreisel simulate` uses): each [`Propagator::advance`] is one
@@ -42,6 +62,10 @@ impl<M: HeavyTopIntegrator + ?Sized> Propagator for Stepping<'_, M> {
         self.method.step(self.top, &mut self.state, h);
     }
 
+    fn try_advance(&mut self, h: f64) -> Result<(), DynamicsError> {
+        self.method.try_step(self.top, &mut self.state, h)
+    }
+
     fn state(&self) -> PrincipalState {
         self.state
     }
@@ -53,8 +77,16 @@ impl<M: HeavyTopIntegrator + ?Sized> Propagator for Stepping<'_, M> {
 /// x(t₀ + n h) ≈ Φₕⁿ x(t₀)
 /// ```
 ///
+/// Every state reached is checked ([`crate::DivergenceCheck`]).
+///
 /// # Errors
-/// [`DynamicsError::InvalidStep`] for `h` that is not positive and finite.
+/// [`DynamicsError::InvalidStep`] for `h` that is not positive and finite;
+/// [`DynamicsError::InvalidState`] for a state that
+/// [`PrincipalState::validate`] refuses; the method's refusal of a step
+/// ([`DynamicsError::TooManySubsteps`]); [`DynamicsError::Diverged`] when a
+/// state becomes non-finite or its energy drifts beyond
+/// [`crate::DIVERGENCE_FACTOR`] times its scale (`state` then holds the
+/// last good state).
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
@@ -77,8 +109,13 @@ pub fn integrate_heavy_top(
     if !(h.is_finite() && h > 0.0) {
         return Err(DynamicsError::InvalidStep { h });
     }
-    for _ in 0..steps {
-        method.step(top, state, h);
+    state.validate(top.body().principal_moments())?;
+    let check = DivergenceCheck::heavy_top(method.name(), top, state);
+    for k in 1..=steps {
+        let mut next = *state;
+        method.try_step(top, &mut next, h)?;
+        check.check(&next, k as f64 * h)?;
+        *state = next;
     }
     Ok(())
 }

@@ -11,7 +11,7 @@ mod splitting;
 use glam::{DQuat, DVec3};
 use kreisel_inertia::MassProperties;
 
-pub use self::auto::HeavyTopAuto;
+pub use self::auto::{HeavyTopAuto, MAX_SUBSTEPS};
 pub use self::integrator::{
     HEAVY_TOP_METHODS, HeavyTopIntegrator, heavy_top_method, integrate_heavy_top,
 };
@@ -186,6 +186,15 @@ impl HeavyTop {
         }
         check_finite("centre of mass", com_principal)?;
         check_finite("gravity", gravity_world)?;
+        check_finite("weight (mass times gravity)", gravity_world * mass)?;
+        let potential = (gravity_world * mass).length() * com_principal.length();
+        if !potential.is_finite() {
+            return Err(invalid(
+                "largest potential energy |M g| |c|",
+                potential,
+                "must be finite (it overflows)",
+            ));
+        }
         Ok(Self {
             free: FreeFlow::for_moments(body.principal_moments()),
             body,
@@ -317,6 +326,38 @@ impl HeavyTop {
         let j_min = self.body.principal_moments().min_element();
         let t_max = self.energy(state) + self.weight_world.length() * self.com_principal.length();
         (2.0 * t_max.max(0.0) / j_min).sqrt()
+    }
+
+    /// An upper bound on how fast gravity can swing the body, over the whole
+    /// motion from `state`: for a Lagrange top (symmetric about `k`, centre
+    /// of mass on that axis) the rate of its axis, since the spin about the
+    /// axis (`L_k` conserved) plays no part in the swing; for any other top
+    /// [`HeavyTop::angular_speed_bound`].
+    ///
+    /// ```text
+    /// Lagrange top:  ω_swing² = 2 (E + |W||c| − L_k²/2J_k) / J⊥
+    /// otherwise:     ω_swing = ω_max
+    /// ```
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::{HeavyTop, PrincipalState};
+    /// // A pendulum (1 kg, 1 m, J⊥ = 1) let go at rest from the top swings
+    /// // through the bottom at √(2 · 2 · 9.81) rad/s.
+    /// let top = HeavyTop::try_from_principal(DVec3::new(1.0, 1.0, 0.01), DVec3::Z, 1.0, DVec3::new(0.0, 0.0, -9.81))?;
+    /// let s = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::ZERO };
+    /// assert!((top.swing_rate_bound(&s) - (4.0f64 * 9.81).sqrt()).abs() < 1e-12);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn swing_rate_bound(&self, state: &PrincipalState) -> f64 {
+        let Some(k) = self.symmetry_axis() else {
+            return self.angular_speed_bound(state);
+        };
+        let j = self.body.principal_moments().to_array();
+        let spin = 0.5 * state.l_principal[k] * state.l_principal[k] / j[k];
+        let potential = self.weight_world.length() * self.com_principal.length();
+        let swing = self.energy(state) - spin + potential;
+        (2.0 * swing.max(0.0) / j[(k + 1) % 3]).sqrt()
     }
 
     /// Whether the free flow is exact (two equal moments) rather than PDMV10.

@@ -136,7 +136,10 @@ impl LagrangeTopMotion {
 
     /// The real roots of [`f`](Self::f), ascending, with multiplicity:
     /// three for `β ≠ 0` (`u₁ ≤ u₂ ≤ 1 ≤ u₃` for β > 0, `u₃ ≤ −1 ≤ u₁ ≤ u₂`
-    /// for β < 0), the two of the quadratic for `β = 0`.
+    /// for β < 0), the two of the quadratic for `β = 0`. The third root
+    /// `u₃ ≈ a²/β` of a top with a tiny β next to its spin is left out when
+    /// it lies beyond the f64 range (as β → 0 it goes to infinity, and the
+    /// cubic becomes the free top's quadratic).
     ///
     /// ```text
     /// f(u) = β (u − u₁)(u − u₂)(u − u₃)
@@ -157,8 +160,9 @@ impl LagrangeTopMotion {
     /// ```
     pub fn roots(&self) -> Vec<f64> {
         let mut r = vec![self.u0 + self.w1, self.u0 + self.w2];
-        if self.beta != 0.0 {
-            r.push(self.u0 + self.g / self.beta);
+        let u3 = self.u0 + self.g / self.beta;
+        if self.beta != 0.0 && u3.is_finite() {
+            r.push(u3);
         }
         r.sort_by(f64::total_cmp);
         r
@@ -237,7 +241,16 @@ impl LagrangeTopMotion {
     ///
     /// ```text
     /// ⟨φ̇⟩ = [(b − a) Π(n₋ | m)/(1 − u_b) + (b + a) Π(n₊ | m)/(1 + u_b)] / (2K(m))
+    ///      = r₁/(2(1 − u₁)) + r₂/(2(1 + u₂)) + [(b − a) R₋ + (b + a) R₊] / (4K(m)),  rᵢ = b − a uᵢ
     /// ```
+    ///
+    /// Evaluated in the second form: the partial fractions `½(b ∓ a)/(1 ∓ u)`
+    /// are each ≈ ∓a/2 and cancel to ~Mgl/(I₃ω₃) for a fast top (at
+    /// ψ̇₀ = 10¹⁰ rad/s to nothing), while their slopes `rᵢ/(2(1 ∓ uᵢ))` and
+    /// the rests `Rᵢ = (Π(nᵢ | m) − K)/…` (Carlson R_J) carry no `a`. The
+    /// result is accurate to rounding of the largest `|φ̇|` on the band, so to
+    /// ~10⁻¹⁶ relative unless φ̇ swings far wider than its mean (a fast top
+    /// kicked in θ̇: relative error ~10⁻¹⁶ · max|φ̇| / |⟨φ̇⟩|).
     ///
     /// The initial φ̇ for steady precession; `None` where
     /// [`nutation_period`](Self::nutation_period) is `None`. Through a
@@ -257,14 +270,14 @@ impl LagrangeTopMotion {
         if self.kind == Kind::Steady {
             return Some(self.init.phi_dot);
         }
-        let mut dphi = 0.0;
+        let mut rests = 0.0;
         if let Some((tk, _)) = self.minus.as_ref() {
-            dphi += 0.5 * self.bma * tk.per_period();
+            rests += 0.5 * self.bma * tk.per_period();
         }
         if let Some((tk, _)) = self.plus.as_ref() {
-            dphi += 0.5 * self.bpa * tk.per_period();
+            rests += 0.5 * self.bpa * tk.per_period();
         }
-        Some(dphi / (2.0 * self.k))
+        Some(self.phi_slope + rests / (2.0 * self.k))
     }
 
     /// The shape of the axis' path (notes §3.11), `None` for the sleeping top
@@ -276,7 +289,8 @@ impl LagrangeTopMotion {
     ///
     /// Cusps exactly when released with θ̇₀ = φ̇₀ = 0 (then `u₀` is a turning
     /// point with `b − a u₀ = 0`); otherwise when `|b − a uᵢ|` is below
-    /// 10⁻¹² of `|b| + |a uᵢ|`. At a turning point exactly at the vertical
+    /// 10⁻¹² of the terms it is formed from (`|sin²θ₀ φ̇₀| + |a (uᵢ − u₀)|`,
+    /// or `|b ∓ a| + |a (1 ∓ uᵢ)|` near a pole). At a turning point exactly at the vertical
     /// (`b = ±a`) the limit `φ̇ = (b ± a)/2 · 1/(1 ± u)` decides.
     ///
     /// ```
@@ -293,22 +307,20 @@ impl LagrangeTopMotion {
         if self.init.theta_dot == 0.0 && self.init.phi_dot == 0.0 {
             return Some(TopMotionKind::Cusps);
         }
-        let rate = |w: f64, at_top: bool| -> f64 {
+        let rate = |r: (f64, f64), at_top: bool| -> f64 {
             if at_top && self.through_top {
                 return self.bpa;
             }
             if !at_top && self.through_bottom {
                 return self.bma;
             }
-            let d = self.b0 - self.a * w;
-            let scale = self.b0.abs() + (self.a * w).abs() + (self.a * self.u0).abs();
-            if d.abs() <= CUSP_TOLERANCE * scale {
+            if r.0.abs() <= CUSP_TOLERANCE * r.1 {
                 0.0
             } else {
-                d
+                r.0
             }
         };
-        let (r1, r2) = (rate(self.w1, false), rate(self.w2, true));
+        let (r1, r2) = (rate(self.r1, false), rate(self.r2, true));
         Some(if r1 == 0.0 || r2 == 0.0 {
             TopMotionKind::Cusps
         } else if (r1 > 0.0) == (r2 > 0.0) {

@@ -58,24 +58,19 @@ impl LagrangeTopMotion {
         };
         let theta = 2.0 * y.atan2(x);
         let theta_dot = x * ydot - y * xdot;
-        let mut phi = i.phi;
-        let mut psi = i.psi + (self.omega3 - self.a) * t;
-        let mut phi_dot = 0.0;
-        let mut psi_dot = self.omega3 - self.a;
+        let mut phi = i.phi + self.phi_slope * t;
+        let mut psi = i.psi + self.psi_slope * t;
         if let Some((tk, at0)) = &self.minus {
-            let integral = (tk.eval(tau, sn, cn, dn) - at0) / self.nu;
-            phi += 0.5 * self.bma * integral;
-            psi -= 0.5 * self.bma * integral;
-            phi_dot += 0.5 * self.bma / omu;
-            psi_dot -= 0.5 * self.bma / omu;
+            let rest = 0.5 * self.bma * (tk.eval(tau, sn, cn, dn) - at0) / self.nu;
+            phi += rest;
+            psi -= rest;
         }
         if let Some((tk, at0)) = &self.plus {
-            let integral = (tk.eval(tau, sn, cn, dn) - at0) / self.nu;
-            phi += 0.5 * self.bpa * integral;
-            psi += 0.5 * self.bpa * integral;
-            phi_dot += 0.5 * self.bpa / opu;
-            psi_dot += 0.5 * self.bpa / opu;
+            let rest = 0.5 * self.bpa * (tk.eval(tau, sn, cn, dn) - at0) / self.nu;
+            phi += rest;
+            psi += rest;
         }
+        let (phi_dot, psi_dot) = self.rates(omu, opu, s2, c2);
         EulerAnglesAndRates {
             phi,
             theta,
@@ -84,6 +79,42 @@ impl LagrangeTopMotion {
             theta_dot,
             psi_dot,
         }
+    }
+
+    /// φ̇ and ψ̇ at `1 − u = omu`, `1 + u = opu` (`sn²`, `cn²` of the phase):
+    /// by the partial fractions `½(b ∓ a)/(1 ∓ u)` or directly as
+    /// `φ̇ = r(u)/((1 − u)(1 + u))`, `ψ̇ = ω₃ − u φ̇`, whichever sums smaller
+    /// terms (the partial fractions cancel to ~β/a for a fast top, the
+    /// direct form loses `r` next to a pole).
+    fn rates(&self, omu: f64, opu: f64, s2: f64, c2: f64) -> (f64, f64) {
+        let (minus, plus) = (0.5 * self.bma / omu, 0.5 * self.bpa / opu);
+        let (phi_dot, psi_dot) = match (&self.minus, &self.plus) {
+            (Some(_), Some(_)) => (minus + plus, self.omega3 - self.a - minus + plus),
+            (Some(_), None) => (minus, self.omega3 - self.a - minus),
+            (None, Some(_)) => (plus, self.omega3 - self.a + plus),
+            (None, None) => (0.0, self.omega3 - self.a),
+        };
+        if self.minus.is_none() || self.plus.is_none() {
+            return (phi_dot, psi_dot);
+        }
+        // r(u) from the nearer turning point: u = u_b + σΔ sn² = u_o − σΔ cn².
+        let (rb, ro) = if self.sigma > 0.0 {
+            (self.r1, self.r2)
+        } else {
+            (self.r2, self.r1)
+        };
+        let ad = self.a * self.sigma * self.delta;
+        let (r, scale) = if s2 <= 0.5 {
+            (rb.0 - ad * s2, rb.1 + ad.abs())
+        } else {
+            (ro.0 + ad * c2, ro.1 + ad.abs())
+        };
+        if scale / (omu * opu) >= minus.abs() + plus.abs() {
+            return (phi_dot, psi_dot);
+        }
+        let direct = r / (omu * opu);
+        let u = if omu < opu { 1.0 - omu } else { opu - 1.0 };
+        (direct, self.omega3 - u * direct)
     }
 
     /// Euler angles and rates at time `t` (s), in closed form, any `t`.

@@ -176,22 +176,61 @@ impl LagrangeTop {
     /// `i3` (about the symmetry axis) and gravity moment `mgl = M g l`.
     ///
     /// ```text
-    /// I₁ > 0, I₃ > 0 finite;  Mgl finite, any sign (< 0: centre of mass below the pivot; 0: free top)
+    /// 0 < I₃ ≤ 2 I₁ (normal f64s);  Mgl finite, any sign (< 0: centre of mass below the pivot; 0: free top)
+    /// I₁ (pivot) = I₁,cm + M l² ≥ I₁,cm ≥ I₃/2   since I₁,cm + I₂,cm − I₃ = 2 ∫ z² dm ≥ 0
     /// ```
     ///
+    /// Every real body has `I₃ ≤ 2 I₁`: about the centre of mass the
+    /// principal moments obey the triangle inequality `I₃ ≤ I₁ + I₂ = 2 I₁`
+    /// (the difference is twice the second moment of the mass along the
+    /// axis), and moving the transverse axis to the pivot only adds `M l²`
+    /// (`I₃` is unchanged, the pivot being on the axis). Equality is a flat
+    /// disc pivoted at its centre; `I₃` up to 4 ulp above `2 I₁` is accepted
+    /// as that disc after rounding.
+    ///
     /// # Errors
-    /// [`DynamicsError::InvalidTop`] for a non-finite value or `i1`, `i3` ≤ 0.
+    /// [`DynamicsError::InvalidTop`] for a non-finite value, `i1` or `i3`
+    /// not positive or subnormal (below 2.2·10⁻³⁰⁸: the rates of such a top
+    /// overflow f64; choose larger units), `i3 > 2 i1`, or
+    /// `β = 2 Mgl/I₁` overflowing or underflowing f64.
     ///
     /// ```
     /// use kreisel_dynamics::LagrangeTop;
     /// assert!(LagrangeTop::try_new(1.0, 0.5, -2.0).is_ok());
+    /// assert!(LagrangeTop::try_new(1.0, 2.0, 1.0).is_ok()); // a disc about its centre
+    /// assert!(LagrangeTop::try_new(1.0, 2.1, 1.0).is_err()); // no such body
     /// assert!(LagrangeTop::try_new(0.0, 0.5, 1.0).is_err());
+    /// assert!(LagrangeTop::try_new(1e-320, 1e-320, 1.0).is_err());
     /// assert!(LagrangeTop::try_new(1.0, f64::NAN, 1.0).is_err());
     /// ```
     pub fn try_new(i1: f64, i3: f64, mgl: f64) -> Result<Self, DynamicsError> {
         check("i1", i1, true)?;
         check("i3", i3, true)?;
         check("mgl", mgl, false)?;
+        for (parameter, value) in [("i1", i1), ("i3", i3)] {
+            if !value.is_normal() {
+                return Err(DynamicsError::InvalidTop {
+                    parameter,
+                    value,
+                    reason: "is subnormal (below 2.2e-308 kg m^2): choose larger units",
+                });
+            }
+        }
+        if i3 > 2.0 * i1 * (1.0 + 4.0 * f64::EPSILON) {
+            return Err(DynamicsError::InvalidTop {
+                parameter: "i3",
+                value: i3,
+                reason: "exceeds 2 i1: no real body has it (I3 <= I1 + I2 = 2 I1; I1 is about the pivot)",
+            });
+        }
+        let beta = 2.0 * mgl / i1;
+        if !beta.is_finite() || (mgl != 0.0 && !beta.is_normal()) {
+            return Err(DynamicsError::InvalidTop {
+                parameter: "mgl",
+                value: mgl,
+                reason: "2 mgl / i1 is not representable in f64 (overflow or underflow): choose other units",
+            });
+        }
         Ok(LagrangeTop { i1, i3, mgl })
     }
 
@@ -277,14 +316,17 @@ impl LagrangeTop {
     /// a = I₃ω₃/I₁,  b = sin²θ₀ φ̇₀ + a cos θ₀,  α = θ̇₀² + sin²θ₀ φ̇₀² + β cos θ₀,  β = 2Mgl/I₁
     /// ```
     ///
-    /// Any finite angles: θ₀ outside [0, π] is brought there first by
-    /// `(φ, θ, ψ) ≡ (φ + π, −θ, ψ − π)` (and θ̇ → −θ̇), which is the same
-    /// attitude. A θ₀ within 10⁻¹⁴ rad of a pole (0 or π) is taken as
+    /// θ₀ must lie in [0, π] (the angle from the upward vertical; the
+    /// equivalent attitude `(φ + π, −θ, ψ − π)` is the caller's choice to
+    /// make). A θ₀ within 10⁻¹⁴ rad of a pole (0 or π) is taken as
     /// exactly on it: `u = cos θ` resolves no closer start, and the attitude
     /// changes by less than 10⁻¹⁴ rad.
     ///
     /// # Errors
-    /// [`DynamicsError::InvalidTop`] if an angle or rate is not finite.
+    /// [`DynamicsError::InvalidTop`] if an angle or rate is not finite, θ₀
+    /// is outside [0, π], or a rate is so large that the constants of the
+    /// motion overflow f64 (`(I₃ω₃/I₁)²`, `θ̇₀² + sin²θ₀ φ̇₀²`, the
+    /// coefficients of f(u), the frequency of the nutation).
     ///
     /// ```
     /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
@@ -317,6 +359,45 @@ impl LagrangeTop {
         ] {
             check(name, v, false)?;
         }
-        Ok(LagrangeTopMotion::new(*self, initial))
+        if !(0.0..=std::f64::consts::PI).contains(&theta) {
+            return Err(DynamicsError::InvalidTop {
+                parameter: "theta",
+                value: theta,
+                reason: "must lie in [0, pi] (the angle of the axis from the upward vertical)",
+            });
+        }
+        let too_large = |parameter, value| DynamicsError::InvalidTop {
+            parameter,
+            value,
+            reason: "too large: the constants of the motion overflow f64 (choose other units)",
+        };
+        let omega3 = phi_dot * theta.cos() + psi_dot;
+        let a = self.i3 * omega3 / self.i1;
+        if !(a * a * 4.0).is_finite() {
+            return Err(if (phi_dot * theta.cos()).abs() > psi_dot.abs() {
+                too_large("phi_dot", phi_dot)
+            } else {
+                too_large("psi_dot", psi_dot)
+            });
+        }
+        let s = theta.sin();
+        let b0 = s * s * phi_dot;
+        let a0 = theta_dot * theta_dot + b0 * phi_dot;
+        if !(a0 * 4.0).is_finite() || !(a * b0 * 4.0).is_finite() {
+            return Err(if theta_dot.abs() >= phi_dot.abs() {
+                too_large("theta_dot", theta_dot)
+            } else {
+                too_large("phi_dot", phi_dot)
+            });
+        }
+        let beta = 2.0 * self.mgl / self.i1;
+        if !((a0 + a * a + beta.abs()) * 4.0).is_finite() {
+            return Err(too_large("psi_dot", psi_dot));
+        }
+        let motion = LagrangeTopMotion::new(*self, initial);
+        if !motion.is_finite() {
+            return Err(too_large("psi_dot", psi_dot));
+        }
+        Ok(motion)
     }
 }

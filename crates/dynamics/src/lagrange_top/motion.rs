@@ -51,7 +51,7 @@ use crate::elliptic::{JacobiElliptic, carlson_rf};
 #[derive(Debug, Clone)]
 pub struct LagrangeTopMotion {
     pub(super) top: LagrangeTop,
-    /// Initial conditions with θ₀ ∈ [0, π].
+    /// Initial conditions (θ₀ ∈ [0, π], snapped onto a pole within `POLE_SNAP`).
     pub(super) init: LagrangeTopInitial,
     pub(super) a: f64,
     pub(super) b: f64,
@@ -62,8 +62,6 @@ pub struct LagrangeTopMotion {
     pub(super) beta: f64,
     pub(super) omega3: f64,
     pub(super) u0: f64,
-    /// `b − a u₀ = sin²θ₀ φ̇₀`.
-    pub(super) b0: f64,
     pub(super) w1: f64,
     pub(super) w2: f64,
     /// `β u₃ − β u₀`.
@@ -82,9 +80,18 @@ pub struct LagrangeTopMotion {
     pub(super) k: f64,
     pub(super) tau0: f64,
     pub(super) jacobi: JacobiElliptic,
-    /// The `∫dt/(1 − u)` term and its value at τ₀ (`None` if `b = a`).
+    /// `r = b − a u` at the turning points u₁, u₂, each formed the better
+    /// of two ways (`B₀ − a w` or from `b ∓ a` at the pole), with the size
+    /// of the terms summed (its rounding scale).
+    pub(super) r1: (f64, f64),
+    pub(super) r2: (f64, f64),
+    /// The mean slopes of φ and ψ in t, without the partial fractions'
+    /// `∓a/2` (module docs of `third_kind`): φ(t) = φ₀ + slope t + rests.
+    pub(super) phi_slope: f64,
+    pub(super) psi_slope: f64,
+    /// The rest of `∫dτ/(1 − u)` and its value at τ₀ (`None` if `b = a`).
     pub(super) minus: Option<(ThirdKind, f64)>,
-    /// The `∫dt/(1 + u)` term and its value at τ₀ (`None` if `b = −a`).
+    /// The rest of `∫dτ/(1 + u)` and its value at τ₀ (`None` if `b = −a`).
     pub(super) plus: Option<(ThirdKind, f64)>,
     /// Signs of `√(1 − u)`, `√(1 + u)` through a vertical.
     pub(super) zeta_y: f64,
@@ -112,17 +119,43 @@ pub(super) fn sign(x: f64) -> f64 {
 }
 
 impl LagrangeTopMotion {
+    /// Whether every constant of the closed form is a finite number (the
+    /// guard of `LagrangeTop::try_solve` against overflow).
+    pub(super) fn is_finite(&self) -> bool {
+        let rests = [&self.minus, &self.plus].iter().all(|r| {
+            r.as_ref()
+                .is_none_or(|(tk, at0)| at0.is_finite() && tk.per_period().is_finite())
+        });
+        rests
+            && [
+                self.a,
+                self.b,
+                self.bma,
+                self.bpa,
+                self.alpha,
+                self.beta,
+                self.omega3,
+                self.w1,
+                self.w2,
+                self.delta,
+                self.one_minus_u2,
+                self.one_plus_u1,
+                self.r1.0,
+                self.r2.0,
+                self.phi_slope,
+                self.psi_slope,
+                self.nu,
+                self.tau0,
+            ]
+            .iter()
+            .all(|x| x.is_finite())
+            && (self.kind != Kind::Nutating || self.g.is_finite())
+    }
+
     pub(super) fn new(top: LagrangeTop, initial: LagrangeTopInitial) -> LagrangeTopMotion {
         let pi = std::f64::consts::PI;
+        // θ₀ ∈ [0, π] (checked by `LagrangeTop::try_solve`).
         let mut init = initial;
-        let t = init.theta.rem_euclid(2.0 * pi);
-        init.theta = t;
-        if t > pi {
-            init.theta = 2.0 * pi - t;
-            init.phi += pi;
-            init.psi -= pi;
-            init.theta_dot = -init.theta_dot;
-        }
         // Within POLE_SNAP of a pole the start is put exactly on it (see
         // `LagrangeTop::try_solve`); π itself is not an f64, so the bottom is
         // flagged and given sin θ₀ = 0, cos θ₀ = −1 exactly.
@@ -199,6 +232,19 @@ impl LagrangeTopMotion {
             polish_pole_distance(v0, alpha_plus_beta, -beta, bpa, -a)
         };
         let delta = tp.w2 - tp.w1;
+        // r = b − a u at u₁ = u₀ + w₁ = −1 + (1 + u₁) and u₂ = u₀ + w₂ = 1 − (1 − u₂):
+        // whichever way sums the smaller terms (no cancellation of b against a u₀
+        // for a fast top, none of b ∓ a against a(1 ± u) near a pole).
+        let better = |x: (f64, f64), y: (f64, f64)| {
+            let (cx, cy) = (x.0.abs() + x.1.abs(), y.0.abs() + y.1.abs());
+            if cx <= cy {
+                (x.0 + x.1, cx)
+            } else {
+                (y.0 + y.1, cy)
+            }
+        };
+        let r1 = better((b0, -a * tp.w1), (bpa, -a * one_plus_u1));
+        let r2 = better((b0, -a * tp.w2), (bma, a * one_minus_u2));
         let sigma = if beta >= 0.0 { 1.0 } else { -1.0 };
         let (wb, wo) = if sigma > 0.0 {
             (tp.w1, tp.w2)
@@ -231,7 +277,10 @@ impl LagrangeTopMotion {
             beta,
             omega3,
             u0,
-            b0,
+            r1,
+            r2,
+            phi_slope: 0.0,
+            psi_slope: 0.0,
             w1: tp.w1,
             w2: tp.w2,
             g: tp.g,
@@ -271,7 +320,8 @@ impl LagrangeTopMotion {
             } else {
                 (omu2, omu1)
             };
-            let tk = ThirdKind::new(hb, sigma * delta, ho, m, mc, k);
+            let (tk, h_ref) = ThirdKind::new(hb, sigma * delta, ho, m, mc, k);
+            debug_assert_eq!(h_ref, omu1);
             motion.minus = Some((tk, tk.eval(tau0, sn, cn, dn)));
         } else {
             // √(1 − u) = ζ √Δ G, G = cn (β ≥ 0) or sn (β < 0)
@@ -288,7 +338,8 @@ impl LagrangeTopMotion {
             } else {
                 (opu2, opu1)
             };
-            let tk = ThirdKind::new(hb, -sigma * delta, ho, m, mc, k);
+            let (tk, h_ref) = ThirdKind::new(hb, -sigma * delta, ho, m, mc, k);
+            debug_assert_eq!(h_ref, opu2);
             motion.plus = Some((tk, tk.eval(tau0, sn, cn, dn)));
         } else {
             // √(1 + u) = ζ √Δ H, H = sn (β ≥ 0) or cn (β < 0)
@@ -303,6 +354,24 @@ impl LagrangeTopMotion {
                 -sign(thd * hd)
             };
         }
+        // The slopes: ½(b − a)/(1 − u₁) = −a/2 + r₁/(2(1 − u₁)) and
+        // ½(b + a)/(1 + u₂) = a/2 + r₂/(2(1 + u₂)); the ±a/2 cancel in φ̇ and
+        // add to −a in ψ̇ = ω₃ − a − ½(b − a)/(1 − u) + ½(b + a)/(1 + u).
+        let (minus_slope, plus_slope) = (0.5 * r1.0 / omu1, 0.5 * r2.0 / opu2);
+        let (phi_slope, psi_slope) = match (motion.minus.is_some(), motion.plus.is_some()) {
+            (true, true) => (minus_slope + plus_slope, omega3 - minus_slope + plus_slope),
+            (true, false) => {
+                let s = 0.5 * bma / omu1;
+                (s, omega3 - a - s)
+            }
+            (false, true) => {
+                let s = 0.5 * bpa / opu2;
+                (s, omega3 - a + s)
+            }
+            (false, false) => (0.0, omega3 - a),
+        };
+        motion.phi_slope = phi_slope;
+        motion.psi_slope = psi_slope;
         motion
     }
 }

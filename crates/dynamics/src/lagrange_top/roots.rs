@@ -72,8 +72,13 @@ impl ShiftedCubic {
                 g: -c2,
             };
         }
-        let disc = (c2 * c2 - 4.0 * beta * c1).max(0.0);
-        let q = -0.5 * (c2 + c2.signum() * disc.sqrt());
+        // Scaled by a power of two near the largest coefficient (exact), so
+        // that c₂² and β c₁ neither overflow nor underflow for any scale of
+        // the top (β up to ~1e308).
+        let scale = 2f64.powi(beta.abs().max(c2.abs()).max(c1.abs()).log2().floor() as i32);
+        let (sb, s2, s1) = (beta / scale, c2 / scale, c1 / scale);
+        let disc = (s2 * s2 - 4.0 * sb * s1).max(0.0);
+        let q = -0.5 * (s2 + s2.signum() * disc.sqrt());
         if q == 0.0 {
             return TurningPoints {
                 w1: 0.0,
@@ -82,8 +87,8 @@ impl ShiftedCubic {
             };
         }
         // (root, β·root) pairs, β·root formed without dividing by a small β.
-        let big = (q / beta, q);
-        let small = (c1 / q, beta * c1 / q);
+        let big = (q / sb, q * scale);
+        let small = (s1 / q, beta * (s1 / q));
         let zero = (0.0, 0.0);
         let mut all = [big, small, zero];
         all.sort_by(|x, y| x.0.total_cmp(&y.0));

@@ -27,69 +27,79 @@
 //! ```
 //!
 //! (DLMF 19.7.9; Byrd & Friedman 117.03), which has no cancellation.
+//!
+//! Both forms are kept apart as a mean slope `τ/h_ref` (`h_ref` = `h` at the
+//! turning point farther from the pole: `h_b` unshifted, `h_o` shifted) plus
+//! an oscillating rest `∝ (n/3) sin³ R_J`, never summed here: for a fast top
+//! the two partial fractions of φ̇ are each ≈ ±a/2 and cancel to ~β/a, so
+//! the caller adds the slopes as `r(u)/(2h)` (no `a`) and the small rests.
 
 use crate::elliptic::{carlson_rf, carlson_rj};
 
-/// One antiderivative `T(τ)` of `1/h(τ)` (module docs).
+/// One antiderivative `T(τ)` of `1/h(τ)`, split into its mean slope and an
+/// oscillating rest (module docs):
+///
+/// ```text
+/// T(τ) = τ / h_ref + R(τ) + const,   R(τ + 2K) = R(τ) + per_period
+/// unshifted (B ≥ 0): h_ref = h_b, R = (B/h_b²) Q_n(τ)
+/// shifted   (B < 0): h_ref = h_o, R = −(B mc/h_o²) Q_N(τ − K)
+/// Q_n(τ) = (Π(n; am τ | m) − τ)/n = ⅓ sin³r R_J(cos²r, dn², 1, 1 − n sin²r) + (2j/3) R_J(0, mc, 1, 1 − n)
+/// ```
+///
+/// The slope `1/h_ref` is left to the caller: summed over the two partial
+/// fractions of φ̇ it cancels (`−a/2 + a/2`) unless formed as `r(u)/(2h)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct ThirdKind {
     /// Characteristic of the Π evaluated (`n`, or `N` for the shifted form).
     n: f64,
     /// `1 − n` (or `1 − N`), exact to rounding.
     one_minus_n: f64,
-    /// Factor in front of Π.
-    scale: f64,
-    /// Factor in front of τ' (shifted form only, else 0).
-    linear: f64,
+    /// Factor in front of `Q` (`B/h_b²` or `−B mc/h_o²`).
+    coef: f64,
     /// Whether the argument is shifted by −K.
     shifted: bool,
-    /// Π(n | m) (complete).
+    /// ⅓ R_J(0, mc, 1, 1 − n): the complete `Q` over a half period.
     complete: f64,
-    m: f64,
     mc: f64,
     k: f64,
+    #[cfg(test)]
+    m: f64,
 }
 
 impl ThirdKind {
-    /// The antiderivative of `1/(h_b − B sn²τ)` with `h_o = h_b − B`; `k` = K(m).
-    pub fn new(h_b: f64, b: f64, h_o: f64, m: f64, mc: f64, k: f64) -> ThirdKind {
-        if b >= 0.0 {
-            let n = b / h_b;
-            let one_minus_n = h_o / h_b;
-            let complete = complete_pi(n, one_minus_n, mc, k);
-            ThirdKind {
-                n,
-                one_minus_n,
-                scale: 1.0 / h_b,
-                linear: 0.0,
-                shifted: false,
-                complete,
-                m,
-                mc,
-                k,
-            }
+    /// The rest of the antiderivative of `1/(h_b − B sn²τ)` with
+    /// `h_o = h_b − B`; `k` = K(m). Returns it with `h_ref` (`h_b` for
+    /// `B ≥ 0`, else `h_o`: the larger of the two, the turning point farther
+    /// from the pole).
+    pub fn new(h_b: f64, b: f64, h_o: f64, m: f64, mc: f64, k: f64) -> (ThirdKind, f64) {
+        let (n, one_minus_n, coef, shifted, h_ref) = if b >= 0.0 {
+            (b / h_b, h_o / h_b, b / (h_b * h_b), false, h_b)
         } else {
             // Multiplied through by h_b, so that h_b → 0 (n → −∞) stays finite:
-            // N = (m h_b − B)/h_o, N − m = −B mc/h_o, 1 − N = mc h_b/h_o.
+            // N = (m h_b − B)/h_o, 1 − N = mc h_b/h_o, N − m = −B mc/h_o.
             let big_n = (m * h_b - b) / h_o;
-            let one_minus_big_n = mc * h_b / h_o;
-            let n_minus_m = -b * mc / h_o;
-            let pre = 1.0 / h_o;
-            ThirdKind {
-                n: big_n,
-                one_minus_n: one_minus_big_n,
-                scale: pre * n_minus_m / big_n,
-                linear: pre * m / big_n,
-                shifted: true,
-                complete: complete_pi(big_n, one_minus_big_n, mc, k),
-                m,
-                mc,
-                k,
-            }
-        }
+            (big_n, mc * h_b / h_o, -b * mc / (h_o * h_o), true, h_o)
+        };
+        let complete = if n == 0.0 {
+            0.0
+        } else {
+            carlson_rj(0.0, mc, 1.0, one_minus_n) / 3.0
+        };
+        let tk = ThirdKind {
+            n,
+            one_minus_n,
+            coef,
+            shifted,
+            complete,
+            mc,
+            k,
+            #[cfg(test)]
+            m,
+        };
+        (tk, h_ref)
     }
 
-    /// `T(τ)` from `τ` and `(sn τ, cn τ, dn τ)`.
+    /// `R(τ)` from `τ` and `(sn τ, cn τ, dn τ)`.
     pub fn eval(&self, tau: f64, sn: f64, cn: f64, dn: f64) -> f64 {
         let (tau, sn, cn, dn) = if self.shifted {
             // sn(τ − K) = −cd τ, cn(τ − K) = √mc sd τ, dn(τ − K) = √mc nd τ
@@ -110,16 +120,16 @@ impl ThirdKind {
             s = -s;
             c = -c;
         }
-        let mut v = incomplete_pi(self.n, self.one_minus_n, s, c, dn * dn);
+        let mut v = incomplete_q(self.n, self.one_minus_n, s, c, dn * dn);
         if j != 0.0 {
             v += 2.0 * j * self.complete;
         }
-        self.scale * v + self.linear * tau
+        self.coef * v
     }
 
-    /// The increase of `T` over one period `τ → τ + 2K`.
+    /// The increase of `R` over one period `τ → τ + 2K`.
     pub fn per_period(&self) -> f64 {
-        self.scale * 2.0 * self.complete + self.linear * 2.0 * self.k
+        self.coef * 2.0 * self.complete
     }
 
     /// The parameter m (for tests).
@@ -129,29 +139,20 @@ impl ThirdKind {
     }
 }
 
-/// Π(n; r | m) for `|r| ≤ π/2` from `sin r`, `cos r ≥ 0`, `Δ² = 1 − m sin²r`.
-fn incomplete_pi(n: f64, one_minus_n: f64, s: f64, c: f64, d2: f64) -> f64 {
+/// `(Π(n; r | m) − F(r | m))/n` for `|r| ≤ π/2` from `sin r`, `cos r ≥ 0`,
+/// `Δ² = 1 − m sin²r`: ⅓ sin³r R_J(cos²r, Δ², 1, 1 − n sin²r).
+fn incomplete_q(n: f64, one_minus_n: f64, s: f64, c: f64, d2: f64) -> f64 {
+    if s == 0.0 {
+        return 0.0;
+    }
     let c2 = c * c;
     let s2 = s * s;
-    let mut v = s * carlson_rf(c2, d2, 1.0);
-    if n != 0.0 && s != 0.0 {
-        let p = if n >= 0.5 {
-            c2 + one_minus_n * s2
-        } else {
-            1.0 - n * s2
-        };
-        v += n / 3.0 * s * s2 * carlson_rj(c2, d2, 1.0, p);
-    }
-    v
-}
-
-/// Π(n | m) from `1 − n` and `mc`; `k` = K(m).
-fn complete_pi(n: f64, one_minus_n: f64, mc: f64, k: f64) -> f64 {
-    if n == 0.0 {
-        k
+    let p = if n >= 0.5 {
+        c2 + one_minus_n * s2
     } else {
-        k + n / 3.0 * carlson_rj(0.0, mc, 1.0, one_minus_n)
-    }
+        1.0 - n * s2
+    };
+    s * s2 * carlson_rj(c2, d2, 1.0, p) / 3.0
 }
 
 /// K(m) = R_F(0, mc, 1).
@@ -171,8 +172,9 @@ mod tests {
         let k = complete_k(mc);
         let jac = JacobiElliptic::new(mc);
         for (h_b, b) in [(2.0, 0.5), (2.0, -0.5), (1.0, 0.9), (0.01, -0.5)] {
-            let t = ThirdKind::new(h_b, b, h_b - b, m, mc, k);
+            let (t, h_ref) = ThirdKind::new(h_b, b, h_b - b, m, mc, k);
             assert_eq!(t.m(), m);
+            assert_eq!(h_ref, h_b.max(h_b - b));
             let n = b / h_b;
             let t0 = {
                 let (s, c, d) = jac.sn_cn_dn(0.0);
@@ -180,7 +182,7 @@ mod tests {
             };
             for tau in [0.1, 1.0, 2.5, 7.0, -3.0] {
                 let (s, c, d) = jac.sn_cn_dn(tau);
-                let got = t.eval(tau, s, c, d) - t0;
+                let got = tau / h_ref + t.eval(tau, s, c, d) - t0;
                 let want = legendre_pi(jac.amplitude(tau), n, m) / h_b;
                 assert!(
                     (got - want).abs() < 1e-13 * want.abs().max(1.0),

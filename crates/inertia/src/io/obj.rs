@@ -9,7 +9,9 @@
 //! index (`0` is invalid; positive indices are 1-based into the file's
 //! vertices; negative ones count back from the last vertex read so far),
 //! reporting the line number, and rewrites faces to plain absolute position
-//! indices. That also keeps `tobj` away from its unchecked texture/normal
+//! indices. A face of fewer than three vertices (no area, no edges to share)
+//! is skipped with a [`LoadWarning::MalformedFaces`] on the body it belongs
+//! to, so one bad line does not lose a whole file. That also keeps `tobj` away from its unchecked texture/normal
 //! index arithmetic, which overflows (and panics in debug builds) on
 //! indices near `isize::MAX`.
 
@@ -17,7 +19,7 @@ use std::fmt::Write as _;
 
 use glam::DVec3;
 
-use super::{Body, Source};
+use super::{Body, LoadWarning, Source};
 use crate::InertiaError;
 
 /// The name `tobj` gives geometry before any `o`/`g` line.
@@ -29,7 +31,10 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
         return Err(src.error("the file is empty"));
     }
     let text = String::from_utf8_lossy(bytes);
-    let cleaned = clean(&text).map_err(|r| src.error(r))?;
+    let Cleaned {
+        text: cleaned,
+        mut skipped,
+    } = clean(&text).map_err(|r| src.error(r))?;
     let options = tobj::LoadOptions {
         single_index: true,
         triangulate: true,
@@ -51,15 +56,40 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
             .map(|p| DVec3::from_array(p.map(to_f64)))
             .collect();
         let (faces, _) = mesh.indices.as_chunks::<3>();
+        // The skipped faces of this object/group (tobj names a model after
+        // the `o`/`g` line that started it).
+        let (mine, rest): (Vec<_>, Vec<_>) = skipped
+            .into_iter()
+            .partition(|(object, _)| *object == model.name);
+        skipped = rest;
         let name = if model.name == TOBJ_UNNAMED {
             src.stem().to_owned()
         } else {
             model.name
         };
-        bodies.push(src.body(name, vertices, faces.to_vec())?);
+        let mut body = src.body(name, vertices, faces.to_vec())?;
+        if !mine.is_empty() {
+            let lines = mine.into_iter().map(|(_, line)| line).collect();
+            body.warnings.push(LoadWarning::MalformedFaces { lines });
+        }
+        bodies.push(body);
     }
-    if bodies.is_empty() {
+    let Some(first) = bodies.first_mut() else {
         return Err(src.error("no faces (an OBJ body needs 'f' lines)"));
+    };
+    // Skipped faces of an object left without faces: reported on the first body.
+    if !skipped.is_empty() {
+        let mut lines: Vec<usize> = skipped.into_iter().map(|(_, line)| line).collect();
+        match first.warnings.iter_mut().find_map(|w| match w {
+            LoadWarning::MalformedFaces { lines } => Some(lines),
+            _ => None,
+        }) {
+            Some(own) => {
+                own.append(&mut lines);
+                own.sort_unstable();
+            }
+            None => first.warnings.push(LoadWarning::MalformedFaces { lines }),
+        }
     }
     Ok(bodies)
 }
@@ -69,11 +99,23 @@ fn to_f64<T: Into<f64>>(x: T) -> f64 {
     x.into()
 }
 
+/// The text `tobj` reads, and the faces left out of it.
+struct Cleaned {
+    /// `v`, `f`, `o` and `g` lines.
+    text: String,
+    /// Faces of fewer than three vertices: the `tobj` name of their object
+    /// and their 1-based line number.
+    skipped: Vec<(String, usize)>,
+}
+
 /// Keeps the `v`, `f`, `o` and `g` lines, checked, with faces rewritten to
-/// absolute 1-based position indices.
-fn clean(text: &str) -> Result<String, String> {
+/// absolute 1-based position indices; faces of fewer than three vertices
+/// are left out and listed.
+fn clean(text: &str) -> Result<Cleaned, String> {
     let total = text.lines().filter(|l| keyword(l) == Some("v")).count();
     let mut out = String::with_capacity(text.len());
+    let mut skipped = Vec::new();
+    let mut object = TOBJ_UNNAMED.to_owned();
     let mut seen = 0usize;
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
@@ -85,6 +127,7 @@ fn clean(text: &str) -> Result<String, String> {
                 out.push_str(line.trim());
             }
             Some("f") => {
+                let start = out.len();
                 out.push('f');
                 let mut corners = 0usize;
                 for word in words {
@@ -95,17 +138,31 @@ fn clean(text: &str) -> Result<String, String> {
                     corners += 1;
                 }
                 if corners < 3 {
-                    return Err(format!(
-                        "line {n}: face has {corners} vertices, at least 3 are needed"
-                    ));
+                    out.truncate(start);
+                    skipped.push((object.clone(), n));
+                    continue;
                 }
             }
-            Some("o" | "g") => out.push_str(line.trim()),
+            Some(word @ ("o" | "g")) => {
+                out.push_str(line.trim());
+                object = object_name(line, word);
+            }
             _ => continue,
         }
         out.push('\n');
     }
-    Ok(out)
+    Ok(Cleaned { text: out, skipped })
+}
+
+/// The name `tobj` gives the object or group an `o`/`g` line starts: the
+/// rest of the line, trimmed (the keyword's own name when empty).
+fn object_name(line: &str, keyword: &str) -> String {
+    let rest = line.trim_start()[keyword.len()..].trim();
+    if rest.is_empty() {
+        TOBJ_UNNAMED.to_owned()
+    } else {
+        rest.to_owned()
+    }
 }
 
 /// The first word of a line.

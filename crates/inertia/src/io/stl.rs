@@ -6,6 +6,12 @@
 //! disagrees with the length (a "lying header", a truncated file, trailing
 //! bytes) is an error, so nothing is ever allocated from the count alone.
 //! Normals and attribute bytes are ignored; winding defines orientation.
+//! A binary file on disk is streamed in chunks of records, never held whole,
+//! and each corner is merged with its exact repeats as it arrives
+//! ([`VertexTable`]), so memory is the shared vertices and the index
+//! triangles (24 bytes per triangle for a closed mesh) plus the table while
+//! loading, instead of the file, 72 bytes of corners per triangle and a
+//! merge afterwards.
 //!
 //! ASCII: `solid [name]`, facets of `facet normal …`, `outer loop`, three
 //! (or more, fan-triangulated) `vertex x y z` lines, `endloop`, `endfacet`,
@@ -19,8 +25,12 @@
 //! `solid` fail, it rejects a bare `solid` line, reads ASCII as `f32` and
 //! drops the solid's name.)
 
+use std::fs::File;
+use std::io::{Read, Seek, SeekFrom};
+
 use glam::DVec3;
 
+use super::vertex_table::VertexTable;
 use super::{Body, Source, vertex_index};
 use crate::InertiaError;
 
@@ -80,6 +90,78 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
     }))
 }
 
+/// Records read at a time when a binary file is streamed (≈ 400 kB).
+const CHUNK: usize = 8192;
+
+/// Loads the solids of an STL file on disk.
+///
+/// A binary file is streamed in chunks of records straight into the vertex
+/// table and triangle list, so the file is never held whole; anything else
+/// (ASCII, broken, or a start that cannot be told apart without the whole
+/// file) is read whole and goes through [`load`], which decides exactly as
+/// for bytes in memory.
+pub(super) fn load_file(src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
+    let io = |source| InertiaError::Io {
+        path: src.path.to_path_buf(),
+        source,
+    };
+    let mut file = File::open(src.path).map_err(io)?;
+    let len = file.metadata().map_err(io)?.len();
+    let mut head = Vec::with_capacity(HEADER);
+    (&mut file)
+        .take(HEADER as u64)
+        .read_to_end(&mut head)
+        .map_err(io)?;
+    if let Some(n) = binary_count(&head).filter(|&n| binary_len(n) == len)
+        && is_binary(&head, &mut file).map_err(io)?
+    {
+        file.seek(SeekFrom::Start(HEADER as u64)).map_err(io)?;
+        let mut soup = Soup::new(n as usize);
+        let mut buffer = vec![0; CHUNK.min(n as usize) * RECORD];
+        let mut left = n as usize;
+        while left > 0 {
+            let take = CHUNK.min(left);
+            let chunk = &mut buffer[..take * RECORD];
+            file.read_exact(chunk).map_err(io)?;
+            soup.push(chunk.as_chunks::<RECORD>().0)
+                .map_err(|r| src.error(r))?;
+            left -= take;
+        }
+        let (vertices, triangles) = soup.finish();
+        return Ok(vec![src.body(
+            src.stem().to_owned(),
+            vertices,
+            triangles,
+        )?]);
+    }
+    let bytes = std::fs::read(src.path).map_err(io)?;
+    load(&bytes, src)
+}
+
+/// Whether a file of the exact binary length whose first bytes are `head`
+/// is certainly binary: it does not start with `solid`, or a byte that is
+/// not text follows. `false` also when the first bytes are too blank to
+/// tell (then the whole file decides).
+fn is_binary(head: &[u8], rest: &mut impl Read) -> std::io::Result<bool> {
+    let start = head.iter().position(|b| !b.is_ascii_whitespace());
+    if start.is_none_or(|i| i + 6 > head.len()) {
+        return Ok(false);
+    }
+    if !starts_with_solid(head) || !is_text(head) {
+        return Ok(true);
+    }
+    let mut buffer = vec![0; CHUNK * RECORD];
+    loop {
+        let got = rest.read(&mut buffer)?;
+        if got == 0 {
+            return Ok(false);
+        }
+        if !is_text(&buffer[..got]) {
+            return Ok(true);
+        }
+    }
+}
+
 /// The triangle count of a binary header, if the file is long enough to have one.
 fn binary_count(bytes: &[u8]) -> Option<u32> {
     let c = bytes.get(80..HEADER)?;
@@ -113,32 +195,55 @@ fn parse_binary(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
         .get(HEADER..)
         .unwrap_or_default()
         .as_chunks::<RECORD>();
-    let mut vertices = Vec::with_capacity(records.len() * 3);
-    let mut triangles = Vec::with_capacity(records.len());
-    for (t, record) in records.iter().enumerate() {
-        let first = vertex_index(vertices.len())?;
-        for k in 0..3 {
-            let at = |i: usize| {
-                let o = 12 + 12 * k + 4 * i;
-                f64::from(f32::from_le_bytes([
-                    record[o],
-                    record[o + 1],
-                    record[o + 2],
-                    record[o + 3],
-                ]))
-            };
-            let v = DVec3::new(at(0), at(1), at(2));
-            if !v.is_finite() {
-                return Err(format!(
-                    "triangle {t}, corner {k} has a non-finite coordinate {v}"
-                ));
-            }
-            vertices.push(v);
+    let mut soup = Soup::new(records.len());
+    soup.push(records)?;
+    Ok(soup.finish())
+}
+
+/// Binary triangle records being read into shared vertices and triangles.
+struct Soup {
+    table: VertexTable,
+    triangles: Vec<[u32; 3]>,
+}
+
+impl Soup {
+    /// Room for `count` triangles (a count checked against the file length).
+    fn new(count: usize) -> Self {
+        Self {
+            // A closed mesh has about half as many vertices as triangles.
+            table: VertexTable::with_capacity(count / 2),
+            triangles: Vec::with_capacity(count),
         }
-        let last = vertex_index(vertices.len() - 1)?;
-        triangles.push([first, first + 1, last]);
     }
-    Ok((vertices, triangles))
+
+    /// Adds the triangles of these records, merging repeated vertices.
+    fn push(&mut self, records: &[[u8; RECORD]]) -> Result<(), String> {
+        for record in records {
+            let t = self.triangles.len();
+            let mut triangle = [0; 3];
+            for (k, corner) in triangle.iter_mut().enumerate() {
+                let at = |i: usize| {
+                    let o = 12 + 12 * k + 4 * i;
+                    f32::from_le_bytes([record[o], record[o + 1], record[o + 2], record[o + 3]])
+                };
+                let xyz = [at(0), at(1), at(2)];
+                if !xyz.iter().all(|c| c.is_finite()) {
+                    let v = DVec3::from_array(xyz.map(f64::from));
+                    return Err(format!(
+                        "triangle {t}, corner {k} has a non-finite coordinate {v}"
+                    ));
+                }
+                *corner = self.table.index(xyz)?;
+            }
+            self.triangles.push(triangle);
+        }
+        Ok(())
+    }
+
+    /// The distinct vertices and the triangles indexing them.
+    fn finish(self) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+        (self.table.into_vertices(), self.triangles)
+    }
 }
 
 /// One solid being read.
@@ -268,4 +373,83 @@ fn parse_vertex(rest: &str) -> Result<DVec3, String> {
         return Err(format!("'vertex {rest}' has more than three coordinates"));
     }
     Ok(DVec3::from_array(xyz))
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::PathBuf;
+
+    use super::*;
+    use crate::io::{MeshFormat, load_bodies, load_bodies_from_bytes};
+
+    /// A binary STL of an `n × n` grid of quads (an open sheet): two
+    /// triangles per quad, corners repeated per triangle,
+    /// the origin once written as `−0.0`, and a header starting with `solid`.
+    fn grid_stl(n: u32) -> Vec<u8> {
+        let mut bytes = b"solid but binary".to_vec();
+        bytes.resize(80, b' ');
+        bytes.extend_from_slice(&(2 * n * n).to_le_bytes());
+        let point = |i: u32, j: u32| [i as f32 * 0.5, j as f32 * 0.25, ((i * j) % 7) as f32];
+        for i in 0..n {
+            for j in 0..n {
+                let (a, b, c, d) = (
+                    point(i, j),
+                    point(i + 1, j),
+                    point(i + 1, j + 1),
+                    point(i, j + 1),
+                );
+                for (k, tri) in [[a, b, c], [a, c, d]].into_iter().enumerate() {
+                    bytes.extend_from_slice(&[0; 12]);
+                    for p in tri {
+                        // The origin as −0.0 in the first triangle, +0.0 in the second.
+                        let p = if p == [0.0; 3] && k == 0 {
+                            [-0.0, 0.0, -0.0]
+                        } else {
+                            p
+                        };
+                        p.iter()
+                            .for_each(|c| bytes.extend_from_slice(&c.to_le_bytes()));
+                    }
+                    bytes.extend_from_slice(&[0; 2]);
+                }
+            }
+        }
+        bytes
+    }
+
+    fn temp_file(name: &str, bytes: &[u8]) -> PathBuf {
+        let path = std::env::temp_dir().join(format!("kreisel-stl-{}-{name}", std::process::id()));
+        std::fs::write(&path, bytes).unwrap();
+        path
+    }
+
+    #[test]
+    fn streamed_binary_file_equals_bytes_in_memory_and_shares_vertices() {
+        // 2·70² = 9800 triangles: more than one chunk of records.
+        let bytes = grid_stl(70);
+        let path = temp_file("grid.stl", &bytes);
+        let streamed = load_bodies(&path);
+        let _ = std::fs::remove_file(&path);
+        let streamed = streamed.unwrap();
+        let in_memory = load_bodies_from_bytes(&bytes, MeshFormat::Stl, "grid.stl", None).unwrap();
+        assert_eq!(streamed[0].mesh, in_memory[0].mesh);
+        assert_eq!(streamed[0].mesh.triangles().len(), 9800);
+        // (n + 1)² grid points: repeats and the signed zeros merged.
+        assert_eq!(streamed[0].mesh.vertices().len(), 71 * 71);
+    }
+
+    #[test]
+    fn a_non_finite_corner_in_a_later_chunk_is_named_when_streamed() {
+        let mut bytes = grid_stl(70);
+        let at = HEADER + 9000 * RECORD + 12 + 12 + 4;
+        bytes[at..at + 4].copy_from_slice(&f32::INFINITY.to_le_bytes());
+        let path = temp_file("inf.stl", &bytes);
+        let err = load_bodies(&path).map(|_| ()).unwrap_err();
+        let _ = std::fs::remove_file(&path);
+        assert!(
+            err.to_string()
+                .contains("triangle 9000, corner 1 has a non-finite"),
+            "{err}"
+        );
+    }
 }

@@ -1,0 +1,399 @@
+//! Vertex welding: merging vertices that are the same point of the surface,
+//! so that the topology checks see shared edges.
+//!
+//! Two passes, both linear or `n log n` in the vertex count:
+//! 1. **Exact**: bit-identical coordinates (`−0.0` ≡ `+0.0`) are merged
+//!    through an open-addressing hash table of `u32` vertex indices
+//!    (8 bytes per distinct vertex at load ≤ ½). Hand-written rather than a
+//!    `HashMap<[u64; 3], u32>` because that holds 32 bytes per entry and a
+//!    10 M-triangle STL has ~5 M distinct vertices.
+//! 2. **Tolerance** (`|p − q| ≤ tol`): the distinct vertices are sorted by
+//!    their projection on a fixed oblique direction `d`; a pair within `tol`
+//!    has projections within `tol·|d|`, so one sweep over the sorted list
+//!    finds every candidate pair, and the exact distance decides. Meshes
+//!    without near-duplicates (the common case) cost only the sort.
+//!
+//! Chains: the clusters are the connected components of the graph
+//! "within `tol`" (union–find), i.e. the transitive closure. The result does
+//! not depend on vertex order, and a chain of vertices each within `tol` of
+//! the next collapses into one vertex although its ends may lie farther
+//! apart than `tol`; [`Welded::max_move`] reports the largest distance any
+//! vertex moved, so such a collapse is visible. Each cluster takes the
+//! position of its first vertex (in order of first use by a triangle).
+
+use glam::DVec3;
+
+use crate::{InertiaError, TriMesh};
+
+/// Default relative weld tolerance: `1e-6 ×` the bounding-box diagonal.
+///
+/// About 16 single-precision ulps at the size of the mesh: files written
+/// through `f32` (all binary STL) or by exporters that round coordinates
+/// repeat a vertex with differences of that order (the real robot meshes
+/// this was chosen on have duplicates 1e-15…1e-8 m apart), while no modelled
+/// feature is that small (1.7 µm on a 1 m part; 17 nm on a 1 cm part).
+pub const DEFAULT_RELATIVE_WELD: f64 = 1e-6;
+
+/// How vertices are welded when a mesh is loaded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Weld {
+    /// Only bit-identical coordinates are merged.
+    Exact,
+    /// Vertices within `factor ×` the bounding-box diagonal are merged
+    /// (the default, with [`DEFAULT_RELATIVE_WELD`]).
+    Relative(f64),
+    /// Vertices within this distance (in the mesh's own units) are merged.
+    Absolute(f64),
+}
+
+impl Default for Weld {
+    fn default() -> Self {
+        Weld::Relative(DEFAULT_RELATIVE_WELD)
+    }
+}
+
+impl Weld {
+    /// The absolute tolerance for a mesh with this bounding-box diagonal.
+    ///
+    /// # Errors
+    /// [`InertiaError::NotFinite`] for a negative, NaN or infinite factor or
+    /// tolerance.
+    ///
+    /// ```
+    /// use kreisel_inertia::Weld;
+    /// assert_eq!(Weld::Relative(1e-6).tolerance(2.0)?, 2e-6);
+    /// assert_eq!(Weld::Absolute(0.5).tolerance(2.0)?, 0.5);
+    /// assert_eq!(Weld::Exact.tolerance(2.0)?, 0.0);
+    /// assert!(Weld::Absolute(f64::NAN).tolerance(2.0).is_err());
+    /// # Ok::<(), kreisel_inertia::InertiaError>(())
+    /// ```
+    pub fn tolerance(self, diagonal: f64) -> Result<f64, InertiaError> {
+        let (quantity, value) = match self {
+            Weld::Exact => return Ok(0.0),
+            Weld::Relative(f) => ("relative weld tolerance", f),
+            Weld::Absolute(t) => ("weld tolerance", t),
+        };
+        if !(value.is_finite() && value >= 0.0) {
+            return Err(InertiaError::NotFinite { quantity, value });
+        }
+        Ok(match self {
+            Weld::Relative(f) => f * diagonal,
+            _ => value,
+        })
+    }
+}
+
+/// What welding did.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Welded {
+    /// The tolerance used (mesh units; 0 for exact welding).
+    pub tolerance: f64,
+    /// Distinct vertices merged into another one within the tolerance
+    /// (bit-identical repeats are not counted).
+    pub merged: usize,
+    /// The largest distance a vertex moved (mesh units).
+    pub max_move: f64,
+}
+
+/// The bits that identify a position exactly (`−0.0` and `+0.0` alike).
+#[inline]
+fn key(v: DVec3) -> [u64; 3] {
+    (v + DVec3::ZERO).to_array().map(f64::to_bits)
+}
+
+#[inline]
+fn hash(k: [u64; 3]) -> u64 {
+    const M: u64 = 0x9E37_79B9_7F4A_7C15;
+    let h = (k[0].wrapping_mul(M) ^ k[1]).wrapping_mul(M) ^ k[2];
+    let h = h.wrapping_mul(M);
+    h ^ (h >> 29)
+}
+
+/// Merges bit-identical positions as they arrive: each position gets the
+/// index of its first occurrence.
+#[derive(Debug, Default)]
+pub(crate) struct ExactDedup {
+    /// The distinct positions, in order of first insertion.
+    vertices: Vec<DVec3>,
+    /// Open addressing: `u32::MAX` empty, else an index into `vertices`.
+    slots: Vec<u32>,
+}
+
+impl ExactDedup {
+    /// A table sized for about `expected` distinct positions.
+    pub(crate) fn with_capacity(expected: usize) -> Self {
+        let size = (2 * expected.max(8)).next_power_of_two();
+        Self {
+            vertices: Vec::with_capacity(expected),
+            slots: vec![u32::MAX; size],
+        }
+    }
+
+    /// The index of `v`, inserting it when new.
+    #[inline]
+    pub(crate) fn insert(&mut self, v: DVec3) -> u32 {
+        if 2 * (self.vertices.len() + 1) > self.slots.len() {
+            self.grow();
+        }
+        let k = key(v);
+        let mask = self.slots.len() - 1;
+        let mut at = hash(k) as usize & mask;
+        loop {
+            let slot = self.slots[at];
+            if slot == u32::MAX {
+                // Fewer distinct positions than u32 indices in the input.
+                let index = self.vertices.len() as u32;
+                self.slots[at] = index;
+                self.vertices.push(v);
+                return index;
+            }
+            if key(self.vertices[slot as usize]) == k {
+                return slot;
+            }
+            at = (at + 1) & mask;
+        }
+    }
+
+    fn grow(&mut self) {
+        let size = (2 * self.slots.len()).max(16);
+        self.slots = vec![u32::MAX; size];
+        let mask = size - 1;
+        for (i, &v) in self.vertices.iter().enumerate() {
+            let mut at = hash(key(v)) as usize & mask;
+            while self.slots[at] != u32::MAX {
+                at = (at + 1) & mask;
+            }
+            self.slots[at] = i as u32;
+        }
+    }
+
+    /// The distinct positions.
+    pub(crate) fn into_vertices(self) -> Vec<DVec3> {
+        self.vertices
+    }
+}
+
+/// Merges bit-identical vertices; unused vertices are dropped, triangle
+/// order is kept, vertices are numbered in order of first use.
+fn weld_exact(vertices: &[DVec3], triangles: &mut [[u32; 3]]) -> Vec<DVec3> {
+    let mut dedup = ExactDedup::with_capacity(vertices.len() / 2);
+    let mut remap = vec![u32::MAX; vertices.len()];
+    for t in triangles.iter_mut() {
+        for i in t.iter_mut() {
+            let r = &mut remap[*i as usize];
+            if *r == u32::MAX {
+                *r = dedup.insert(vertices[*i as usize]);
+            }
+            *i = *r;
+        }
+    }
+    dedup.into_vertices()
+}
+
+/// An order-preserving map from `f64` to `u64` (for sorting by key).
+#[inline]
+fn ordered(x: f64) -> u64 {
+    let b = x.to_bits();
+    if b >> 63 == 1 { !b } else { b | (1 << 63) }
+}
+
+/// The root of `i`, halving paths on the way.
+fn find(parent: &mut [u32], mut i: u32) -> u32 {
+    while parent[i as usize] != i {
+        let p = parent[i as usize];
+        parent[i as usize] = parent[p as usize];
+        i = p;
+    }
+    i
+}
+
+/// Merges distinct vertices within `tol`, returning the new vertices and
+/// rewriting the triangles; `None` when nothing is within `tol`.
+fn weld_near(
+    vertices: &[DVec3],
+    triangles: &mut [[u32; 3]],
+    tol: f64,
+) -> Option<(Vec<DVec3>, Welded)> {
+    // An oblique direction, so that the axis-aligned planes of CAD meshes
+    // do not put many vertices at one projection.
+    let d = DVec3::new(1.0, 0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
+    let mut largest: f64 = 0.0;
+    let mut order: Vec<(u64, u32)> = vertices
+        .iter()
+        .enumerate()
+        .map(|(i, v)| {
+            let p = v.dot(d);
+            largest = largest.max(p.abs());
+            (ordered(p), i as u32)
+        })
+        .collect();
+    // Projections of points within `tol` differ by at most `tol |d|`, plus
+    // the rounding of the two dot products.
+    let reach = tol * d.length() * (1.0 + 1e-12) + 8.0 * f64::EPSILON * largest;
+    order.sort_unstable_by_key(|&(k, _)| k);
+    let proj = |k: u64| -> f64 { f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k }) };
+    let tol2 = tol * tol;
+    let mut parent: Vec<u32> = Vec::new();
+    for (n, &(ki, i)) in order.iter().enumerate() {
+        let pi = proj(ki);
+        for &(kj, j) in &order[n + 1..] {
+            if proj(kj) - pi > reach {
+                break;
+            }
+            if vertices[i as usize].distance_squared(vertices[j as usize]) <= tol2 {
+                if parent.is_empty() {
+                    parent = (0..vertices.len() as u32).collect();
+                }
+                let (a, b) = (find(&mut parent, i), find(&mut parent, j));
+                // The smaller index is the root: the first vertex in use order.
+                let (lo, hi) = (a.min(b), a.max(b));
+                parent[hi as usize] = lo;
+            }
+        }
+    }
+    if parent.is_empty() {
+        return None;
+    }
+    let mut new_index = vec![u32::MAX; vertices.len()];
+    let mut kept = Vec::new();
+    let mut welded = Welded {
+        tolerance: tol,
+        ..Welded::default()
+    };
+    for i in 0..vertices.len() as u32 {
+        let root = find(&mut parent, i);
+        if root == i {
+            new_index[i as usize] = kept.len() as u32;
+            kept.push(vertices[i as usize]);
+        } else {
+            // Roots come first in index order, so the root is numbered.
+            new_index[i as usize] = new_index[root as usize];
+            welded.merged += 1;
+            let moved = vertices[i as usize].distance(vertices[root as usize]);
+            welded.max_move = welded.max_move.max(moved);
+        }
+    }
+    for t in triangles.iter_mut() {
+        *t = t.map(|i| new_index[i as usize]);
+    }
+    Some((kept, welded))
+}
+
+/// The diagonal of the axis-aligned bounding box.
+pub(crate) fn bounding_diagonal(vertices: &[DVec3]) -> f64 {
+    let (lo, hi) = vertices.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), &v| (lo.min(v), hi.max(v)),
+    );
+    if vertices.is_empty() {
+        0.0
+    } else {
+        (hi - lo).length()
+    }
+}
+
+impl TriMesh {
+    /// The mesh with its vertices welded: bit-identical ones always, and
+    /// distinct ones within the tolerance of `weld` (see the module notes on
+    /// chains). Unused vertices are dropped; triangle order is kept.
+    ///
+    /// ```text
+    /// v_i ≡ v_j  ⇔  a chain v_i = p_0, p_1, …, p_k = v_j with |p_(n+1) − p_n| ≤ tol
+    /// ```
+    ///
+    /// # Errors
+    /// [`InertiaError::NotFinite`] for a negative, NaN or infinite
+    /// tolerance.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_inertia::{TriMesh, Weld};
+    /// let v = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::X * (1.0 + 1e-12), DVec3::Y, DVec3::Z];
+    /// let mesh = TriMesh::new(v, vec![[0, 1, 2], [3, 5, 4]]);
+    /// let (exact, none) = mesh.clone().welded(Weld::Exact)?;
+    /// assert_eq!((exact.vertices().len(), none.merged), (5, 0));
+    /// let (welded, report) = mesh.welded(Weld::default())?;
+    /// assert_eq!((welded.vertices().len(), report.merged), (4, 1));
+    /// assert_eq!(welded.triangles()[1], [1, 3, 2]);
+    /// # Ok::<(), kreisel_inertia::InertiaError>(())
+    /// ```
+    pub fn welded(self, weld: Weld) -> Result<(TriMesh, Welded), InertiaError> {
+        let tol = weld.tolerance(bounding_diagonal(self.vertices()))?;
+        let (vertices, mut triangles) = self.into_parts();
+        let vertices = weld_exact(&vertices, &mut triangles);
+        let unchanged = Welded {
+            tolerance: tol,
+            ..Welded::default()
+        };
+        let (vertices, report) = if tol > 0.0 {
+            weld_near(&vertices, &mut triangles, tol).unwrap_or((vertices, unchanged))
+        } else {
+            (vertices, unchanged)
+        };
+        Ok((TriMesh::from_checked_parts(vertices, triangles), report))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chains_collapse_transitively_and_report_the_largest_move() {
+        // 0 — 1 — 2 each 0.6 apart with tol 1: 0 and 2 are 1.2 apart but one cluster.
+        let v = vec![
+            DVec3::ZERO,
+            DVec3::new(0.6, 0.0, 0.0),
+            DVec3::new(1.2, 0.0, 0.0),
+            DVec3::new(100.0, 0.0, 0.0),
+            DVec3::new(0.0, 100.0, 0.0),
+        ];
+        let mesh = TriMesh::new(v, vec![[0, 3, 4], [1, 3, 4], [2, 3, 4]]);
+        let (m, w) = mesh.welded(Weld::Absolute(1.0)).unwrap();
+        assert_eq!(m.vertices().len(), 3);
+        assert_eq!(m.triangles(), &[[0, 1, 2], [0, 1, 2], [0, 1, 2]]);
+        assert_eq!((w.merged, w.tolerance), (2, 1.0));
+        assert!((w.max_move - 1.2).abs() < 1e-15, "{}", w.max_move);
+    }
+
+    #[test]
+    fn result_does_not_depend_on_vertex_order() {
+        let base = [
+            DVec3::new(0.3, 0.1, 0.2),
+            DVec3::new(0.3 + 1e-9, 0.1, 0.2 - 1e-9),
+            DVec3::new(5.0, 1.0, 0.0),
+            DVec3::new(0.0, 4.0, 3.0),
+        ];
+        for perm in [[0, 1, 2, 3], [1, 0, 3, 2], [3, 2, 1, 0]] {
+            let v: Vec<DVec3> = perm.iter().map(|&i| base[i]).collect();
+            let inv = |i: usize| perm.iter().position(|&p| p == i).unwrap() as u32;
+            let mesh = TriMesh::new(v, vec![[inv(0), inv(2), inv(3)], [inv(1), inv(3), inv(2)]]);
+            let (m, w) = mesh.welded(Weld::default()).unwrap();
+            assert_eq!((m.vertices().len(), w.merged), (3, 1));
+            assert_eq!(m.triangles(), &[[0, 1, 2], [0, 2, 1]]);
+        }
+    }
+
+    #[test]
+    fn exact_table_grows_and_keeps_first_indices() {
+        let mut d = ExactDedup::with_capacity(1);
+        let pts: Vec<DVec3> = (0..1000)
+            .map(|i| DVec3::new(f64::from(i), 0.0, -0.0))
+            .collect();
+        for (i, &p) in pts.iter().enumerate() {
+            assert_eq!(d.insert(p) as usize, i);
+        }
+        for (i, &p) in pts.iter().enumerate().rev() {
+            assert_eq!(d.insert(p + DVec3::ZERO) as usize, i);
+        }
+        assert_eq!(d.into_vertices().len(), 1000);
+    }
+
+    #[test]
+    fn bad_tolerances_are_errors() {
+        for t in [-1.0, f64::NAN, f64::INFINITY] {
+            assert!(Weld::Absolute(t).tolerance(1.0).is_err());
+            assert!(Weld::Relative(t).tolerance(1.0).is_err());
+        }
+    }
+}
