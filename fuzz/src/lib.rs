@@ -16,6 +16,8 @@ use std::path::Path;
 use kreisel_inertia::io::{MeshFormat, load_bodies_from_bytes};
 use kreisel_inertia::{MassModel, MassProperties, Material, mesh_mass_properties};
 
+#[path = "../../crates/cli/src/atomic_file.rs"]
+pub mod atomic_file;
 #[path = "../../crates/cli/src/convert.rs"]
 pub mod convert;
 #[path = "../../crates/cli/src/error.rs"]

@@ -47,7 +47,8 @@ rotation, numbers comma-separated in shortest round-trip form.
 
 Errors: the first invalid line stops the conversion with a message naming its
 line number (FILE:LINE: with --input) and exit status 1; every line before it
-has been written.
+has been written to standard output. An --output file is written whole or not
+at all: after an error it is not created, and an existing one is kept.
 
 Examples:
   echo '0 0 1.5707963267948966' | kreisel convert --from rotvec --to quat
@@ -73,7 +74,7 @@ pub struct ConvertArgs {
     #[arg(long, value_name = "FILE")]
     pub input: Option<PathBuf>,
 
-    /// Write to FILE (created or truncated) instead of standard output
+    /// Write to FILE (replaced only when the whole conversion succeeds) instead of standard output
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 }
@@ -109,8 +110,9 @@ impl Conversion {
 ///
 /// # Errors
 /// A [`CliError`] for a file that cannot be opened or created, an I/O error,
-/// or the first invalid line. The output is flushed in every case, so all
-/// lines before an invalid one are written.
+/// or the first invalid line. Standard output is flushed in every case, so
+/// all lines before an invalid one are written; an `--output` file is put in
+/// place only on success.
 pub fn run(args: &ConvertArgs) -> Result<(), CliError> {
     let conversion = Conversion {
         from: args.from,
@@ -118,13 +120,33 @@ pub fn run(args: &ConvertArgs) -> Result<(), CliError> {
         degrees: args.degrees,
     };
     let (reader, input) = open_input(args.input.as_deref())?;
-    let (writer, output) = open_output(args.output.as_deref(), args.input.as_deref())?;
+    let (writer, output, pending) = open_output(args.output.as_deref(), args.input.as_deref())?;
     let mut writer = BufWriter::with_capacity(BUFFER_BYTES, writer);
     let converted = convert_stream(reader, &mut writer, conversion, &input, &output);
-    let flushed = writer
-        .flush()
-        .map_err(|source| CliError::Write { output, source });
-    converted.and(flushed)
+    let flushed = writer.flush().map_err(|source| CliError::Write {
+        output: output.clone(),
+        source,
+    });
+    converted.and(flushed)?;
+    drop(writer);
+    commit_output(pending, output)
+}
+
+/// Puts a finished `--output` file in place (see [`crate::atomic_file`]);
+/// nothing to do for standard output.
+///
+/// # Errors
+/// [`CliError::Write`] if the file cannot be renamed onto its target.
+pub(crate) fn commit_output(
+    pending: Option<crate::atomic_file::PendingFile>,
+    output: Stream,
+) -> Result<(), CliError> {
+    match pending {
+        None => Ok(()),
+        Some(pending) => pending
+            .commit()
+            .map_err(|source| CliError::Write { output, source }),
+    }
 }
 
 /// Standard input, or the file at `path`.
@@ -157,14 +179,21 @@ pub(crate) fn print_stdout(text: &str) -> Result<(), CliError> {
         })
 }
 
-/// Standard output, or the file at `path` (created or truncated), unless it
-/// is the input file (shared by the subcommands that write a stream).
-pub(crate) fn open_output(
-    path: Option<&Path>,
-    input: Option<&Path>,
-) -> Result<(Box<dyn Write>, Stream), CliError> {
+/// An output stream: the writer, its name, and the file to put in place on
+/// success (`None` for standard output).
+pub(crate) type Output = (
+    Box<dyn Write>,
+    Stream,
+    Option<crate::atomic_file::PendingFile>,
+);
+
+/// Standard output, or a temporary file beside `path` that
+/// [`commit_output`] puts in place when the run succeeds (so a failed run
+/// leaves no partial file and keeps an existing one), unless `path` is the
+/// input file (shared by the subcommands that write a stream).
+pub(crate) fn open_output(path: Option<&Path>, input: Option<&Path>) -> Result<Output, CliError> {
     let Some(path) = path else {
-        return Ok((Box::new(io::stdout().lock()), Stream::Standard));
+        return Ok((Box::new(io::stdout().lock()), Stream::Standard, None));
     };
     if let Some(input) = input {
         // Both exist when this is the same file; then creating the output
@@ -177,11 +206,12 @@ pub(crate) fn open_output(
             });
         }
     }
-    let file = File::create(path).map_err(|source| CliError::CreateOutput {
-        path: path.to_owned(),
-        source,
-    })?;
-    Ok((Box::new(file), Stream::File(path.to_owned())))
+    let (file, pending) =
+        crate::atomic_file::create(path).map_err(|source| CliError::CreateOutput {
+            path: path.to_owned(),
+            source,
+        })?;
+    Ok((Box::new(file), Stream::File(path.to_owned()), Some(pending)))
 }
 
 /// Converts every line of `reader` and writes the results to `writer`.
@@ -430,5 +460,45 @@ mod tests {
         assert!(!e.chars().any(char::is_control), "{e:?}");
         assert!(e.contains("\\u{7}x"), "{e}");
         assert_eq!(escape_invisible("a\u{200b}b\tc"), "a\\u{200b}b\\u{9}c");
+    }
+
+    #[test]
+    fn crlf_split_across_reads_is_one_line_end() {
+        // A reader that returns one byte at a time puts the LF of a CRLF in
+        // the next read: still one line end, so the error is on line 2.
+        let text = b"1 0 0 0\r\n1 2 3\r\n";
+        let reader = io::BufReader::with_capacity(1, &text[..]);
+        let conversion = Conversion {
+            from: Representation::Quat,
+            to: Representation::Quat,
+            degrees: false,
+        };
+        let mut out = Vec::new();
+        let e = convert_stream(
+            reader,
+            &mut out,
+            conversion,
+            &Stream::Standard,
+            &Stream::Standard,
+        )
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 2: expected 4 numbers for quat, found 3"
+        );
+        assert_eq!(out, b"1,0,0,0\n");
+    }
+
+    #[test]
+    fn long_lines_are_refused_whatever_their_end() {
+        let mut long = vec![b'1'; MAX_LINE_BYTES + 1];
+        long.push(b'\r');
+        let (result, _) = convert("quat", "quat", std::str::from_utf8(&long).unwrap());
+        assert!(
+            result
+                .unwrap_err()
+                .to_string()
+                .starts_with("line 1: line is longer than"),
+        );
     }
 }

@@ -67,8 +67,9 @@ pub enum LineProblem {
         /// 1-based position of the empty field among the numbers.
         position: usize,
     },
-    /// A token that `f64::from_str` does not accept.
-    #[error("cannot parse `{token}` as a number")]
+    /// A token that `f64::from_str` does not accept (shown with invisible
+    /// and control characters escaped, e.g. a byte-order mark as `\u{feff}`).
+    #[error("cannot parse `{}` as a number", token.escape_debug())]
     BadNumber {
         /// The token as written.
         token: String,
@@ -256,6 +257,15 @@ pub enum BodyProblem {
         #[from]
         source: InertiaError,
     },
+    /// The body is open along cracks that welding within `weld` metres
+    /// closes (checked).
+    #[error("{}; rerun with --weld {} to close them", one_line(&source.to_string()), Shortest(*weld))]
+    Cracks {
+        /// The library's description of the body's problem.
+        source: InertiaError,
+        /// A weld tolerance that closes the body, m.
+        weld: f64,
+    },
     /// The body is open, but all bodies of the file together are closed.
     #[error(
         "{}; the file's bodies together form a closed surface: rerun with --merge to treat them as one solid",
@@ -267,31 +277,18 @@ pub enum BodyProblem {
     },
 }
 
-/// What gives the right answer when a mesh is no closed, orientable surface:
-/// welding for cracks; for real holes, the models that hold only for some
-/// shapes (never advice that silently gives a wrong mass).
+/// What gives the right answer when a mesh is no closed, orientable surface
+/// and neither welding nor merging closes it: the models that hold only for
+/// some shapes, said so (never advice that silently gives a wrong mass).
 fn solid_hint(error: &InertiaError) -> String {
     const OPEN_ON_PURPOSE: &str = "; if the surface is open on purpose, --shell models a thin-walled part (see --thickness) and --hull a convex one";
     match error {
-        InertiaError::OpenMesh {
-            weld_gap: Some(gap),
-            ..
-        } => format!("; rerun with --weld {} to close them", round_up(gap * 1.5)),
         InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. } => OPEN_ON_PURPOSE.into(),
         InertiaError::NonOrientable { .. } => {
             "; it bounds no volume, but --shell models it as a thin wall (see --thickness)".into()
         }
         _ => String::new(),
     }
-}
-
-/// `x` rounded up to one significant digit (`1.3e-7` → `2e-7`).
-fn round_up(x: f64) -> Shortest {
-    if !(x.is_finite() && x > 0.0) {
-        return Shortest(x);
-    }
-    let unit = 10f64.powf(x.log10().floor());
-    Shortest((x / unit).ceil() * unit)
 }
 
 /// The text with line breaks replaced by spaces, so an error stays one line.

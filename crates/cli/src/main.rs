@@ -7,6 +7,7 @@
 
 #![forbid(unsafe_code)]
 
+mod atomic_file;
 mod convert;
 mod error;
 mod inertia;

@@ -123,7 +123,7 @@ pub struct SimulateArgs {
     #[arg(value_name = "SCENE", required_unless_present = "list_methods")]
     pub scene: Option<PathBuf>,
 
-    /// Write the CSV to FILE (created or truncated) instead of standard output
+    /// Write the CSV to FILE (replaced only when the whole run succeeds) instead of standard output
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
@@ -176,7 +176,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     } else {
         None
     };
-    let (writer, output) = crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
+    let (writer, output, pending) =
+        crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
     let mut progress = Progress::new(
         scene.schedule.steps(),
         Progress::wanted(output == Stream::Standard),
@@ -191,14 +192,22 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     progress.finish();
     // The rows written before a divergence are valid: flushed either way.
     let flushed = csv.flush();
+    drop(csv);
     match simulated {
+        // A failed write leaves no --output file (the pending one is dropped).
         Err(Stop::Write(source)) => Err(write_error(&output, source)),
         Err(Stop::Diverged { body, time, error }) => {
+            // The rows before the divergence are valid: the file keeps them.
             flushed.map_err(|source| write_error(&output, source))?;
+            crate::convert::commit_output(pending, output)?;
             let body = &scene.bodies[body].name;
             Err(diverged(scene_path, body, time, &error, name))
         }
-        Ok(()) => flushed.map_err(|source| write_error(&output, source)),
+        Ok(()) => {
+            flushed.map_err(|source| write_error(&output, source))?;
+            // Whole or not at all: the --output file appears only now.
+            crate::convert::commit_output(pending, output)
+        }
     }
 }
 

@@ -420,7 +420,7 @@ fn plot(
         path: path.to_owned(),
         message: e.to_string(),
     })?;
-    std::fs::write(path, bytes).map_err(|source| CliError::Plot {
+    crate::atomic_file::write_file(path, &bytes).map_err(|source| CliError::Plot {
         path: path.to_owned(),
         message: format!("cannot write the file: {source}"),
     })

@@ -4,6 +4,7 @@
 use glam::DVec3;
 
 use crate::error::Divergence;
+use crate::state::kinetic_energy;
 use crate::{DynamicsError, HeavyTop, PrincipalState};
 
 /// How far a conserved quantity may drift before a run is declared
@@ -62,7 +63,7 @@ enum Kind<'a> {
 impl<'a> DivergenceCheck<'a> {
     /// The checks for a free body with principal `moments` started at `initial`.
     pub fn free_body(method: &'static str, moments: DVec3, initial: &PrincipalState) -> Self {
-        let energy = 0.5 * (initial.l_principal * initial.l_principal / moments).element_sum();
+        let energy = kinetic_energy(moments, initial.l_principal);
         Self {
             method,
             kind: Kind::Free {
@@ -131,7 +132,7 @@ impl<'a> DivergenceCheck<'a> {
                 if outside(*l_norm, l) {
                     return drift("|L|", *l_norm, l);
                 }
-                let e = 0.5 * (state.l_principal * state.l_principal / *moments).element_sum();
+                let e = kinetic_energy(*moments, state.l_principal);
                 if outside(*energy, e) {
                     return drift("energy", *energy, e);
                 }

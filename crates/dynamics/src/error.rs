@@ -119,7 +119,9 @@ impl std::fmt::Display for Divergence {
                 current,
             } => write!(
                 f,
-                "{quantity} went from {initial:e} to {current:e} (a conserved quantity)"
+                "{quantity}, conserved by the exact motion, went from {initial:.4e} to \
+                 {current:.4e}: beyond a factor {}",
+                crate::DIVERGENCE_FACTOR
             ),
         }
     }

@@ -76,8 +76,7 @@ impl RigidBody {
         }
         if !moments.to_array().iter().all(|m| m.is_normal()) {
             return Err(bad(
-                "a moment below 2.2e-308 kg m^2 is subnormal and cannot be represented: \
-                 choose a smaller unit of length or mass",
+                "a moment below 2.2e-308 kg m^2 is subnormal: it has lost its digits and cannot be represented",
             ));
         }
         if moments.min_element() / moments.max_element() < MIN_MOMENT_RATIO {

@@ -94,8 +94,9 @@ impl PrincipalState {
         }
         let unit = crate::rigid_body::moment_scale(moments);
         let l = self.l_principal / unit;
-        let energy = 0.5 * (l * l / (moments / unit)).element_sum() * unit;
-        if !(l.length_squared().is_finite() && energy.is_finite()) {
+        if !(l.length_squared().is_finite()
+            && kinetic_energy(moments, self.l_principal).is_finite())
+        {
             return bad("angular momentum too large: |L|^2 or the energy I w^2/2 overflows");
         }
         Ok(())
@@ -119,10 +120,12 @@ impl PrincipalState {
         body.body_from_principal() * (self.l_principal / body.principal_moments())
     }
 
-    /// Rotational kinetic energy.
+    /// Rotational kinetic energy, evaluated in the body's unit of inertia
+    /// (an exact power-of-two rescaling), so `Lₖ²` cannot overflow while the
+    /// energy itself is finite (moments of 1e200 kg m² at 1 rad/s).
     ///
     /// ```text
-    /// E = ½ Σ Lₖ² / Iₖ
+    /// E = ½ Σ Lₖ² / Iₖ = 2ᵏ · ½ Σ L̂ₖ² / Îₖ,   L̂ = L/2ᵏ, Î = I/2ᵏ
     /// ```
     ///
     /// ```
@@ -131,10 +134,13 @@ impl PrincipalState {
     /// let body = RigidBody::try_from_principal_moments(DVec3::new(1.0, 2.0, 3.0))?;
     /// let s = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 2.0, 0.0) };
     /// assert_eq!(s.energy(&body), 1.0);
+    /// let big = RigidBody::try_from_principal_moments(DVec3::new(1e200, 2e200, 3e200))?;
+    /// let s = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 2e200, 0.0) };
+    /// assert!((s.energy(&big) / 1e200 - 1.0).abs() < 1e-15);
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn energy(&self, body: &RigidBody) -> f64 {
-        0.5 * (self.l_principal * self.l_principal / body.principal_moments()).element_sum()
+        kinetic_energy(body.principal_moments(), self.l_principal)
     }
 
     /// Angular momentum in world axes (constant for a free body).
@@ -150,4 +156,14 @@ impl PrincipalState {
     pub fn l_world(&self) -> DVec3 {
         self.world_from_principal.normalize() * self.l_principal
     }
+}
+
+/// `½ Σ Lₖ²/Iₖ` in the unit of inertia of `moments` (see
+/// `rigid_body::moment_scale`): bit for bit the plain formula wherever that
+/// does not overflow.
+#[inline]
+pub(crate) fn kinetic_energy(moments: DVec3, l: DVec3) -> f64 {
+    let unit = crate::rigid_body::moment_scale(moments);
+    let l = l / unit;
+    0.5 * (l * l / (moments / unit)).element_sum() * unit
 }

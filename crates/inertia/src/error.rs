@@ -78,7 +78,7 @@ pub enum InertiaError {
         "mesh is open: {boundary_edges} boundary edges (edges used by only one triangle), one at ({}, {}, {}){}",
         at.x, at.y, at.z,
         match weld_gap {
-            Some(g) => format!("; every boundary vertex lies within {g:.2e} of another: the surface is closed up to cracks of that size, which welding the vertices within that distance closes"),
+            Some(g) => format!("; every boundary vertex lies within {g:.2e} of another boundary vertex (cracks rather than holes)"),
             None => "; it has holes and encloses no volume".to_owned(),
         }
     )]
@@ -87,10 +87,10 @@ pub enum InertiaError {
         boundary_edges: usize,
         /// The midpoint of one boundary edge.
         at: DVec3,
-        /// When the boundary is only cracks: the largest distance from a
-        /// boundary vertex to its nearest other boundary vertex (at most
-        /// 0.001 × the bounding-box diagonal), a weld tolerance that closes
-        /// them.
+        /// When the boundary looks like cracks: the largest distance from a
+        /// boundary vertex to its nearest other boundary vertex (reported
+        /// when at most 0.001 × the bounding-box diagonal), the smallest
+        /// weld tolerance that could close them.
         weld_gap: Option<f64>,
     },
     /// Some edges are shared by more than two triangles whose windings do

@@ -217,12 +217,19 @@ fn weld_near(
     // An oblique direction, so that the axis-aligned planes of CAD meshes
     // do not put many vertices at one projection.
     let d = DVec3::new(1.0, 0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
-    let reach = tol * d.length() * (1.0 + 1e-12);
+    let mut largest: f64 = 0.0;
     let mut order: Vec<(u64, u32)> = vertices
         .iter()
         .enumerate()
-        .map(|(i, v)| (ordered(v.dot(d)), i as u32))
+        .map(|(i, v)| {
+            let p = v.dot(d);
+            largest = largest.max(p.abs());
+            (ordered(p), i as u32)
+        })
         .collect();
+    // Projections of points within `tol` differ by at most `tol |d|`, plus
+    // the rounding of the two dot products.
+    let reach = tol * d.length() * (1.0 + 1e-12) + 8.0 * f64::EPSILON * largest;
     order.sort_unstable_by_key(|&(k, _)| k);
     let proj = |k: u64| -> f64 { f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k }) };
     let tol2 = tol * tol;

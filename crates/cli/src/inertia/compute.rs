@@ -225,18 +225,23 @@ fn units_warning(setup: &Setup, bodies: &[(Body, Vec<String>)]) -> Option<String
                     "if its coordinates are in {}, rerun with --units {} ({} m across)",
                     unit_name(u),
                     u.symbol(),
-                    Shortest(raw * u.scale())
+                    three_digits(raw * u.scale())
                 )
             },
         );
     Some(format!(
         "the mesh is {} m across ({} x {} x {} m) with mesh units {}, implausible for a part; {advice}",
-        Shortest(size),
-        Shortest(extent.x),
-        Shortest(extent.y),
-        Shortest(extent.z),
+        three_digits(size),
+        three_digits(extent.x),
+        three_digits(extent.y),
+        three_digits(extent.z),
         setup.units_text()
     ))
+}
+
+/// `x` rounded to three significant digits, in shortest form (`49.3`).
+fn three_digits(x: f64) -> Shortest {
+    Shortest(format!("{x:.2e}").parse().unwrap_or(x))
 }
 
 /// The unit's name in words.
@@ -365,8 +370,20 @@ fn body_error(setup: &Setup, body: String, several: bool, error: InertiaError) -
         error,
         InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. }
     );
+    let closing_weld = match error {
+        InertiaError::OpenMesh {
+            weld_gap: Some(gap),
+            ..
+        } => Some(round_up(1.5 * gap)),
+        _ => None,
+    };
     let problem = if several && topology && !setup.merge && merged_is_solid(setup) {
         BodyProblem::ClosedOnlyMerged { source: error }
+    } else if let Some(weld) = closing_weld.filter(|&w| welded_is_solid(setup, &body, w)) {
+        BodyProblem::Cracks {
+            source: error,
+            weld,
+        }
     } else {
         BodyProblem::from(error)
     };
@@ -375,6 +392,28 @@ fn body_error(setup: &Setup, body: String, several: bool, error: InertiaError) -
         body,
         problem,
     }
+}
+
+/// Whether body `name` is a closed surface when welded within `weld` metres.
+fn welded_is_solid(setup: &Setup, name: &str, weld: f64) -> bool {
+    let trial = Setup {
+        weld: WeldChoice::Metres(weld),
+        ..setup.clone()
+    };
+    match load_scaled(&trial, setup.merge) {
+        Ok(bodies) => bodies
+            .into_iter()
+            .find(|(body, _)| body.name == name)
+            .is_some_and(|(body, _)| prepare_solid(body.mesh).is_ok()),
+        Err(_) => false,
+    }
+}
+
+/// `x` rounded up to one significant digit (`1.3e-7` → `2e-7`).
+fn round_up(x: f64) -> f64 {
+    let unit = 10f64.powf(x.log10().floor());
+    let up = (x / unit).ceil() * unit;
+    if up.is_finite() && up >= x { up } else { x }
 }
 
 /// Whether all bodies of the file together form a closed surface.

@@ -132,6 +132,17 @@ impl SimBody {
         (x, self.velocity + gravity * t)
     }
 
+    /// Whether the centre of mass's motion and the energy stay finite over
+    /// `[0, duration]`, checked at both ends: `|v|²` is convex in `t`, and
+    /// `−g·x` is concave, its largest value exceeding the one at `t = 0` by
+    /// at most `|v₀|²/2` per kg.
+    pub fn stays_finite(&self, duration: f64, gravity: DVec3) -> bool {
+        [0.0, duration].into_iter().all(|t| {
+            let (x, v) = self.centre_of_mass(t, gravity);
+            x.is_finite() && v.is_finite() && self.energy(&self.initial, t, gravity).is_finite()
+        })
+    }
+
     /// Total energy at time `t` in rotational state `state`.
     ///
     /// ```text

@@ -196,6 +196,14 @@ pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
     let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());
     for (n, raw_body) in raw.body.iter().enumerate() {
         let body = SimBody::from_raw(file, raw_body, n + 1, folder, gravity)?;
+        if !body.stays_finite(duration, gravity) {
+            let message = format!(
+                "body `{}`: its energy or the motion of its centre of mass overflows \
+                 within the run (position, velocity, gravity, mass or duration too large)",
+                body.name
+            );
+            return Err(file.error(Some(raw_body.span()), &message));
+        }
         if !names.insert(body.name.clone()) {
             let span = raw_body.get_ref().name_span().unwrap_or(raw_body.span());
             let message = format!("body name `{}` is used twice; names must differ", body.name);
@@ -286,6 +294,17 @@ mod tests {
             e.starts_with("s.toml:4: `output_interval` must be a whole multiple"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn overflowing_ballistics_are_refused() {
+        let body = "[[body]]\nmass = 1\ninertia = [1, 1, 1]\nangular_velocity = [0, 0, 1]\n";
+        let e = error(&format!("{SIM}{body}velocity = [1e200, 0, 0]\n"));
+        assert!(e.starts_with("s.toml:4: body `body1`: its energy"), "{e}");
+        let e = error(&format!(
+            "{SIM}gravity = [0, 0, -1e300]\n{body}position = [0, 0, 1e300]\n"
+        ));
+        assert!(e.contains("overflows within the run"), "{e}");
     }
 
     #[test]

@@ -105,9 +105,10 @@ fn invalid_utf8_is_a_line_error() {
 }
 
 #[test]
-fn errors_in_files_name_file_and_line_and_keep_earlier_output() {
+fn errors_in_files_name_file_and_line_and_keep_earlier_output_on_stdout() {
     let input = scratch("errors-input.csv");
     let output = scratch("errors-output.csv");
+    let _ = std::fs::remove_file(&output);
     std::fs::write(&input, "0,0,0\n\n0,0,1\n0,x,0\n0,0,2\n").unwrap();
     let (i, o) = (input.to_str().unwrap(), output.to_str().unwrap());
     let run = convert("rotvec", "rotvec", &["--input", i], "");
@@ -115,7 +116,8 @@ fn errors_in_files_name_file_and_line_and_keep_earlier_output() {
     assert_data_error(&run, &prefix, &["`x`"], "0,0,0\n0,0,1\n", "file");
     let run = convert("rotvec", "rotvec", &["--input", i, "--output", o], "");
     assert_data_error(&run, &prefix, &["`x`"], "", "file to file");
-    assert_eq!(std::fs::read_to_string(&output).unwrap(), "0,0,0\n0,0,1\n");
+    // An --output file is all or nothing: after the error it does not exist.
+    assert!(!output.exists());
 }
 
 #[test]
@@ -216,4 +218,47 @@ fn closed_output_pipe_ends_quietly() {
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert!(stderr.is_empty(), "{stderr}");
     assert_eq!(output.status.code(), Some(0), "{stderr}");
+}
+
+#[test]
+fn a_failed_conversion_leaves_no_partial_output_file() {
+    // Regression: an error at line 3 left a truncated --output file behind.
+    let dir = scratch("atomic-output");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let output = dir.join("out.csv");
+    let o = output.to_str().unwrap();
+    std::fs::write(&output, "previous contents\n").unwrap();
+    let run = convert(
+        "quat",
+        "quat",
+        &["--output", o],
+        "1,0,0,0\n0,1,0,0\n0,0,0,0\n",
+    );
+    assert_eq!(run.code, Some(1), "{}", run.stderr);
+    assert_eq!(
+        std::fs::read_to_string(&output).unwrap(),
+        "previous contents\n"
+    );
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, ["out.csv"], "a temporary file was left behind");
+    // Writing to a full device fails cleanly with the device's reason.
+    if std::path::Path::new("/dev/full").exists() {
+        let run = convert("quat", "quat", &["--output", "/dev/full"], "1,0,0,0\n");
+        assert_eq!(run.code, Some(1), "{}", run.stderr);
+        assert!(run.stderr.contains("/dev/full"), "{}", run.stderr);
+    }
+    // A new file appears only on success.
+    let fresh = dir.join("fresh.csv");
+    let run = convert(
+        "quat",
+        "quat",
+        &["--output", fresh.to_str().unwrap()],
+        "0,0,0,0\n",
+    );
+    assert_eq!(run.code, Some(1));
+    assert!(!fresh.exists());
 }

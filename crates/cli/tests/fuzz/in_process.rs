@@ -12,7 +12,7 @@ use crate::targets;
 const CASES: u32 = 96;
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: CASES, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(crate::mutate::ci_config(CASES))]
 
     #[test]
     fn stl_loads_or_fails_cleanly(bytes in mutated("stl")) {

@@ -27,4 +27,4 @@ mod targets;
 
 // The CLI sources compiled into `targets` name each other as `crate::error`,
 // `crate::numbers`, ... as in the binary: make those paths resolve here.
-use targets::{error, numbers, representation};
+use targets::{atomic_file, convert, error, numbers, representation};

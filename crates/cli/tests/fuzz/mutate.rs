@@ -6,6 +6,22 @@ use std::path::{Path, PathBuf};
 use proptest::collection::vec;
 use proptest::prelude::*;
 use proptest::sample::select;
+use proptest::test_runner::RngSeed;
+
+/// The proptest settings of the CI pass: `cases` per test, no persistence
+/// files, and a fixed RNG seed so that CI runs the same inputs every time
+/// (set `PROPTEST_RNG_SEED` to explore others; the campaign explores more).
+pub fn ci_config(cases: u32) -> ProptestConfig {
+    let mut config = ProptestConfig {
+        cases,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    };
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        config.rng_seed = RngSeed::Fixed(0x006b_7265_6973_656c);
+    }
+    config
+}
 
 /// The committed seed corpus of one fuzz target.
 pub fn corpus_dir(target: &str) -> PathBuf {

@@ -296,7 +296,7 @@ fn check(parser: Parser, input: &[u8], variant: usize) -> Result<(), TestCaseErr
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: CI_CASES, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(crate::mutate::ci_config(CI_CASES))]
 
     #[test]
     fn inertia_stl_through_cli(bytes in mutated("stl"), variant in 0usize..3) {

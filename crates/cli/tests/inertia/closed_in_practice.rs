@@ -164,8 +164,8 @@ fn a_millimetre_part_without_units_gets_a_warning_naming_units_mm() {
     assert!(rel(num(&json["mass"]), 1e7) <= 1e-14, "{}", json["mass"]);
     let w = warnings(&json);
     assert!(
-        w.iter()
-            .any(|w| w.contains("50 m across") && w.contains("--units mm")),
+        w.iter().any(|w| w.contains("50 m across (50 x 20 x 10 m)")
+            && w.contains("rerun with --units mm (0.05 m across)")),
         "{w:?}"
     );
     assert!(run.stderr.contains("--units mm"), "{}", run.stderr);
