@@ -22,6 +22,14 @@
 //!   parser's share;
 //! - `load_bodies`: [`load_bodies`] from the path (binary STL streams the
 //!   file instead of reading it whole).
+//!
+//! `… peak B/tri`: how far the process's peak resident memory rose above its
+//! resident memory at the start of `merge`, `check` and `load_bodies` (Linux;
+//! the peak is reset through `/proc/self/clear_refs` before each), per
+//! triangle. The mesh itself (24 bytes per triangle when closed) is held
+//! before `merge` and `check` start, so it is not in their figures; memory
+//! freed by an earlier phase and reused is not counted either, so the
+//! `load_bodies` figure is a lower bound (the CLI's peak RSS is the whole).
 
 use std::path::Path;
 use std::time::Instant;
@@ -39,28 +47,42 @@ fn now() -> f64 {
     }
 }
 
-/// Runs `f`, returning its value and the seconds it took.
-fn timed<T>(f: impl FnOnce() -> T) -> (T, f64) {
+/// A field of `/proc/self/status` in bytes (`VmRSS`, `VmHWM`), if readable.
+fn status_bytes(field: &str) -> Option<f64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with(field))?;
+    let kb: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024.0)
+}
+
+/// Runs `f`: its value, the seconds it took, and how far the peak resident
+/// memory rose above the resident memory at its start (bytes; 0 where
+/// `/proc` cannot say). The peak is reset first (`/proc/self/clear_refs`).
+fn timed<T>(f: impl FnOnce() -> T) -> (T, f64, f64) {
+    let _ = std::fs::write("/proc/self/clear_refs", "5");
+    let base = status_bytes("VmRSS");
     let start = now();
     let value = f();
-    (value, now() - start)
+    let seconds = now() - start;
+    let peak = status_bytes("VmHWM").zip(base).map_or(0.0, |(p, b)| p - b);
+    (value, seconds, peak)
 }
 
 fn phases(path: &Path) -> Result<(), String> {
     let format = MeshFormat::from_path(path).ok_or("unknown extension")?;
     let name = path.display().to_string();
-    let (bytes, read) = timed(|| std::fs::read(path));
+    let (bytes, read, _) = timed(|| std::fs::read(path));
     let bytes = bytes.map_err(|e| e.to_string())?;
-    let (bodies, load) = timed(|| load_bodies_from_bytes(&bytes, format, &name, path.parent()));
+    let (bodies, load, _) = timed(|| load_bodies_from_bytes(&bytes, format, &name, path.parent()));
     let bodies = bodies.map_err(|e| e.to_string())?;
     let mesh = bodies.into_iter().next().ok_or("no body")?.mesh;
     let n = mesh.triangles().len() as f64;
-    let (merged, merge) = timed(|| mesh.clone().welded(Weld::default()));
+    let (merged, merge, merge_mem) = timed(|| mesh.clone().welded(Weld::default()));
     let merged = merged.map_err(|e| e.to_string())?.0;
     assert_eq!(merged.vertices().len(), mesh.vertices().len());
-    let (checked, check) = timed(|| prepare_solid(mesh.clone()));
+    let (checked, check, check_mem) = timed(|| prepare_solid(mesh.clone()));
     let checked = checked.map_err(|e| e.to_string())?;
-    let (mass, integrate) = timed(|| MeshMoments::solid(&checked.mesh).mass_properties(1000.0));
+    let (mass, integrate, _) = timed(|| MeshMoments::solid(&checked.mesh).mass_properties(1000.0));
     let mass = mass.map_err(|e| e.to_string())?.mass;
     drop((checked, mesh, merged));
     let tobj = (format == MeshFormat::Obj).then(|| {
@@ -69,18 +91,19 @@ fn phases(path: &Path) -> Result<(), String> {
             triangulate: true,
             ..Default::default()
         };
-        timed(|| {
+        let (_, seconds, _) = timed(|| {
             tobj::load_obj_buf(&mut &bytes[..], &options, |_| {
                 Err(tobj::LoadError::OpenFileFailed)
             })
             .map(|(models, _)| models.len())
-        })
-        .1
+        });
+        seconds
     });
     drop(bytes);
-    let (streamed, load_path) = timed(|| load_bodies(path));
+    let (streamed, load_path, load_mem) = timed(|| load_bodies(path));
     streamed.map_err(|e| e.to_string())?;
     let ns = |s: f64| format!("{:.0}", s / n * 1e9);
+    let per = |bytes: f64| format!("{:.0}", bytes / n);
     let mut row = vec![
         ("triangles", format!("{n}")),
         ("read", ns(read)),
@@ -90,6 +113,9 @@ fn phases(path: &Path) -> Result<(), String> {
         ("check", ns(check)),
         ("integrate", ns(integrate)),
         ("load_bodies", ns(load_path)),
+        ("merge peak B/tri", per(merge_mem)),
+        ("check peak B/tri", per(check_mem)),
+        ("load_bodies peak B/tri", per(load_mem)),
     ];
     if let Some(t) = tobj {
         row.push(("tobj", ns(t)));

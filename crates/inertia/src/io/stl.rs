@@ -16,7 +16,8 @@
 //! ASCII: `solid [name]`, facets of `facet normal …`, `outer loop`, three
 //! (or more, fan-triangulated) `vertex x y z` lines, `endloop`, `endfacet`,
 //! and `endsolid`. Keywords are case-insensitive, coordinates are parsed as
-//! `f64`, and several solids in one file become several bodies.
+//! `f64` (exact repeats sharing one vertex as they are read), and several
+//! solids in one file become several bodies.
 //!
 //! Which one: a file whose length matches its binary count is binary, unless
 //! it starts with `solid` and is entirely printable ASCII text; otherwise a
@@ -33,6 +34,7 @@ use glam::DVec3;
 use super::vertex_table::VertexTable;
 use super::{Body, Source, vertex_index};
 use crate::InertiaError;
+use crate::weld::ExactDedup;
 
 /// Bytes before the first binary triangle record.
 const HEADER: usize = 84;
@@ -70,7 +72,7 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
                 } else {
                     s.name
                 };
-                src.body(name, s.vertices, s.triangles)
+                src.body(name, s.vertices.into_vertices(), s.triangles)
             })
             .collect();
     }
@@ -246,10 +248,15 @@ impl Soup {
     }
 }
 
-/// One solid being read.
+/// One solid being read: exact repeats of a vertex share one index as they
+/// are read (as binary records do through [`VertexTable`]).
 struct Solid {
     name: String,
-    vertices: Vec<DVec3>,
+    vertices: ExactDedup,
+    /// Corners read so far (at least the distinct vertices).
+    corners: usize,
+    /// The current facet's vertex indices.
+    facet: Vec<u32>,
     triangles: Vec<[u32; 3]>,
 }
 
@@ -274,7 +281,9 @@ fn parse_ascii(bytes: &[u8]) -> Result<Vec<Solid>, String> {
         }
         let mut solid = Solid {
             name: rest.to_owned(),
-            vertices: Vec::new(),
+            vertices: ExactDedup::with_capacity(0),
+            corners: 0,
+            facet: Vec::new(),
             triangles: Vec::new(),
         };
         while read_facet(&mut lines, &mut solid)? {}
@@ -312,7 +321,7 @@ fn read_facet<'t>(
     if !(outer && looped && words.next().is_none()) {
         return Err(format!("line {n}: expected 'outer loop', found '{line}'"));
     }
-    let first = solid.vertices.len();
+    solid.facet.clear();
     let end = loop {
         let (n, line) = next("'vertex' or 'endloop'")?;
         let (keyword, rest) = split_keyword(line);
@@ -325,19 +334,20 @@ fn read_facet<'t>(
             ));
         }
         let v = parse_vertex(rest).map_err(|r| format!("line {n}: {r}"))?;
-        solid.vertices.push(v);
+        // Distinct vertices never outnumber the corners read.
+        vertex_index(solid.corners)?;
+        solid.corners += 1;
+        solid.facet.push(solid.vertices.insert(v));
     };
-    let corners = solid.vertices.len() - first;
+    let corners = solid.facet.len();
     if corners < 3 {
         return Err(format!(
             "line {end}: facet has {corners} vertices, at least 3 are needed"
         ));
     }
-    let a = vertex_index(first)?;
-    for i in first + 1..solid.vertices.len() - 1 {
-        solid
-            .triangles
-            .push([a, vertex_index(i)?, vertex_index(i + 1)?]);
+    let a = solid.facet[0];
+    for w in solid.facet[1..].windows(2) {
+        solid.triangles.push([a, w[0], w[1]]);
     }
     let (n, line) = next("'endfacet'")?;
     if !split_keyword(line).0.eq_ignore_ascii_case("endfacet") {
@@ -436,6 +446,17 @@ mod tests {
         assert_eq!(streamed[0].mesh.triangles().len(), 9800);
         // (n + 1)² grid points: repeats and the signed zeros merged.
         assert_eq!(streamed[0].mesh.vertices().len(), 71 * 71);
+    }
+
+    #[test]
+    fn ascii_facets_share_repeated_vertices_as_they_are_read() {
+        let text = "solid s\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n\
+            vertex 0 1 0\nvertex -0 1 1\nendloop\nendfacet\nfacet normal 0 0 0\nouter loop\n\
+            vertex 1 0 0\nvertex 0 0 0\nvertex 0 0 -0\nendloop\nendfacet\nendsolid\n";
+        let solids = parse_ascii(text.as_bytes()).unwrap();
+        let solid = solids.into_iter().next().unwrap();
+        assert_eq!(solid.triangles, [[0, 1, 2], [0, 2, 3], [1, 0, 0]]);
+        assert_eq!(solid.vertices.into_vertices().len(), 4);
     }
 
     #[test]
