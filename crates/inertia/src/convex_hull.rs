@@ -24,9 +24,9 @@
 //! it cannot help when most points are hull vertices (a finely tessellated
 //! sphere), and parry stays slow there. Measured (release, 2 cores shared):
 //! a bumpy sphere of 2.56 M triangles (1.28 M distinct points, 53 k on the
-//! hull): distinct 0.26 s, prefilter to 152 k candidates 1.4 s, parry 1.5 s,
-//! check under 1 s; `kreisel inertia --hull` end to end 11.6 s, of which
-//! 9 s load the STL (was 54 s with parry alone). A smooth UV sphere of the
+//! hull): the hull takes about 3 s (distinct 0.3 s, prefilter to 152 k
+//! candidates 1.4 s, parry 1.5 s, check a fraction); `kreisel inertia
+//! --hull` end to end 11.6 s, of which 9 s load the STL (was 54 s). A smooth UV sphere of the
 //! same size, every point on the hull: over 300 s, all in parry.
 //!
 //! Nothing is trusted: the result must be a closed surface in which every
