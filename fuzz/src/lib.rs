@@ -1,44 +1,19 @@
 //! What the fuzz targets run: one function per parser, each asserting the
 //! contract "an error, or a result of finite numbers; never a panic".
 //!
-//! The scene and convert parsers live in the `kreisel` binary (crates/cli,
-//! no library target), so their source files are compiled in here by path,
-//! at the same module paths as in the binary (`crate::error`,
-//! `crate::simulate::scene`, ...). Nothing in crates/cli had to change.
-//! The CLI's test `crates/cli/tests/fuzz/` compiles this file in the same
-//! way (re-exporting these modules at its root), so the in-CI pass and the
-//! fuzz targets check one contract.
-
-#![allow(dead_code, unused_imports)]
+//! The scene and convert parsers come from the CLI's library
+//! (`kreisel_cli`). The CLI's test `crates/cli/tests/fuzz/` compiles this
+//! file in by path, so the in-CI pass and the fuzz targets check one
+//! contract.
 
 use std::path::Path;
 
 use kreisel_inertia::io::{MeshFormat, load_bodies_from_bytes};
 use kreisel_inertia::{MassModel, MassProperties, Material, mesh_mass_properties};
 
-#[path = "../../crates/cli/src/atomic_file.rs"]
-pub mod atomic_file;
-#[path = "../../crates/cli/src/convert.rs"]
-pub mod convert;
-#[path = "../../crates/cli/src/error.rs"]
-pub mod error;
-#[path = "../../crates/cli/src/numbers.rs"]
-pub mod numbers;
-#[path = "../../crates/cli/src/representation.rs"]
-pub mod representation;
-
-/// The scene parser's modules (not `simulate.rs` itself, which runs the
-/// simulation and writes files).
-#[path = "../../crates/cli/src/simulate"]
-pub mod simulate {
-    pub mod body;
-    pub mod methods;
-    pub mod scene;
-    pub mod schedule;
-}
-
-use convert::Conversion;
-use representation::Representation;
+use kreisel_cli::convert::Conversion;
+use kreisel_cli::representation::Representation;
+use kreisel_cli::simulate;
 
 /// Panics unless every number of `p` is finite (an `Ok` must never hold NaN or inf).
 fn assert_finite(p: &MassProperties, what: &str) {

@@ -67,9 +67,8 @@ pub enum LineProblem {
         /// 1-based position of the empty field among the numbers.
         position: usize,
     },
-    /// A token that `f64::from_str` does not accept (shown with invisible
-    /// and control characters escaped, e.g. a byte-order mark as `\u{feff}`).
-    #[error("cannot parse `{}` as a number", token.escape_debug())]
+    /// A token that `f64::from_str` does not accept.
+    #[error("cannot parse `{token}` as a number")]
     BadNumber {
         /// The token as written.
         token: String,

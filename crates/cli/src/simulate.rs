@@ -13,7 +13,7 @@ mod body;
 mod methods;
 mod output;
 mod progress;
-mod scene;
+pub mod scene;
 mod schedule;
 
 use std::fs;

@@ -17,11 +17,17 @@
 //!
 //! Before the hull is built, exact duplicates are dropped and an
 //! Akl–Toussaint prefilter discards every point strictly inside the hull of
-//! the extreme points in 26 directions (a point inside a polytope spanned by
-//! input points is no hull vertex). parry's time grows quickly with the
-//! number of points it sees (1 M points in a ball: 2.0 s; on a thin
-//! spherical shell: 25 s), so the prefilter matters on big meshes; see
-//! `BENCHMARKS.md` for the figures.
+//! the extreme points in 256 directions (a point inside a polytope spanned
+//! by input points is no hull vertex). parry's time grows quickly with the
+//! number of points it sees (1 M points in a ball: 2.0 s; 1 M on a thin
+//! spherical shell: 25 s), so the prefilter decides the time on big meshes;
+//! it cannot help when most points are hull vertices (a finely tessellated
+//! sphere), and parry stays slow there. Measured (release, 2 cores shared):
+//! a bumpy sphere of 2.56 M triangles (1.28 M distinct points, 53 k on the
+//! hull): the hull takes about 3 s (distinct 0.3 s, prefilter to 152 k
+//! candidates 1.4 s, parry 1.5 s, check a fraction); `kreisel inertia
+//! --hull` end to end 11.6 s, of which 9 s load the STL (was 54 s). A smooth UV sphere of the
+//! same size, every point on the hull: over 300 s, all in parry.
 //!
 //! Nothing is trusted: the result must be a closed surface in which every
 //! edge is used once in each direction (V − E + F = 2), with positive
@@ -31,7 +37,9 @@
 //! Containment is tested by a walk over the hull's faces that maximises the
 //! linear function `n·(p − c) / n·(v − c)` on the polar dual (the simplex
 //! method's argument: on a convex polytope a local maximum is the global
-//! one), so the check costs about √F per point instead of F.
+//! one), so the check costs about √F per point instead of F. The points the
+//! prefilter drops are inside a polytope whose corners are checked points,
+//! so inside the hull as well.
 
 use std::collections::HashMap;
 
@@ -84,7 +92,7 @@ pub fn convex_hull(mesh: &TriMesh) -> Result<TriMesh, InertiaError> {
     let points = distinct(mesh.vertices());
     let frame = Whitening::of(&points)?;
     let white: Vec<DVec3> = points.iter().map(|&p| frame.apply(p)).collect();
-    let candidates = prefilter(&white)?;
+    let candidates = prefilter(&white);
     let parry_points: Vec<ParryVector> = candidates
         .iter()
         .map(|&i| crate::to_parry(white[i]))
@@ -210,21 +218,24 @@ impl Whitening {
 }
 
 /// Akl–Toussaint: the indices of the points that may be hull vertices (all
-/// but those strictly inside the hull of the extremes in 26 directions).
-fn prefilter(white: &[DVec3]) -> Result<Vec<usize>, InertiaError> {
+/// but those strictly inside the hull of the extremes in [`DIRECTIONS`]
+/// directions, which the face walk of [`climb`] tests in about √F steps).
+fn prefilter(white: &[DVec3]) -> Vec<usize> {
     let all = || (0..white.len()).collect::<Vec<_>>();
-    if white.len() < 1000 {
-        return Ok(all());
+    if white.len() < 4 * DIRECTIONS {
+        return all();
     }
-    let mut extremes: Vec<usize> = Vec::with_capacity(26);
-    for d in directions() {
-        let (i, _) = white
-            .iter()
-            .enumerate()
-            .map(|(i, p)| (i, d.dot(*p)))
-            .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
-        extremes.push(i);
+    let directions = directions();
+    let mut best = vec![(0usize, f64::NEG_INFINITY); directions.len()];
+    for (i, p) in white.iter().enumerate() {
+        for (b, d) in best.iter_mut().zip(&directions) {
+            let v = d.dot(*p);
+            if v > b.1 {
+                *b = (i, v);
+            }
+        }
     }
+    let mut extremes: Vec<usize> = best.iter().map(|b| b.0).collect();
     extremes.sort_unstable();
     extremes.dedup();
     let pts: Vec<ParryVector> = extremes
@@ -232,51 +243,143 @@ fn prefilter(white: &[DVec3]) -> Result<Vec<usize>, InertiaError> {
         .map(|&i| crate::to_parry(white[i]))
         .collect();
     let Ok((hp, tris)) = parry3d_f64::transformation::try_convex_hull(&pts) else {
-        return Ok(all());
+        return all();
     };
     let hp: Vec<DVec3> = hp.into_iter().map(crate::from_parry).collect();
-    let mut planes = Vec::with_capacity(tris.len());
-    for t in &tris {
-        let [a, b, c] = t.map(|i| hp[i as usize]);
-        let n = (b - a).cross(c - a);
-        let len = n.length();
-        if not_above(len, 1e-12) {
-            continue;
-        }
-        let n = n / len;
-        planes.push((n, n.dot(a)));
-    }
-    // The filter polytope must be a solid around the origin to mean anything.
-    if planes.len() < 4
-        || planes
-            .iter()
-            .any(|&(_, off)| not_above(off, PREFILTER_MARGIN))
+    let Ok(neighbours) = face_graph(&tris) else {
+        return all();
+    };
+    let planes = planes(&hp, &tris, DVec3::ZERO);
+    // The filter polytope must be a convex solid around the origin (so the
+    // walk finds the farthest face) to mean anything.
+    let nearest = planes.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+    if not_above(nearest, PREFILTER_MARGIN)
+        || !locally_convex(&hp, &tris, &neighbours, &planes, DVec3::ZERO)
     {
-        return Ok(all());
+        return all();
     }
-    Ok((0..white.len())
+    let mut starts = vec![0; CELLS];
+    (0..white.len())
         .filter(|&i| {
-            planes
-                .iter()
-                .any(|&(n, off)| n.dot(white[i]) - off > -PREFILTER_MARGIN)
+            let p = white[i];
+            let ratio = |k: usize| {
+                let (n, off) = planes[k];
+                n.dot(p) / off
+            };
+            let start = &mut starts[cell(p)];
+            *start = climb(*start, &neighbours, &ratio);
+            // Every plane at least `nearest · (1 − max ratio)` away.
+            nearest * (1.0 - ratio(*start)) <= PREFILTER_MARGIN
         })
-        .collect())
+        .collect()
 }
 
-/// The 26 directions of `{-1, 0, 1}³ \ {0}`.
-fn directions() -> impl Iterator<Item = DVec3> {
-    (0..27).filter(|&k| k != 13).map(|k| {
-        DVec3::new(
-            (k % 3) as f64 - 1.0,
-            ((k / 3) % 3) as f64 - 1.0,
-            (k / 9) as f64 - 1.0,
-        )
+/// Cells of [`cell`]: 6 cube faces of 16 × 16.
+const CELLS: usize = 6 * 256;
+
+/// The cell of the direction of `p` on a cube map, so that each face walk
+/// starts where the last walk in that direction ended.
+fn cell(p: DVec3) -> usize {
+    let a = p.abs();
+    let (axis, u, v, w) = if a.x >= a.y && a.x >= a.z {
+        (0, p.y, p.z, p.x)
+    } else if a.y >= a.z {
+        (1, p.z, p.x, p.y)
+    } else {
+        (2, p.x, p.y, p.z)
+    };
+    let side = usize::from(w < 0.0);
+    let m = w.abs();
+    let bin = |t: f64| {
+        let b = ((t / m + 1.0) * 8.0) as usize; // NaN and 0/0 give 0
+        b.min(15)
+    };
+    (2 * axis + side) * 256 + bin(u) * 16 + bin(v)
+}
+
+/// Every edge convex: the far corner of each neighbouring triangle is on
+/// the inner side of the triangle's plane (within the containment tolerance).
+fn locally_convex(
+    points: &[DVec3],
+    triangles: &[[u32; 3]],
+    neighbours: &[[usize; 3]],
+    planes: &[(DVec3, f64)],
+    c: DVec3,
+) -> bool {
+    triangles.iter().enumerate().all(|(k, t)| {
+        let (n, off) = planes[k];
+        neighbours[k].iter().enumerate().all(|(e, &g)| {
+            let far = triangles[g]
+                .iter()
+                .find(|&&i| i != t[e] && i != t[(e + 1) % 3])
+                .map_or(c, |&i| points[i as usize]);
+            n.dot(far - c) - off <= CONTAIN_TOLERANCE
+        })
     })
+}
+
+/// How many directions the prefilter takes extremes in.
+const DIRECTIONS: usize = 256;
+
+/// [`DIRECTIONS`] directions spread evenly over the sphere (a Fibonacci lattice).
+fn directions() -> Vec<DVec3> {
+    let golden = core::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..DIRECTIONS)
+        .map(|i| {
+            let z = 1.0 - 2.0 * (i as f64 + 0.5) / DIRECTIONS as f64;
+            let r = (1.0 - z * z).sqrt();
+            let t = golden * i as f64;
+            DVec3::new(r * t.cos(), r * t.sin(), z)
+        })
+        .collect()
+}
+
+/// The face across each edge of each triangle of a closed surface in which
+/// every edge is used once in each direction, or where that fails.
+fn face_graph(triangles: &[[u32; 3]]) -> Result<Vec<[usize; 3]>, String> {
+    let mut edge_face: HashMap<(u32, u32), usize> = HashMap::with_capacity(3 * triangles.len());
+    for (k, t) in triangles.iter().enumerate() {
+        for e in 0..3 {
+            let (a, b) = (t[e], t[(e + 1) % 3]);
+            if a == b || edge_face.insert((a, b), k).is_some() {
+                return Err(format!("triangle {k} repeats an edge or a vertex"));
+            }
+        }
+    }
+    triangles
+        .iter()
+        .map(|t| {
+            let mut across = [0; 3];
+            for e in 0..3 {
+                let (a, b) = (t[e], t[(e + 1) % 3]);
+                across[e] = *edge_face
+                    .get(&(b, a))
+                    .ok_or_else(|| format!("the surface is open at edge {a}-{b}"))?;
+            }
+            Ok(across)
+        })
+        .collect()
+}
+
+/// Each triangle's unit normal and its distance from `c` (zero normal for a
+/// triangle without area).
+fn planes(points: &[DVec3], triangles: &[[u32; 3]], c: DVec3) -> Vec<(DVec3, f64)> {
+    triangles
+        .iter()
+        .map(|t| {
+            let [a, b, d] = t.map(|i| points[i as usize] - c);
+            let n = (b - a).cross(d - a);
+            let len = n.length();
+            let n = if len > 0.0 { n / len } else { DVec3::ZERO };
+            (n, n.dot(a))
+        })
+        .collect()
 }
 
 /// Checks a hull in whitened coordinates: closed and consistently wound,
 /// of sphere topology, outward, convex at every edge, and containing every
-/// candidate point.
+/// candidate point. The points the prefilter dropped lie inside its
+/// (checked convex) polytope of candidates, so inside the hull too.
 fn check_hull(
     hull: &[DVec3],
     triangles: &[[u32; 3]],
@@ -288,24 +391,7 @@ fn check_hull(
         return Err(format!("{f} triangles cannot close a solid"));
     }
     // Every directed edge once, its reverse once.
-    let mut edge_face: HashMap<(u32, u32), usize> = HashMap::with_capacity(3 * f);
-    for (k, t) in triangles.iter().enumerate() {
-        for e in 0..3 {
-            let (a, b) = (t[e], t[(e + 1) % 3]);
-            if a == b || edge_face.insert((a, b), k).is_some() {
-                return Err(format!("triangle {k} repeats an edge or a vertex"));
-            }
-        }
-    }
-    let mut neighbours = vec![[0usize; 3]; f];
-    for (k, t) in triangles.iter().enumerate() {
-        for e in 0..3 {
-            let (a, b) = (t[e], t[(e + 1) % 3]);
-            neighbours[k][e] = *edge_face
-                .get(&(b, a))
-                .ok_or_else(|| format!("the surface is open at edge {a}-{b}"))?;
-        }
-    }
+    let neighbours = face_graph(triangles)?;
     let used = {
         let mut used = vec![false; hull.len()];
         triangles
@@ -321,35 +407,23 @@ fn check_hull(
         ));
     }
     let c = hull.iter().fold(DVec3::ZERO, |s, &p| s + p) / hull.len() as f64;
-    let mut volume = 0.0;
-    let mut planes = Vec::with_capacity(f);
-    for t in triangles {
-        let [a, b, d] = t.map(|i| hull[i as usize] - c);
-        let n = (b - a).cross(d - a);
-        volume += a.dot(b.cross(d)) / 6.0;
-        let len = n.length();
-        let n = if len > 0.0 { n / len } else { DVec3::ZERO };
-        planes.push((n, n.dot(a)));
-    }
+    let volume: f64 = triangles
+        .iter()
+        .map(|t| {
+            let [a, b, d] = t.map(|i| hull[i as usize] - c);
+            a.dot(b.cross(d)) / 6.0
+        })
+        .sum();
+    let planes = planes(hull, triangles, c);
     if not_above(volume, 0.0) {
         return Err(format!("the surface is inside out (volume {volume:e})"));
     }
-    // Convex at every edge: the far corner of each neighbour is below the plane.
-    for (k, t) in triangles.iter().enumerate() {
-        let (n, off) = planes[k];
-        for (e, &g) in neighbours[k].iter().enumerate() {
-            let far = triangles[g]
-                .iter()
-                .find(|&&i| i != t[e] && i != t[(e + 1) % 3])
-                .map_or(c, |&i| hull[i as usize]);
-            if n.dot(far - c) - off > CONTAIN_TOLERANCE {
-                return Err(format!("the surface is not convex at triangle {k}"));
-            }
-        }
+    if !locally_convex(hull, triangles, &neighbours, &planes, c) {
+        return Err("the surface is not convex at every edge".into());
     }
     // Containment: a walk to the face of largest n·(p − c)/off.
     let reach = planes.iter().map(|p| p.1).fold(0.0_f64, f64::max);
-    let mut start = 0;
+    let mut starts = vec![0; CELLS];
     for &i in candidates {
         let p = white[i] - c;
         let ratio = |k: usize| {
@@ -360,8 +434,9 @@ fn check_hull(
                 f64::NEG_INFINITY
             }
         };
-        let best = climb(start, &neighbours, &ratio);
-        start = best;
+        let start = &mut starts[cell(p)];
+        let best = climb(*start, &neighbours, &ratio);
+        *start = best;
         let excess = (ratio(best) - 1.0) * reach;
         if excess.is_nan() || excess > CONTAIN_TOLERANCE {
             return Err(format!(
@@ -493,7 +568,7 @@ mod tests {
             let w = Whitening::of(&points).unwrap();
             points.iter().map(|&p| w.apply(p)).collect()
         };
-        let kept = prefilter(&white).unwrap();
+        let kept = prefilter(&white);
         assert!(kept.len() < points.len() / 2, "{}", kept.len());
         let hull = hull_of(points.clone()).unwrap();
         // Brute-force containment against every face, in input coordinates.

@@ -79,7 +79,7 @@ pub enum InertiaError {
         at.x, at.y, at.z,
         match weld_gap {
             Some(g) => format!("; every boundary vertex lies within {g:.2e} of another boundary vertex (cracks rather than holes)"),
-            None => "; it has holes and encloses no volume".to_owned(),
+            None => "; it encloses no volume".to_owned(),
         }
     )]
     OpenMesh {

@@ -102,6 +102,31 @@ def run_trimesh(path):
     return result, None
 
 
+def raw_signed_volume(path):
+    """The divergence-theorem volume of the file's triangles as stored (no
+    merging, no repair): an independent check where trimesh declines. OBJ
+    is read here (`v` and fan-triangulated `f` lines), STL by trimesh."""
+    if path.lower().endswith(".obj"):
+        vs, total = [], 0.0
+        with open(path, errors="replace") as f:
+            for line in f:
+                w = line.split()
+                if not w:
+                    continue
+                if w[0] == "v":
+                    vs.append(np.array([float(x) for x in w[1:4]]))
+                elif w[0] == "f" and len(w) >= 4:
+                    idx = [int(c.split("/")[0]) for c in w[1:]]
+                    idx = [i - 1 if i > 0 else len(vs) + i for i in idx]
+                    for j in range(1, len(idx) - 1):
+                        a, b, c = vs[idx[0]], vs[idx[j]], vs[idx[j + 1]]
+                        total += float(np.dot(a, np.cross(b, c)))
+        return total / 6.0
+    m = trimesh.load(path, force="mesh", process=False)
+    v, f = m.vertices, m.faces
+    return float(np.einsum("ij,ij->i", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]])).sum() / 6.0)
+
+
 def run_mujoco(path):
     if mujoco is None:
         return None, "not installed"
@@ -163,6 +188,7 @@ def main():
     refused_all = collections.Counter()
     refused_others = collections.Counter()
     only_kreisel = only_kreisel_mj = 0
+    only_raw = []  # kreisel vs the raw signed volume where trimesh declines
     mj_cmp = []  # (mass, com, inertia) relative differences, one body only
     for path in files:
         k, k_err = run_kreisel(args.kreisel, path)
@@ -208,6 +234,9 @@ def main():
                         worst[key] = (val, path)
         elif k is not None:
             only_kreisel += 1
+            d = abs(k["mass"] - abs(raw_signed_volume(path))) / k["mass"]
+            d = float("inf") if d != d else d
+            only_raw.append((d, path, [w for w in k["warnings"] if "implausible" not in w]))
         if k is not None and mj is not None and k["bodies"] == 1 and t is not None:
             only_kreisel_mj += not t_volume
             diffs = (
@@ -238,6 +267,20 @@ def main():
         v, p = worst[key]
         print("  %-8s %.3g  %s" % (key, v, os.path.relpath(p, dirs[0]) if p else ""))
     print("kreisel accepts, trimesh (merged) not is_volume: %d" % only_kreisel)
+    if only_raw:
+        kinds = collections.Counter(
+            "non-manifold" if any("shared by more" in w for w in ws) else
+            "welded" if any("welded" in w for w in ws) else
+            "degenerate" if any("degenerate" in w for w in ws) else
+            "repaired winding" if any("flipped" in w or "inside-out" in w for w in ws) else "none"
+            for _, _, ws in only_raw)
+        print("  kreisel's warning on them: %s" % dict(kinds))
+        off = sorted(only_raw, key=lambda x: -x[0])
+        print("  mass vs the raw signed volume of the file's triangles: max %.3g, > 1e-6 on %d"
+              % (off[0][0], sum(d > 1e-6 for d, _, _ in off)))
+        for d, p, ws in off[: args.show]:
+            if d > 1e-6:
+                print("    %s %.3g %s" % (os.path.relpath(p, dirs[0]), d, "; ".join(w[:90] for w in ws)))
     print("kreisel refusals by cause (all %d):" % sum(refused_all.values()))
     for c, count in refused_all.most_common():
         print("  %4d  %s" % (count, c))

@@ -20,11 +20,7 @@ mod in_process;
 mod mutate;
 mod through_cli;
 
-/// The fuzz targets' checks (`fuzz/src/lib.rs`), with the CLI's scene and
-/// convert parsers compiled in by path.
+/// The fuzz targets' checks (`fuzz/src/lib.rs`, which calls the CLI's
+/// library for the scene and convert parsers).
 #[path = "../../../../fuzz/src/lib.rs"]
 mod targets;
-
-// The CLI sources compiled into `targets` name each other as `crate::error`,
-// `crate::numbers`, ... as in the binary: make those paths resolve here.
-use targets::{atomic_file, convert, error, numbers, representation};
