@@ -39,7 +39,7 @@ Physics and conventions (kreisel's, see crates/dynamics/src/lagrange_top)
   turning points.
 * Every input is an f64; the comment lines give it with repr(float).
 * Fast tops (`python3 tests/data/gen/lagrange_top.py fast`, a few seconds):
-  tests/data/lagrange_top/fast_tops.csv holds, for three families of tops at
+  tests/data/lagrange_top/fast_tops.csv holds, for five families of tops at
   psi'0 = 1e3, 1e5, 1e7, 1e10, 1e15 rad/s, the roots, u2 - u1, theta_min,
   theta_max, the nutation period and the mean precession rate by the same
   polyroots + quadrature as above (no trajectory: a fast top would need
@@ -381,7 +381,11 @@ FAST_FAMILIES = [
     ("precessing", (0.3, 0.1, 2.0), (0.5, 0.0, None),
      "phi'0 = 1.5 x the slow precession rate: no loops"),
     ("kicked", (1.25, 0.5, -1.0), (2.5, 0.3, 0.0),
-     "hanging (Mgl < 0), theta'0 != 0: phi' swings +-0.1 rad/s about a tiny mean"),
+     "hanging (Mgl < 0), theta'0 != 0: phi' swings +-0.5 rad/s about a tiny mean"),
+    ("kicked_upright", (1.25, 0.5, 1.0), (0.5, 0.3, 0.0),
+     "upright (Mgl > 0), theta'0 != 0: phi' swings +-0.6 rad/s about a tiny mean"),
+    ("kicked_precessing", (0.3, 0.1, 2.0), (0.5, 0.3, None),
+     "phi'0 = 1.5 x the slow precession rate and theta'0 != 0: loops about a tiny mean"),
 ]
 FAST_SPINS = [1e3, 1e5, 1e7, 1e10, 1e15]
 

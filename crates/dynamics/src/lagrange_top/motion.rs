@@ -1,5 +1,6 @@
 //! The closed-form motion: `u = cos θ` by `sn²`, φ and ψ by Π.
 
+use super::centre::centre_r_from_cubic;
 use super::roots::{ShiftedCubic, polish_pole_distance};
 use super::third_kind::{ThirdKind, complete_k};
 use super::{LagrangeTop, LagrangeTopInitial};
@@ -85,6 +86,13 @@ pub struct LagrangeTopMotion {
     /// of the terms summed (its rounding scale).
     pub(super) r1: (f64, f64),
     pub(super) r2: (f64, f64),
+    /// `r_c = b − a u_c` at the band centre `u_c = (u₁ + u₂)/2`, formed the
+    /// better of two ways (`centre` module docs), with its rounding scale.
+    pub(super) rc: (f64, f64),
+    /// The parameter `m` of `sn²` (accurate also where `1 − mc` is not).
+    pub(super) m: f64,
+    /// `mc = 1 − m`, formed directly.
+    pub(super) mc: f64,
     /// The mean slopes of φ and ψ in t, without the partial fractions'
     /// `∓a/2` (module docs of `third_kind`): φ(t) = φ₀ + slope t + rests.
     pub(super) phi_slope: f64,
@@ -245,6 +253,16 @@ impl LagrangeTopMotion {
         };
         let r1 = better((b0, -a * tp.w1), (bpa, -a * one_plus_u1));
         let r2 = better((b0, -a * tp.w2), (bma, a * one_minus_u2));
+        let rc = {
+            let half = ((r1.0 + r2.0) / 2.0, (r1.1 + r2.1) / 2.0);
+            let w_sum = (cubic.c1 + beta * cubic.c0 / tp.g) / tp.g;
+            let from_cubic = centre_r_from_cubic(a, beta, u0, s2, a0, b0, cubic.c0, tp.g, w_sum);
+            if from_cubic.0.is_finite() && from_cubic.1 < half.1 {
+                from_cubic
+            } else {
+                half
+            }
+        };
         let sigma = if beta >= 0.0 { 1.0 } else { -1.0 };
         let (wb, wo) = if sigma > 0.0 {
             (tp.w1, tp.w2)
@@ -279,6 +297,9 @@ impl LagrangeTopMotion {
             u0,
             r1,
             r2,
+            rc,
+            m,
+            mc,
             phi_slope: 0.0,
             psi_slope: 0.0,
             w1: tp.w1,
