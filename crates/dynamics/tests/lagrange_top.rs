@@ -608,7 +608,9 @@ fn fast_tops() -> Vec<FastTop> {
 /// the same 1e-12 (the turning-point form lost ~1e-16 · swing/mean: 5.5e-2
 /// at ψ̇₀ = 1e15). φ(T) − φ(0) from `euler_at` still sums the oscillating
 /// parts of φ, so for them it is held to f64 rounding of the swing,
-/// 4e-16 · max|φ̇|/|⟨φ̇⟩| (max|φ̇| ≈ θ̇₀/sin θ₀).
+/// 4e-16 · max|φ̇|/|⟨φ̇⟩| (max|φ̇| ≈ θ̇₀/sin θ₀). The single
+/// `third_root_near_pole` row (slow, hanging, u₃ just below −1) once had
+/// 1 + u₁ off by 2e-12 (θ_max 6e-13, precession 1.2e-12).
 #[test]
 fn fast_tops_keep_full_precision() {
     let rel = |x: f64, y: f64| (x - y).abs() / y.abs();

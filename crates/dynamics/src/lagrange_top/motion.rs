@@ -216,27 +216,45 @@ impl LagrangeTopMotion {
             tp.w1 = -one_plus_u0;
         }
         // 1 − u₂ and 1 + u₁ from f(±1) = −(b ∓ a)² = the factorised cubic
-        // at the pole (no difference of nearly equal numbers), polished.
+        // at the pole (no difference of nearly equal numbers near the pole),
+        // polished; unless its factor β(u₃ ∓ 1) = g ∓ β(1 ∓ u₀) cancels
+        // worse than the plain `(1 ∓ u₀) ∓ w` (a third root just beyond the
+        // pole: by more than 10⁻¹² once).
+        let pole_distance = |b_pole: f64, near: f64, far_w: f64, g_pole: f64, direct: f64| {
+            let by_product = b_pole * b_pole / ((near + far_w) * (tp.g + g_pole));
+            let cond_product = (near.abs() + far_w.abs()) / (near + far_w).abs()
+                + (tp.g.abs() + g_pole.abs()) / (tp.g + g_pole).abs();
+            let cond_direct = (near.abs() + (direct - near).abs()) / direct.abs();
+            // (a NaN condition, 0/0 at the pole, keeps the product)
+            let product_worse = cond_product > 4.0 * cond_direct;
+            if b_pole != 0.0 && by_product.is_finite() && by_product > 0.0 && !product_worse {
+                by_product
+            } else {
+                direct.max(0.0)
+            }
+        };
         let one_minus_u2 = if through_top {
             0.0
         } else {
-            let by_product = bma * bma / ((one_minus_u0 - tp.w1) * (tp.g - beta * one_minus_u0));
-            let v0 = if bma != 0.0 && by_product.is_finite() && by_product > 0.0 {
-                by_product
-            } else {
-                (one_minus_u0 - tp.w2).max(0.0)
-            };
+            let v0 = pole_distance(
+                bma,
+                one_minus_u0,
+                -tp.w1,
+                -beta * one_minus_u0,
+                one_minus_u0 - tp.w2,
+            );
             polish_pole_distance(v0, alpha_minus_beta, beta, bma, a)
         };
         let one_plus_u1 = if through_bottom {
             0.0
         } else {
-            let by_product = bpa * bpa / ((one_plus_u0 + tp.w2) * (tp.g + beta * one_plus_u0));
-            let v0 = if bpa != 0.0 && by_product.is_finite() && by_product > 0.0 {
-                by_product
-            } else {
-                (one_plus_u0 + tp.w1).max(0.0)
-            };
+            let v0 = pole_distance(
+                bpa,
+                one_plus_u0,
+                tp.w2,
+                beta * one_plus_u0,
+                one_plus_u0 + tp.w1,
+            );
             polish_pole_distance(v0, alpha_plus_beta, -beta, bpa, -a)
         };
         let delta = tp.w2 - tp.w1;
