@@ -603,9 +603,14 @@ fn fast_tops() -> Vec<FastTop> {
 /// limits, nutation period and mean precession rate to 1e-12 relative,
 /// whatever the spin (the partial fractions of φ̇ once cancelled to
 /// ~β/a: `kreisel top --psi-dot0 1e10` reported a mean precession of 0).
-/// The `kicked` family swings φ̇ by ±0.5 rad/s about a mean of −2/ψ̇₀; its
-/// mean is held to f64 rounding of that swing, 4e-16 · max|φ̇| (the
-/// turning-point formulas carry it; see the report).
+/// The `kicked*` families swing φ̇ by ±0.5 rad/s about a mean of ~2/ψ̇₀
+/// (loops); their mean, by the expansion about the band centre, is held to
+/// the same 1e-12 (the turning-point form lost ~1e-16 · swing/mean: 5.5e-2
+/// at ψ̇₀ = 1e15). φ(T) − φ(0) from `euler_at` still sums the oscillating
+/// parts of φ, so for them it is held to f64 rounding of the swing,
+/// 4e-16 · max|φ̇|/|⟨φ̇⟩| (max|φ̇| ≈ θ̇₀/sin θ₀). The single
+/// `third_root_near_pole` row (slow, hanging, u₃ just below −1) once had
+/// 1 + u₁ off by 2e-12 (θ_max 6e-13, precession 1.2e-12).
 #[test]
 fn fast_tops_keep_full_precision() {
     let rel = |x: f64, y: f64| (x - y).abs() / y.abs();
@@ -634,19 +639,23 @@ fn fast_tops_keep_full_precision() {
         assert!(dth <= 1e-15, "{name}: theta limits");
         assert!(dperiod <= 1e-12, "{name}: period {period} vs {}", r.period);
         assert_eq!(m.motion(), Some(r.kind), "{name}");
-        let tol = if r.family == "kicked" {
-            // |φ̇| ≤ |θ̇₀|/sin θ₀ ≈ 0.5 rad/s on this band
-            4e-16 * 0.5 / r.precession.abs()
-        } else {
-            1e-12
+        // max|φ̇| on the band: 0.5 rad/s for `kicked`; |θ̇₀|/sin θ₀ ≈ 0.63 for
+        // the others, which land a few ulps of φ off (measured 3.3ε · swing/mean)
+        let phi_tol = match r.family.as_str() {
+            "kicked" => 4e-16 * 0.5 / r.precession.abs(),
+            f if f.starts_with("kicked") => {
+                let swing = r.initial.theta_dot / r.initial.theta.sin();
+                4.0 * f64::EPSILON * swing / r.precession.abs()
+            }
+            _ => 1e-12,
         };
         assert!(
-            dprec <= tol,
+            dprec <= 1e-12,
             "{name}: precession {prec} vs {}",
             r.precession
         );
         assert!(
-            dphi_rel <= tol.max(1e-12),
+            dphi_rel <= phi_tol.max(1e-12),
             "{name}: phi(T) {dphi} over {period}"
         );
     }

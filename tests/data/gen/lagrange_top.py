@@ -39,12 +39,13 @@ Physics and conventions (kreisel's, see crates/dynamics/src/lagrange_top)
   turning points.
 * Every input is an f64; the comment lines give it with repr(float).
 * Fast tops (`python3 tests/data/gen/lagrange_top.py fast`, a few seconds):
-  tests/data/lagrange_top/fast_tops.csv holds, for three families of tops at
+  tests/data/lagrange_top/fast_tops.csv holds, for five families of tops at
   psi'0 = 1e3, 1e5, 1e7, 1e10, 1e15 rad/s, the roots, u2 - u1, theta_min,
   theta_max, the nutation period and the mean precession rate by the same
   polyroots + quadrature as above (no trajectory: a fast top would need
   ~psi'0 Taylor steps), computed at mp.dps = 120 and again at 160; the script
-  asserts the two agree to 1e-60 relative. The band u2 - u1 is ~1e-29 at
+  asserts the two agree to 1e-60 relative. FAST_EXTRA adds single
+  regression rows (any spin) to the same file. The band u2 - u1 is ~1e-29 at
   psi'0 = 1e15, so the roots need ~30 digits more than the output.
 """
 
@@ -381,13 +382,24 @@ FAST_FAMILIES = [
     ("precessing", (0.3, 0.1, 2.0), (0.5, 0.0, None),
      "phi'0 = 1.5 x the slow precession rate: no loops"),
     ("kicked", (1.25, 0.5, -1.0), (2.5, 0.3, 0.0),
-     "hanging (Mgl < 0), theta'0 != 0: phi' swings +-0.1 rad/s about a tiny mean"),
+     "hanging (Mgl < 0), theta'0 != 0: phi' swings +-0.5 rad/s about a tiny mean"),
+    ("kicked_upright", (1.25, 0.5, 1.0), (0.5, 0.3, 0.0),
+     "upright (Mgl > 0), theta'0 != 0: phi' swings +-0.6 rad/s about a tiny mean"),
+    ("kicked_precessing", (0.3, 0.1, 2.0), (0.5, 0.3, None),
+     "phi'0 = 1.5 x the slow precession rate and theta'0 != 0: loops about a tiny mean"),
 ]
 FAST_SPINS = [1e3, 1e5, 1e7, 1e10, 1e15]
+# Single regression rows (not fast), written to the same file: name,
+# (I1, I3, Mgl), (theta0, theta'0, phi'0), psi'0, description.
+FAST_EXTRA = [
+    ("third_root_near_pole", (1.8359669279120632, 0.7906660058757264, -0.6955873852709897),
+     (0.5462055191371211, 0.0016225004273098967, 0.4772982490491144), -0.6035043920999813,
+     "hanging, u3 = -1.00028 just below the pole: 1 + u1 from the factorised cubic cancelled (2e-12)"),
+]
 
 
 def fast_scenario(family, psd):
-    name, (i1, i3, mgl), (th, thd, phd), _ = family
+    name, (i1, i3, mgl), (th, thd, phd) = family[:3]
     if phd is None:
         phd = float(1.5 * mgl / (i3 * psd))
     return (name, "", (i1, i3, mgl), (0.0, th, 0.0, phd, thd, psd), 0.0)
@@ -408,20 +420,22 @@ def fast():
              "# fast tops: roots, u2 - u1, theta limits, nutation period and mean precession rate at mp.dps = 120,",
              "# checked against mp.dps = 160 (agreement to 1e-60 relative asserted); 30 significant digits",
              "# families: " + "; ".join(f"{f[0]}: {f[3]}" for f in FAST_FAMILIES),
+             "# single rows: " + "; ".join(f"{f[0]}: {f[4]}" for f in FAST_EXTRA),
              "family,i1,i3,mgl,theta0,theta_dot0,phi_dot0,psi_dot0,u1,u2,u3,gap,theta_min,theta_max,period,precession,kind"]
-    for family in FAST_FAMILIES:
-        for psd in FAST_SPINS:
-            sc = fast_scenario(family, psd)
-            lo, kind = fast_row(sc, 120)
-            hi, kind_hi = fast_row(sc, 160)
-            assert kind == kind_hi
-            with mp.workdps(160):
-                for x, y in zip(lo, hi):
-                    assert abs(x - y) <= mpf(10) ** -60 * abs(y), (sc, x, y)
-            _, _, (i1, i3, mgl), (_, th, _, phd, thd, psd), _ = sc
-            inputs = [repr(v) for v in (i1, i3, mgl, th, thd, phd, psd)]
-            lines.append(",".join([family[0]] + inputs + [mpmath.nstr(v, 30, min_fixed=0, max_fixed=0) for v in hi] + [kind]))
-            print(lines[-1], flush=True)
+    jobs = [(family, psd) for family in FAST_FAMILIES for psd in FAST_SPINS]
+    jobs += [(extra, extra[3]) for extra in FAST_EXTRA]
+    for family, psd in jobs:
+        sc = fast_scenario(family, psd)
+        lo, kind = fast_row(sc, 120)
+        hi, kind_hi = fast_row(sc, 160)
+        assert kind == kind_hi
+        with mp.workdps(160):
+            for x, y in zip(lo, hi):
+                assert abs(x - y) <= mpf(10) ** -60 * abs(y), (sc, x, y)
+        _, _, (i1, i3, mgl), (_, th, _, phd, thd, psd), _ = sc
+        inputs = [repr(v) for v in (i1, i3, mgl, th, thd, phd, psd)]
+        lines.append(",".join([family[0]] + inputs + [mpmath.nstr(v, 30, min_fixed=0, max_fixed=0) for v in hi] + [kind]))
+        print(lines[-1], flush=True)
     with open(path, "w") as fh:
         fh.write("\n".join(lines) + "\n")
 

@@ -1,6 +1,7 @@
 //! The constants, turning points, period and kind of a [`LagrangeTopMotion`].
 
 use super::motion::{Kind, LagrangeTopMotion};
+use super::third_kind::ThirdKind;
 use super::{LagrangeTop, TopMotionKind};
 
 /// Relative tolerance on `b − a uᵢ` for [`TopMotionKind::Cusps`] when the
@@ -247,10 +248,20 @@ impl LagrangeTopMotion {
     /// Evaluated in the second form: the partial fractions `½(b ∓ a)/(1 ∓ u)`
     /// are each ≈ ∓a/2 and cancel to ~Mgl/(I₃ω₃) for a fast top (at
     /// ψ̇₀ = 10¹⁰ rad/s to nothing), while their slopes `rᵢ/(2(1 ∓ uᵢ))` and
-    /// the rests `Rᵢ = (Π(nᵢ | m) − K)/…` (Carlson R_J) carry no `a`. The
-    /// result is accurate to rounding of the largest `|φ̇|` on the band, so to
-    /// ~10⁻¹⁶ relative unless φ̇ swings far wider than its mean (a fast top
-    /// kicked in θ̇: relative error ~10⁻¹⁶ · max|φ̇| / |⟨φ̇⟩|).
+    /// the rests `Rᵢ = (Π(nᵢ | m) − K)/…` (Carlson R_J) carry no `a`. That
+    /// form is accurate to rounding of the largest `|φ̇|` on the band, so it
+    /// loses ~10⁻¹⁶ · max|φ̇| / |⟨φ̇⟩| when φ̇ swings far wider than its mean
+    /// (a fast top kicked in θ̇: 10⁻² at ψ̇₀ = 10¹⁵ rad/s). Where its error
+    /// estimate is smaller, the mean is instead expanded about the band
+    /// centre `u_c = (u₁ + u₂)/2`, where the swing enters only squared:
+    ///
+    /// ```text
+    /// ⟨φ̇⟩ = ⟨r_c h(u) − a h_c δ² (u + u_c) h(u)⟩ − a h_c ⟨δ⟩,  h = 1/(1 − u²),  δ = u − u_c
+    /// ```
+    ///
+    /// (`r_c = b − a u_c` without cancellation, the average by the
+    /// trapezoidal rule over a period, `⟨δ⟩` by a series in m), which holds
+    /// such a top to ~10⁻¹⁶ relative at any spin.
     ///
     /// The initial φ̇ for steady precession; `None` where
     /// [`nutation_period`](Self::nutation_period) is `None`. Through a
@@ -270,14 +281,27 @@ impl LagrangeTopMotion {
         if self.kind == Kind::Steady {
             return Some(self.init.phi_dot);
         }
-        let mut rests = 0.0;
-        if let Some((tk, _)) = self.minus.as_ref() {
-            rests += 0.5 * self.bma * tk.per_period();
+        let rest = |part: &Option<(ThirdKind, f64)>, coef: f64| {
+            part.as_ref()
+                .map_or(0.0, |(tk, _)| 0.5 * coef * tk.per_period() / (2.0 * self.k))
+        };
+        let (rm, rp) = (rest(&self.minus, self.bma), rest(&self.plus, self.bpa));
+        let turning = self.phi_slope + rm + rp;
+        if self.minus.is_some() && self.plus.is_some() {
+            // The centre expansion where its error estimate beats the
+            // rounding of the turning-point form (ε · the terms it sums).
+            let scale = (0.5 * self.r1.0 / (self.one_minus_u2 + self.delta)).abs()
+                + (0.5 * self.r2.0 / (self.one_plus_u1 + self.delta)).abs()
+                + rm.abs()
+                + rp.abs();
+            if let Some((centre, _)) = self
+                .thin_band_mean()
+                .filter(|&(_, err)| err < f64::EPSILON * scale)
+            {
+                return Some(centre);
+            }
         }
-        if let Some((tk, _)) = self.plus.as_ref() {
-            rests += 0.5 * self.bpa * tk.per_period();
-        }
-        Some(self.phi_slope + rests / (2.0 * self.k))
+        Some(turning)
     }
 
     /// The shape of the axis' path (notes §3.11), `None` for the sleeping top

@@ -21,6 +21,7 @@
 //! *Handbook of Elliptic Integrals*, 1971), evaluated at any `t` without
 //! integrating.
 
+mod centre;
 mod classify;
 mod evaluate;
 mod motion;

@@ -1,5 +1,6 @@
 //! The closed-form motion: `u = cos θ` by `sn²`, φ and ψ by Π.
 
+use super::centre::centre_r_from_cubic;
 use super::roots::{ShiftedCubic, polish_pole_distance};
 use super::third_kind::{ThirdKind, complete_k};
 use super::{LagrangeTop, LagrangeTopInitial};
@@ -85,6 +86,13 @@ pub struct LagrangeTopMotion {
     /// of the terms summed (its rounding scale).
     pub(super) r1: (f64, f64),
     pub(super) r2: (f64, f64),
+    /// `r_c = b − a u_c` at the band centre `u_c = (u₁ + u₂)/2`, formed the
+    /// better of two ways (`centre` module docs), with its rounding scale.
+    pub(super) rc: (f64, f64),
+    /// The parameter `m` of `sn²` (accurate also where `1 − mc` is not).
+    pub(super) m: f64,
+    /// `mc = 1 − m`, formed directly.
+    pub(super) mc: f64,
     /// The mean slopes of φ and ψ in t, without the partial fractions'
     /// `∓a/2` (module docs of `third_kind`): φ(t) = φ₀ + slope t + rests.
     pub(super) phi_slope: f64,
@@ -208,27 +216,45 @@ impl LagrangeTopMotion {
             tp.w1 = -one_plus_u0;
         }
         // 1 − u₂ and 1 + u₁ from f(±1) = −(b ∓ a)² = the factorised cubic
-        // at the pole (no difference of nearly equal numbers), polished.
+        // at the pole (no difference of nearly equal numbers near the pole),
+        // polished; unless its factor β(u₃ ∓ 1) = g ∓ β(1 ∓ u₀) cancels
+        // worse than the plain `(1 ∓ u₀) ∓ w` (a third root just beyond the
+        // pole: by more than 10⁻¹² once).
+        let pole_distance = |b_pole: f64, near: f64, far_w: f64, g_pole: f64, direct: f64| {
+            let by_product = b_pole * b_pole / ((near + far_w) * (tp.g + g_pole));
+            let cond_product = (near.abs() + far_w.abs()) / (near + far_w).abs()
+                + (tp.g.abs() + g_pole.abs()) / (tp.g + g_pole).abs();
+            let cond_direct = (near.abs() + (direct - near).abs()) / direct.abs();
+            // (a NaN condition, 0/0 at the pole, keeps the product)
+            let product_worse = cond_product > 4.0 * cond_direct;
+            if b_pole != 0.0 && by_product.is_finite() && by_product > 0.0 && !product_worse {
+                by_product
+            } else {
+                direct.max(0.0)
+            }
+        };
         let one_minus_u2 = if through_top {
             0.0
         } else {
-            let by_product = bma * bma / ((one_minus_u0 - tp.w1) * (tp.g - beta * one_minus_u0));
-            let v0 = if bma != 0.0 && by_product.is_finite() && by_product > 0.0 {
-                by_product
-            } else {
-                (one_minus_u0 - tp.w2).max(0.0)
-            };
+            let v0 = pole_distance(
+                bma,
+                one_minus_u0,
+                -tp.w1,
+                -beta * one_minus_u0,
+                one_minus_u0 - tp.w2,
+            );
             polish_pole_distance(v0, alpha_minus_beta, beta, bma, a)
         };
         let one_plus_u1 = if through_bottom {
             0.0
         } else {
-            let by_product = bpa * bpa / ((one_plus_u0 + tp.w2) * (tp.g + beta * one_plus_u0));
-            let v0 = if bpa != 0.0 && by_product.is_finite() && by_product > 0.0 {
-                by_product
-            } else {
-                (one_plus_u0 + tp.w1).max(0.0)
-            };
+            let v0 = pole_distance(
+                bpa,
+                one_plus_u0,
+                tp.w2,
+                beta * one_plus_u0,
+                one_plus_u0 + tp.w1,
+            );
             polish_pole_distance(v0, alpha_plus_beta, -beta, bpa, -a)
         };
         let delta = tp.w2 - tp.w1;
@@ -245,6 +271,16 @@ impl LagrangeTopMotion {
         };
         let r1 = better((b0, -a * tp.w1), (bpa, -a * one_plus_u1));
         let r2 = better((b0, -a * tp.w2), (bma, a * one_minus_u2));
+        let rc = {
+            let half = ((r1.0 + r2.0) / 2.0, (r1.1 + r2.1) / 2.0);
+            let w_sum = (cubic.c1 + beta * cubic.c0 / tp.g) / tp.g;
+            let from_cubic = centre_r_from_cubic(a, beta, u0, s2, a0, b0, cubic.c0, tp.g, w_sum);
+            if from_cubic.0.is_finite() && from_cubic.1 < half.1 {
+                from_cubic
+            } else {
+                half
+            }
+        };
         let sigma = if beta >= 0.0 { 1.0 } else { -1.0 };
         let (wb, wo) = if sigma > 0.0 {
             (tp.w1, tp.w2)
@@ -279,6 +315,9 @@ impl LagrangeTopMotion {
             u0,
             r1,
             r2,
+            rc,
+            m,
+            mc,
             phi_slope: 0.0,
             psi_slope: 0.0,
             w1: tp.w1,
