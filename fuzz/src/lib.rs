@@ -56,8 +56,9 @@ pub fn scene_toml(bytes: &[u8], path: &Path) {
     }
 }
 
-/// The 29 representation names `kreisel convert` accepts.
-fn representations() -> Vec<Representation> {
+/// The 29 representation names `kreisel convert` accepts, in the order
+/// [`convert_lines`] picks them.
+pub fn representation_names() -> Vec<String> {
     let mut names: Vec<String> = ["quat", "quat-xyzw", "matrix", "rotvec", "axis-angle"]
         .map(String::from)
         .to_vec();
@@ -68,6 +69,11 @@ fn representations() -> Vec<Representation> {
         names.push(format!("euler:{}", seq.to_ascii_lowercase()));
     }
     names
+}
+
+/// The representations of [`representation_names`].
+fn representations() -> Vec<Representation> {
+    representation_names()
         .iter()
         .map(|n| n.parse().expect("valid representation name"))
         .collect()

@@ -93,20 +93,6 @@ pub struct Case {
     pub dir: PathBuf,
 }
 
-/// The representation names, in the order `fuzz/src/lib.rs` picks them.
-fn representation_names() -> Vec<String> {
-    let mut names: Vec<String> = ["quat", "quat-xyzw", "matrix", "rotvec", "axis-angle"]
-        .map(String::from)
-        .to_vec();
-    for seq in [
-        "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ",
-    ] {
-        names.push(format!("euler:{seq}"));
-        names.push(format!("euler:{}", seq.to_ascii_lowercase()));
-    }
-    names
-}
-
 /// Writes `input` into `dir` for `parser` (with the files a mesh scene or a
 /// glTF file may name beside it); the command line. `variant` picks the mass
 /// model of a mesh (solid, `--shell`, `--hull`).
@@ -141,7 +127,7 @@ pub fn prepare(parser: Parser, input: &[u8], variant: usize, dir: &Path) -> Case
             (vec!["simulate".to_owned(), input_name], Vec::new())
         }
         Parser::Convert => {
-            let names = representation_names();
+            let names = crate::targets::representation_names();
             let (from, to, flags, lines) = match input {
                 [a, b, c, rest @ ..] => (*a, *b, *c, rest),
                 _ => (0, 0, 0, &[][..]),
