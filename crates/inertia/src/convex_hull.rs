@@ -321,12 +321,17 @@ fn locally_convex(
 /// How many directions the prefilter takes extremes in.
 const DIRECTIONS: usize = 256;
 
-/// [`DIRECTIONS`] directions spread evenly over the sphere (a Fibonacci lattice).
+/// [`DIRECTIONS`] directions spread evenly over the sphere.
 fn directions() -> Vec<DVec3> {
+    fibonacci_sphere(DIRECTIONS)
+}
+
+/// `n` unit vectors spread evenly over the sphere (a Fibonacci lattice).
+fn fibonacci_sphere(n: usize) -> Vec<DVec3> {
     let golden = core::f64::consts::PI * (3.0 - 5f64.sqrt());
-    (0..DIRECTIONS)
+    (0..n)
         .map(|i| {
-            let z = 1.0 - 2.0 * (i as f64 + 0.5) / DIRECTIONS as f64;
+            let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
             let r = (1.0 - z * z).sqrt();
             let t = golden * i as f64;
             DVec3::new(r * t.cos(), r * t.sin(), z)
@@ -499,14 +504,9 @@ mod tests {
 
     /// `n` points on an ellipsoid of semi-axes `s` (Fibonacci lattice).
     fn ellipsoid_points(n: usize, s: DVec3) -> Vec<DVec3> {
-        let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-        (0..n)
-            .map(|i| {
-                let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
-                let r = (1.0 - z * z).sqrt();
-                let t = golden * i as f64;
-                DVec3::new(r * t.cos(), r * t.sin(), z) * s
-            })
+        super::fibonacci_sphere(n)
+            .into_iter()
+            .map(|p| p * s)
             .collect()
     }
 
