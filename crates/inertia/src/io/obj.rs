@@ -1,29 +1,40 @@
-//! Wavefront OBJ through `tobj`, behind a line-numbered pre-check.
+//! Wavefront OBJ, read in one pass by a parser of our own.
 //!
 //! Only geometry is read: `v` positions, `f` faces (any polygon, fan
-//! triangulated by `tobj`), and `o`/`g` names, which start a new body.
-//! Texture coordinates, normals, lines, points and materials are dropped
-//! before `tobj` sees the text, so a missing `.mtl` never fails a load.
+//! triangulated from its first corner), and `o`/`g` names, which start a new
+//! body. Texture coordinates, normals, lines, points, comments and materials
+//! are skipped, so a missing `.mtl` never fails a load.
 //!
-//! The pre-check validates every `v` line (three numbers) and every face
-//! index (`0` is invalid; positive indices are 1-based into the file's
-//! vertices; negative ones count back from the last vertex read so far),
-//! reporting the line number, and rewrites faces to plain absolute position
-//! indices. A face of fewer than three vertices (no area, no edges to share)
-//! is skipped with a [`LoadWarning::MalformedFaces`] on the body it belongs
-//! to, so one bad line does not lose a whole file. That also keeps `tobj` away from its unchecked texture/normal
-//! index arithmetic, which overflows (and panics in debug builds) on
-//! indices near `isize::MAX`.
-
-use std::fmt::Write as _;
+//! Why not the `tobj` crate (used here before): on a 1e6-triangle torus
+//! (`cargo run --release --example mesh_load_phases`) `tobj::load_obj_buf`
+//! alone took 935 ns per triangle (its `single_index` mode hashes every
+//! `v/vt/vn` tuple), and the line-numbered pre-check that had to rewrite the
+//! text for it another ≈ 360 ns; the budget for the whole load (issue 12) is
+//! 300 ns per triangle. This parser keeps that loader's results exactly (the
+//! differential test `tests/obj_vs_tobj.rs` compares it with `tobj` on the
+//! same text): the bodies, their names, vertices in order of first use per
+//! body, triangles, warnings and errors.
+//!
+//! Every `v` line needs three numbers and every face index is checked
+//! (`0` is invalid; positive indices are 1-based into the file's vertices;
+//! negative ones count back from the last vertex read so far), with the line
+//! number in the error. A face of fewer than three vertices (no area, no
+//! edges to share) is skipped with a [`LoadWarning::MalformedFaces`] on the
+//! body it belongs to, so one bad line does not lose a whole file. Numbers
+//! are read with the standard library's `str::parse::<f64>` (correctly
+//! rounded). What `tobj` did beyond that is kept too: a fourth `v` number
+//! `w` divides the position (`0` is an error), three more are a colour
+//! (two, or more than three, are an error), and a body's vertices must be
+//! defined before the next `o`/`g` line that ends it.
 
 use glam::DVec3;
 
 use super::{Body, LoadWarning, Source};
 use crate::InertiaError;
 
-/// The name `tobj` gives geometry before any `o`/`g` line.
-const TOBJ_UNNAMED: &str = "unnamed_object";
+/// The name of geometry before any `o`/`g` line (`tobj`'s, kept so that a
+/// group named so still joins it as before).
+const UNNAMED: &str = "unnamed_object";
 
 /// Loads one body per object/group with faces.
 pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
@@ -31,43 +42,24 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
         return Err(src.error("the file is empty"));
     }
     let text = String::from_utf8_lossy(bytes);
-    let Cleaned {
-        text: cleaned,
+    let Parsed {
+        models,
         mut skipped,
-    } = clean(&text).map_err(|r| src.error(r))?;
-    let options = tobj::LoadOptions {
-        single_index: true,
-        triangulate: true,
-        ..Default::default()
-    };
-    let (models, _materials) = tobj::load_obj_buf(&mut cleaned.as_bytes(), &options, |_| {
-        Err(tobj::LoadError::OpenFileFailed)
-    })
-    .map_err(|e| src.error(e.to_string()))?;
+    } = parse(&text).map_err(|r| src.error(r))?;
     let mut bodies = Vec::new();
     for model in models {
-        let mesh = model.mesh;
-        if mesh.indices.is_empty() {
-            continue;
-        }
-        let (positions, _) = mesh.positions.as_chunks::<3>();
-        let vertices = positions
-            .iter()
-            .map(|p| DVec3::from_array(p.map(to_f64)))
-            .collect();
-        let (faces, _) = mesh.indices.as_chunks::<3>();
-        // The skipped faces of this object/group (tobj names a model after
-        // the `o`/`g` line that started it).
+        // The skipped faces of this object/group (by name: every skipped
+        // face of a name goes to its first body).
         let (mine, rest): (Vec<_>, Vec<_>) = skipped
             .into_iter()
             .partition(|(object, _)| *object == model.name);
         skipped = rest;
-        let name = if model.name == TOBJ_UNNAMED {
+        let name = if model.name == UNNAMED {
             src.stem().to_owned()
         } else {
             model.name
         };
-        let mut body = src.body(name, vertices, faces.to_vec())?;
+        let mut body = src.body(name, model.vertices, model.triangles)?;
         if !mine.is_empty() {
             let lines = mine.into_iter().map(|(_, line)| line).collect();
             body.warnings.push(LoadWarning::MalformedFaces { lines });
@@ -94,120 +86,288 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
     Ok(bodies)
 }
 
-/// Widens `tobj`'s float type (`f64` with its `use_f64` feature, else `f32`).
-fn to_f64<T: Into<f64>>(x: T) -> f64 {
-    x.into()
+/// One object/group with faces, as read.
+struct Model {
+    /// The `o`/`g` name ([`UNNAMED`] before any).
+    name: String,
+    /// The positions its faces use, in order of first use.
+    vertices: Vec<DVec3>,
+    /// Fan-triangulated faces, indices into `vertices`.
+    triangles: Vec<[u32; 3]>,
 }
 
-/// The text `tobj` reads, and the faces left out of it.
-struct Cleaned {
-    /// `v`, `f`, `o` and `g` lines.
-    text: String,
-    /// Faces of fewer than three vertices: the `tobj` name of their object
-    /// and their 1-based line number.
+/// A whole file, read.
+struct Parsed {
+    /// The objects/groups with faces, in file order.
+    models: Vec<Model>,
+    /// Faces of fewer than three vertices: the name of their object and
+    /// their 1-based line number.
     skipped: Vec<(String, usize)>,
 }
 
-/// Keeps the `v`, `f`, `o` and `g` lines, checked, with faces rewritten to
-/// absolute 1-based position indices; faces of fewer than three vertices
-/// are left out and listed.
-fn clean(text: &str) -> Result<Cleaned, String> {
-    let total = text.lines().filter(|l| keyword(l) == Some("v")).count();
-    let mut out = String::with_capacity(text.len());
-    let mut skipped = Vec::new();
-    let mut object = TOBJ_UNNAMED.to_owned();
-    let mut seen = 0usize;
-    for (i, line) in text.lines().enumerate() {
+/// A face index that went past the vertices read so far.
+#[derive(Clone, Copy)]
+struct Forward {
+    /// 1-based line number.
+    line: usize,
+    /// The absolute 1-based index.
+    index: u64,
+}
+
+/// The parser's state between lines.
+struct Reader {
+    /// Every `v` position so far.
+    positions: Vec<DVec3>,
+    /// Colour components read so far (`v` lines with six numbers).
+    colours: usize,
+    /// The current object/group's name.
+    name: String,
+    /// Its triangles so far, as 0-based indices into `positions`
+    /// (`u32::MAX` past `u32`).
+    triangles: Vec<[u32; 3]>,
+    /// Per position, its index in the body being finished (`u32::MAX`: none).
+    local: Vec<u32>,
+    /// Bodies finished.
+    models: Vec<Model>,
+    /// Skipped short faces.
+    skipped: Vec<(String, usize)>,
+    /// Forward references, each past all earlier ones: only these can be
+    /// the first one past the file's vertex count.
+    forward: Vec<Forward>,
+    /// The first error of the structure (not of a line's syntax or index
+    /// range, which come first whatever their place in the file).
+    deferred: Option<&'static str>,
+}
+
+/// Reads the whole text, checking every `v` and `f` line.
+fn parse(text: &str) -> Result<Parsed, String> {
+    let mut r = Reader {
+        positions: Vec::new(),
+        colours: 0,
+        name: UNNAMED.to_owned(),
+        triangles: Vec::new(),
+        local: Vec::new(),
+        models: Vec::new(),
+        skipped: Vec::new(),
+        forward: Vec::new(),
+        deferred: None,
+    };
+    let mut lines = text.lines().enumerate();
+    let mut corners = Vec::new();
+    let mut failed_vertex = 0;
+    let failure = loop {
+        let Some((i, line)) = lines.next() else {
+            break None;
+        };
         let n = i + 1;
         let mut words = line.split_whitespace();
         match words.next() {
             Some("v") => {
-                check_vertex(words).map_err(|r| format!("line {n}: {r}"))?;
-                seen += 1;
-                out.push_str(line.trim());
+                if let Err(reason) = r.vertex(words) {
+                    // This line counts among the file's vertices too.
+                    failed_vertex = 1;
+                    break Some(format!("line {n}: {reason}"));
+                }
             }
             Some("f") => {
-                let start = out.len();
-                out.push('f');
-                let mut corners = 0usize;
+                corners.clear();
+                let mut bad = None;
                 for word in words {
-                    let index =
-                        face_index(word, seen, total).map_err(|r| format!("line {n}: {r}"))?;
-                    // Writing to a String cannot fail.
-                    let _ = write!(out, " {index}");
-                    corners += 1;
+                    match r.face_index(word, n) {
+                        Ok(index) => corners.push(index),
+                        Err(reason) => {
+                            bad = Some(reason);
+                            break;
+                        }
+                    }
                 }
-                if corners < 3 {
-                    out.truncate(start);
-                    skipped.push((object.clone(), n));
+                if let Some(reason) = bad {
+                    break Some(format!("line {n}: {reason}"));
+                }
+                if corners.len() < 3 {
+                    r.skipped.push((r.name.clone(), n));
                     continue;
+                }
+                let first = corners[0];
+                for pair in corners[1..].windows(2) {
+                    r.triangles.push([first, pair[0], pair[1]]);
                 }
             }
             Some(word @ ("o" | "g")) => {
-                out.push_str(line.trim());
-                object = object_name(line, word);
+                if !r.triangles.is_empty() {
+                    r.finish_model();
+                }
+                r.name = object_name(line, word);
             }
-            _ => continue,
+            _ => {}
         }
-        out.push('\n');
+    };
+    let seen = r.positions.len() as u64;
+    // The file's vertex count: those read, and those after an error line.
+    let total = seen
+        + failed_vertex
+        + lines
+            .filter(|(_, l)| l.split_whitespace().next() == Some("v"))
+            .count() as u64;
+    if let Some(f) = r.forward.iter().find(|f| f.index > total) {
+        return Err(format!(
+            "line {}: face refers to vertex {}, but the file has {total} vertices",
+            f.line, f.index
+        ));
     }
-    Ok(Cleaned { text: out, skipped })
+    if let Some(reason) = failure {
+        return Err(reason);
+    }
+    r.finish_model();
+    if let Some(reason) = r.deferred {
+        return Err(reason.to_owned());
+    }
+    Ok(Parsed {
+        models: r.models,
+        skipped: r.skipped,
+    })
 }
 
-/// The name `tobj` gives the object or group an `o`/`g` line starts: the
-/// rest of the line, trimmed (the keyword's own name when empty).
+impl Reader {
+    /// Reads a `v` line's words after the keyword: three numbers, then
+    /// optionally `w` or a colour.
+    fn vertex<'a>(&mut self, mut words: impl Iterator<Item = &'a str>) -> Result<(), String> {
+        let mut p = [0.0; 3];
+        for (axis, value) in ["x", "y", "z"].into_iter().zip(&mut p) {
+            let word = words
+                .next()
+                .ok_or_else(|| format!("vertex has no {axis} coordinate"))?;
+            *value = word
+                .parse::<f64>()
+                .map_err(|_| format!("vertex {axis} coordinate '{word}' is not a number"))?;
+        }
+        if let Some(first) = words.next() {
+            self.extra(first, words, &mut p);
+        }
+        self.positions.push(DVec3::from_array(p));
+        Ok(())
+    }
+
+    /// The words after a vertex's coordinates: `w` divides them; three are
+    /// a colour (counted: a face's vertex needs one once any has one).
+    fn extra<'a>(
+        &mut self,
+        first: &str,
+        mut words: impl Iterator<Item = &'a str>,
+        p: &mut [f64; 3],
+    ) {
+        match (words.next(), words.next()) {
+            (None, _) => match first.parse::<f64>() {
+                Err(_) => self.defer("position parse error"),
+                Ok(0.0) => self.defer("scaling (w) by zero"),
+                Ok(w) => {
+                    for x in p.iter_mut() {
+                        *x /= w;
+                    }
+                }
+            },
+            (Some(second), Some(third)) if words.next().is_none() => {
+                self.colours += [first, second, third]
+                    .into_iter()
+                    .take_while(|c| c.parse::<f64>().is_ok())
+                    .count();
+            }
+            _ => self.defer("color parse error (too many or too few components)"),
+        }
+    }
+
+    /// Records the first error of the structure.
+    fn defer(&mut self, reason: &'static str) {
+        self.deferred.get_or_insert(reason);
+    }
+
+    /// The 0-based position index of one face corner `v[/vt][/vn]` on line
+    /// `n` (`u32::MAX` when past `u32`).
+    fn face_index(&mut self, word: &str, n: usize) -> Result<u32, String> {
+        let seen = self.positions.len();
+        let v = word.split('/').next().unwrap_or(word);
+        let index: i64 = v
+            .parse()
+            .map_err(|_| format!("face vertex '{word}' is not an index"))?;
+        let absolute = match index {
+            0 => return Err(format!("face vertex '{word}': OBJ indices start at 1")),
+            i if i > 0 => i.unsigned_abs(),
+            i => (seen as u64 + 1)
+                .checked_sub(i.unsigned_abs())
+                .filter(|&a| a >= 1)
+                .ok_or_else(|| {
+                    format!(
+                        "face vertex '{word}' reaches before the first vertex \
+                         (vertices defined so far: {seen})"
+                    )
+                })?,
+        };
+        if absolute > seen as u64 && self.forward.last().is_none_or(|f| absolute > f.index) {
+            self.forward.push(Forward {
+                line: n,
+                index: absolute,
+            });
+        }
+        Ok(u32::try_from(absolute - 1).unwrap_or(u32::MAX))
+    }
+
+    /// Ends the current object/group: its vertices in order of first use,
+    /// which must all be defined by now.
+    fn finish_model(&mut self) {
+        let triangles = std::mem::take(&mut self.triangles);
+        if triangles.is_empty() || self.deferred.is_some() {
+            return;
+        }
+        self.local.resize(self.positions.len(), u32::MAX);
+        let mut vertices = Vec::new();
+        let mut used = Vec::new();
+        let mut out = Vec::with_capacity(triangles.len());
+        'faces: for tri in &triangles {
+            let mut t = [0; 3];
+            for (corner, &g) in t.iter_mut().zip(tri) {
+                let g = g as usize;
+                *corner = match self.local.get(g) {
+                    Some(&l) if l != u32::MAX => l,
+                    Some(_) => {
+                        if self.colours > 0 && g.saturating_mul(3).saturating_add(2) >= self.colours
+                        {
+                            self.defer("face vertex color index out of bounds");
+                            break 'faces;
+                        }
+                        let l = vertices.len() as u32;
+                        vertices.push(self.positions[g]);
+                        self.local[g] = l;
+                        used.push(g);
+                        l
+                    }
+                    None => {
+                        self.defer("face vertex index out of bounds");
+                        break 'faces;
+                    }
+                };
+            }
+            out.push(t);
+        }
+        for g in used {
+            self.local[g] = u32::MAX;
+        }
+        if self.deferred.is_none() {
+            self.models.push(Model {
+                name: self.name.clone(),
+                vertices,
+                triangles: out,
+            });
+        }
+    }
+}
+
+/// The name of the object or group an `o`/`g` line starts: the rest of the
+/// line, trimmed ([`UNNAMED`] when empty).
 fn object_name(line: &str, keyword: &str) -> String {
     let rest = line.trim_start()[keyword.len()..].trim();
     if rest.is_empty() {
-        TOBJ_UNNAMED.to_owned()
+        UNNAMED.to_owned()
     } else {
         rest.to_owned()
     }
-}
-
-/// The first word of a line.
-fn keyword(line: &str) -> Option<&str> {
-    line.split_whitespace().next()
-}
-
-/// Checks that a `v` line starts with three numbers.
-fn check_vertex<'a>(mut words: impl Iterator<Item = &'a str>) -> Result<(), String> {
-    for axis in ["x", "y", "z"] {
-        let word = words
-            .next()
-            .ok_or_else(|| format!("vertex has no {axis} coordinate"))?;
-        if word.parse::<f64>().is_err() {
-            return Err(format!("vertex {axis} coordinate '{word}' is not a number"));
-        }
-    }
-    Ok(())
-}
-
-/// The absolute 1-based position index of one face corner `v[/vt][/vn]`.
-///
-/// `seen` vertices precede the face; the file has `total`.
-fn face_index(word: &str, seen: usize, total: usize) -> Result<u64, String> {
-    let v = word.split('/').next().unwrap_or(word);
-    let index: i64 = v
-        .parse()
-        .map_err(|_| format!("face vertex '{word}' is not an index"))?;
-    let absolute = match index {
-        0 => return Err(format!("face vertex '{word}': OBJ indices start at 1")),
-        i if i > 0 => i.unsigned_abs(),
-        i => (seen as u64 + 1)
-            .checked_sub(i.unsigned_abs())
-            .filter(|&a| a >= 1)
-            .ok_or_else(|| {
-                format!(
-                    "face vertex '{word}' reaches before the first vertex \
-                     (vertices defined so far: {seen})"
-                )
-            })?,
-    };
-    if absolute > total as u64 {
-        return Err(format!(
-            "face refers to vertex {absolute}, but the file has {total} vertices"
-        ));
-    }
-    Ok(absolute)
 }
