@@ -85,13 +85,83 @@ pub struct CheckedMesh {
     pub warnings: Vec<MeshWarning>,
 }
 
-/// An undirected edge `(low, high)` used by triangle `triangle`, `forward`
-/// when the triangle runs from `low` to `high`.
-#[derive(Clone, Copy)]
-struct EdgeUse {
-    key: u64,
-    triangle: u32,
-    forward: bool,
+/// Every undirected edge use, grouped by edge: a counting sort by the low
+/// vertex, then each (short) bucket sorted by high vertex and triangle.
+/// A use is `(high << 32) | triangle`; 8 bytes per use, 24 per triangle.
+struct EdgeUses {
+    /// Where the uses whose low vertex is `v` start; `vertices + 1` entries.
+    start: Vec<usize>,
+    /// The uses, bucket by bucket.
+    uses: Vec<u64>,
+}
+
+impl EdgeUses {
+    /// Groups the edges of `triangles` (indices below `vertices`, none repeated
+    /// within a triangle).
+    fn new(triangles: &[[u32; 3]], vertices: usize) -> Self {
+        let low = |tri: &[u32; 3], k: usize| tri[k].min(tri[(k + 1) % 3]) as usize;
+        let mut start = vec![0usize; vertices + 1];
+        for tri in triangles {
+            for k in 0..3 {
+                start[low(tri, k) + 1] += 1;
+            }
+        }
+        // Inclusive prefix sums: start[v + 1] ends bucket v.
+        let mut sum = 0;
+        for s in &mut start {
+            sum += *s;
+            *s = sum;
+        }
+        // Fill each bucket from its end, so start[v + 1] ends at its beginning.
+        let mut uses = vec![0u64; 3 * triangles.len()];
+        for (t, tri) in triangles.iter().enumerate().rev() {
+            for k in (0..3).rev() {
+                let high = tri[k].max(tri[(k + 1) % 3]);
+                let end = &mut start[low(tri, k) + 1];
+                *end -= 1;
+                uses[*end] = (u64::from(high) << 32) | t as u64;
+            }
+        }
+        // Bucket v begins at start[v + 1]: shift it to start[v].
+        start.rotate_left(1);
+        start[vertices] = uses.len();
+        for w in start.windows(2) {
+            uses[w[0]..w[1]].sort_unstable();
+        }
+        Self { start, uses }
+    }
+
+    /// Calls `f(key, group)` for every edge in `(low, high)` order, with
+    /// `key = (low << 32) | high` and the group's uses.
+    fn for_each_edge(&self, mut f: impl FnMut(u64, &[u64])) {
+        for (low, w) in self.start.windows(2).enumerate() {
+            let bucket = &self.uses[w[0]..w[1]];
+            for group in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
+                f(((low as u64) << 32) | (group[0] >> 32), group);
+            }
+        }
+    }
+}
+
+/// The triangle of an edge use.
+fn use_triangle(u: u64) -> usize {
+    (u & 0xFFFF_FFFF) as usize
+}
+
+/// Which edge slot `k` (from `tri[k]` to `tri[k + 1]`) of `tri` joins the
+/// ends of `key`, and whether it runs from low to high.
+fn edge_slot(tri: [u32; 3], key: u64) -> (usize, bool) {
+    let (low, high) = ((key >> 32) as u32, (key & 0xFFFF_FFFF) as u32);
+    for k in 0..3 {
+        let (a, b) = (tri[k], tri[(k + 1) % 3]);
+        if a == low && b == high {
+            return (k, true);
+        }
+        if a == high && b == low {
+            return (k, false);
+        }
+    }
+    unreachable!("an edge use names a triangle with that edge")
 }
 
 /// Whether a triangle has an exactly zero cross product (zero area).
@@ -157,25 +227,6 @@ fn weld_gap(vertices: &[DVec3], boundary: &[u64]) -> Option<f64> {
     }
     let size = crate::weld::bounding_diagonal(vertices);
     (gap.is_finite() && gap <= 1e-3 * size).then_some(gap)
-}
-
-/// Every undirected edge's uses, sorted so that uses of one edge are adjacent.
-fn edge_uses(triangles: &[[u32; 3]]) -> Vec<EdgeUse> {
-    let mut uses: Vec<EdgeUse> = Vec::with_capacity(3 * triangles.len());
-    for (t, tri) in triangles.iter().enumerate() {
-        for k in 0..3 {
-            let (a, b) = (tri[k], tri[(k + 1) % 3]);
-            let (low, high, forward) = if a < b { (a, b, true) } else { (b, a, false) };
-            uses.push(EdgeUse {
-                key: (u64::from(low) << 32) | u64::from(high),
-                // Triangle counts fit in u32: indices are u32.
-                triangle: t as u32,
-                forward,
-            });
-        }
-    }
-    uses.sort_unstable_by_key(|u| u.key);
-    uses
 }
 
 /// Whether surface `id` lies inside another surface: the generalised winding
@@ -248,25 +299,18 @@ pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
             triangles: 0,
         });
     }
-    let checked = match orient(&vertices, &triangles) {
-        Ok(checked) => checked,
+    let mut warnings = match orient(&vertices, &mut triangles) {
+        Ok(warnings) => warnings,
         Err(error) => {
             // A zero-area sliver dangling off the surface: retry without them.
-            let flat: Vec<[u32; 3]> = triangles
-                .iter()
-                .copied()
-                .filter(|&t| !zero_area(&vertices, t))
-                .collect();
-            if flat.len() == triangles.len() || flat.is_empty() {
+            let before_retry = triangles.len();
+            triangles.retain(|&t| !zero_area(&vertices, t));
+            if triangles.len() == before_retry || triangles.is_empty() {
                 return Err(error);
             }
-            orient(&vertices, &flat).map_err(|_| error)?
+            orient(&vertices, &mut triangles).map_err(|_| error)?
         }
     };
-    let Oriented {
-        mut triangles,
-        mut warnings,
-    } = checked;
     let kept = triangles.len();
     triangles.retain(|&t| !zero_area(&vertices, t));
     let degenerate = collapsed_count + (before - collapsed_count - kept) + (kept - triangles.len());
@@ -285,34 +329,40 @@ pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
     })
 }
 
-/// Consistently oriented, outward triangles and what was repaired.
-struct Oriented {
-    triangles: Vec<[u32; 3]>,
-    warnings: Vec<MeshWarning>,
+/// Turns triangle `tri` over (swaps its last two vertices).
+fn flipped([a, b, c]: [u32; 3]) -> [u32; 3] {
+    [a, c, b]
 }
 
-/// Checks closure and orients the triangles (none has a repeated index).
-fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, InertiaError> {
-    let mut triangles = triangles.to_vec();
+/// Checks closure and orients the triangles in place (none has a repeated
+/// index); on an error they are left as they were.
+fn orient(
+    vertices: &[DVec3],
+    triangles: &mut [[u32; 3]],
+) -> Result<Vec<MeshWarning>, InertiaError> {
     let mut warnings = Vec::new();
-    let uses = edge_uses(&triangles);
-    // Neighbours across each edge of two triangles: (other triangle, same direction?).
-    let mut neighbours: Vec<Vec<(u32, bool)>> = vec![Vec::new(); triangles.len()];
+    let n = triangles.len();
+    // The neighbour across edge k (from tri[k] to tri[k + 1]) of each
+    // triangle when exactly two triangles share that edge, else u32::MAX.
+    let mut neighbours = vec![[u32::MAX; 3]; n];
     let mut boundary = Vec::new();
     let mut shared_edges = 0;
-    for group in uses.chunk_by(|x, y| x.key == y.key) {
-        match group {
-            [u] => boundary.push(u.key),
-            [u, w] => {
-                let same = u.forward == w.forward;
-                neighbours[u.triangle as usize].push((w.triangle, same));
-                neighbours[w.triangle as usize].push((u.triangle, same));
-            }
-            // Orientation does not propagate across these (which pairs?);
-            // they are checked once every surface is oriented.
-            _ => shared_edges += 1,
+    let uses = EdgeUses::new(triangles, vertices.len());
+    uses.for_each_edge(|key, group| match *group {
+        [_] => boundary.push(key),
+        [u, w] => {
+            let (tu, tw) = (use_triangle(u), use_triangle(w));
+            let (ku, _) = edge_slot(triangles[tu], key);
+            let (kw, _) = edge_slot(triangles[tw], key);
+            // Triangle counts fit in u32: indices are u32.
+            neighbours[tu][ku] = tw as u32;
+            neighbours[tw][kw] = tu as u32;
         }
-    }
+        // Orientation does not propagate across these (which pairs?);
+        // they are checked once every surface is oriented.
+        _ => shared_edges += 1,
+    });
+    drop(uses);
     if let Some(&first) = boundary.first() {
         return Err(InertiaError::OpenMesh {
             boundary_edges: boundary.len(),
@@ -322,7 +372,6 @@ fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, Inerti
     }
 
     // Orient each connected surface consistently, flipping the minority.
-    let n = triangles.len();
     let mut component = vec![u32::MAX; n];
     let mut flip = vec![false; n];
     let mut components: Vec<Vec<u32>> = Vec::new();
@@ -337,8 +386,17 @@ fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, Inerti
         while next < members.len() {
             let t = members[next] as usize;
             next += 1;
-            for &(u, same) in &neighbours[t] {
+            for (k, &u) in neighbours[t].iter().enumerate() {
+                if u == u32::MAX {
+                    continue;
+                }
                 let u = u as usize;
+                let tri = triangles[t];
+                let key = {
+                    let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                    (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
+                };
+                let same = edge_slot(triangles[u], key).1 == (tri[k] < tri[(k + 1) % 3]);
                 // Neighbours must traverse the shared edge in opposite directions.
                 let want = flip[t] ^ same;
                 if component[u] == u32::MAX {
@@ -354,14 +412,17 @@ fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, Inerti
         }
         components.push(members);
     }
+    drop(neighbours);
+    drop(component);
     // Apply the consistent winding; the sign of each surface's volume then
     // says whether it points outwards.
-    let consistent: Vec<[u32; 3]> = triangles
-        .iter()
-        .zip(&flip)
-        .map(|(&[a, b, c], &f)| if f { [a, c, b] } else { [a, b, c] })
-        .collect();
+    for (tri, &f) in triangles.iter_mut().zip(&flip) {
+        if f {
+            *tri = flipped(*tri);
+        }
+    }
     let origin = vertices[0];
+    let consistent: &[[u32; 3]] = triangles;
     let signed_volume = |members: &[u32]| -> f64 {
         members
             .iter()
@@ -377,7 +438,7 @@ fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, Inerti
         .iter()
         .enumerate()
         .map(|(id, members)| {
-            signed_volume(members) < 0.0 && !enclosed(id, &components, &consistent, vertices)
+            signed_volume(members) < 0.0 && !enclosed(id, &components, consistent, vertices)
         })
         .collect();
     let (mut reoriented, mut inside_out) = (0, 0);
@@ -391,25 +452,34 @@ fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, Inerti
         } else {
             reoriented += changed;
         }
-        for &t in members {
-            let t = t as usize;
-            triangles[t] = if turn[id] {
-                let [a, b, c] = consistent[t];
-                [a, c, b]
-            } else {
-                consistent[t]
-            };
+        if turn[id] {
+            for &t in members {
+                let t = t as usize;
+                triangles[t] = flipped(triangles[t]);
+                flip[t] = !flip[t];
+            }
         }
     }
+    drop(components);
     if shared_edges > 0 {
         // Oriented, every edge of more than two triangles must cancel.
-        let uses = edge_uses(&triangles);
-        let unbalanced: Vec<u64> = uses
-            .chunk_by(|x, y| x.key == y.key)
-            .filter(|g| g.len() > 2 && 2 * g.iter().filter(|u| u.forward).count() != g.len())
-            .map(|g| g[0].key)
-            .collect();
+        let mut unbalanced: Vec<u64> = Vec::new();
+        EdgeUses::new(triangles, vertices.len()).for_each_edge(|key, group| {
+            let forward = group
+                .iter()
+                .filter(|&&u| edge_slot(triangles[use_triangle(u)], key).1)
+                .count();
+            if group.len() > 2 && 2 * forward != group.len() {
+                unbalanced.push(key);
+            }
+        });
         if let Some(&first) = unbalanced.first() {
+            // Leave the triangles as they came.
+            for (tri, &f) in triangles.iter_mut().zip(&flip) {
+                if f {
+                    *tri = flipped(*tri);
+                }
+            }
             return Err(InertiaError::NonManifold {
                 edges: unbalanced.len(),
                 at: edge_midpoint(vertices, first),
@@ -429,10 +499,7 @@ fn orient(vertices: &[DVec3], triangles: &[[u32; 3]]) -> Result<Oriented, Inerti
             surfaces: inside_out,
         });
     }
-    Ok(Oriented {
-        triangles,
-        warnings,
-    })
+    Ok(warnings)
 }
 
 /// Prepares a mesh for use as a thin shell: only degenerate triangles are

@@ -11,10 +11,22 @@ use crate::InertiaError;
 /// surface. Construction checks only what every use needs (non-empty,
 /// finite coordinates, indices in range); topology (closed, manifold,
 /// consistent winding) is checked separately.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct TriMesh {
     vertices: Vec<DVec3>,
     triangles: Vec<[u32; 3]>,
+    /// Known to have no two bit-identical vertices (`−0.0 ≡ +0.0`), none
+    /// unused, numbered in order of first use: what the exact pass of
+    /// [`TriMesh::welded`] would produce, so it is skipped. Set by loaders
+    /// that merge exact repeats as they read; cleared by any change.
+    exact_unique: bool,
+}
+
+/// Meshes are equal when their vertices and triangles are.
+impl PartialEq for TriMesh {
+    fn eq(&self, other: &Self) -> bool {
+        self.vertices == other.vertices && self.triangles == other.triangles
+    }
 }
 
 impl TriMesh {
@@ -58,6 +70,7 @@ impl TriMesh {
         Ok(Self {
             vertices,
             triangles,
+            exact_unique: false,
         })
     }
 
@@ -85,7 +98,21 @@ impl TriMesh {
         Self {
             vertices,
             triangles,
+            exact_unique: false,
         }
+    }
+
+    /// Marks the mesh as having no bit-identical, unused or out-of-order
+    /// vertices (the caller's guarantee; see the field), so that
+    /// [`TriMesh::welded`] skips its exact pass.
+    pub(crate) fn known_exact_unique(mut self) -> Self {
+        self.exact_unique = true;
+        self
+    }
+
+    /// Whether [`TriMesh::known_exact_unique`] holds.
+    pub(crate) fn is_exact_unique(&self) -> bool {
+        self.exact_unique
     }
 
     /// The vertex positions.
@@ -162,6 +189,7 @@ impl TriMesh {
                 value: factor,
             });
         }
+        self.exact_unique = false;
         for v in &mut self.vertices {
             *v *= factor;
         }
@@ -208,6 +236,7 @@ impl TriMesh {
                 value,
             });
         }
+        self.exact_unique = false;
         for v in &mut self.vertices {
             *v += offset;
         }

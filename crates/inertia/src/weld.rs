@@ -319,8 +319,14 @@ impl TriMesh {
     /// ```
     pub fn welded(self, weld: Weld) -> Result<(TriMesh, Welded), InertiaError> {
         let tol = weld.tolerance(bounding_diagonal(self.vertices()))?;
+        let exact_unique = self.is_exact_unique();
         let (vertices, mut triangles) = self.into_parts();
-        let vertices = weld_exact(&vertices, &mut triangles);
+        let vertices = if exact_unique {
+            // The loader merged exact repeats in first-use order already.
+            vertices
+        } else {
+            weld_exact(&vertices, &mut triangles)
+        };
         let unchanged = Welded {
             tolerance: tol,
             ..Welded::default()

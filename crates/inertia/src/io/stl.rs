@@ -33,8 +33,8 @@ use glam::DVec3;
 
 use super::vertex_table::VertexTable;
 use super::{Body, Source, vertex_index};
-use crate::InertiaError;
 use crate::weld::ExactDedup;
+use crate::{InertiaError, TriMesh};
 
 /// Bytes before the first binary triangle record.
 const HEADER: usize = 84;
@@ -48,11 +48,7 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
     let solid = starts_with_solid(bytes);
     if exact && !(solid && is_text(bytes)) {
         let (vertices, triangles) = parse_binary(bytes).map_err(|r| src.error(r))?;
-        return Ok(vec![src.body(
-            src.stem().to_owned(),
-            vertices,
-            triangles,
-        )?]);
+        return binary_body(src, vertices, triangles);
     }
     if solid {
         let solids = parse_ascii(bytes).map_err(|reason| match count {
@@ -130,11 +126,7 @@ pub(super) fn load_file(src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
             left -= take;
         }
         let (vertices, triangles) = soup.finish();
-        return Ok(vec![src.body(
-            src.stem().to_owned(),
-            vertices,
-            triangles,
-        )?]);
+        return binary_body(src, vertices, triangles);
     }
     let bytes = std::fs::read(src.path).map_err(io)?;
     load(&bytes, src)
@@ -200,6 +192,28 @@ fn parse_binary(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
     let mut soup = Soup::new(records.len());
     soup.push(records)?;
     Ok(soup.finish())
+}
+
+/// The one body of a binary file, as [`Source::body`] makes it, but marked
+/// as already free of exact repeats (the [`VertexTable`] shares them in
+/// first-use order), so the weld skips its exact pass.
+fn binary_body(
+    src: &Source<'_>,
+    vertices: Vec<DVec3>,
+    triangles: Vec<[u32; 3]>,
+) -> Result<Vec<Body>, InertiaError> {
+    let name = src.stem().to_owned();
+    let mesh = TriMesh::try_new(vertices, triangles).map_err(|e| src.in_body(&name, e))?;
+    let body = Body {
+        mesh: mesh.known_exact_unique(),
+        name,
+        warnings: Vec::new(),
+    };
+    Ok(vec![if src.options.merge {
+        body
+    } else {
+        src.weld(body)?
+    }])
 }
 
 /// Binary triangle records being read into shared vertices and triangles.
@@ -446,6 +460,20 @@ mod tests {
         assert_eq!(streamed[0].mesh.triangles().len(), 9800);
         // (n + 1)² grid points: repeats and the signed zeros merged.
         assert_eq!(streamed[0].mesh.vertices().len(), 71 * 71);
+    }
+
+    #[test]
+    fn skipping_the_exact_weld_pass_for_binary_files_changes_nothing() {
+        // The loader marks binary bodies as free of exact repeats; the full
+        // weld (exact pass included) of the same parsed records must agree.
+        let bytes = grid_stl(12);
+        let (vertices, triangles) = parse_binary(&bytes).unwrap();
+        let (full, _) = TriMesh::new(vertices, triangles)
+            .welded(crate::Weld::default())
+            .unwrap();
+        let loaded = load_bodies_from_bytes(&bytes, MeshFormat::Stl, "grid.stl", None).unwrap();
+        assert_eq!(loaded[0].mesh.vertices(), full.vertices());
+        assert_eq!(loaded[0].mesh.triangles(), full.triangles());
     }
 
     #[test]
