@@ -41,7 +41,13 @@ impl PrincipalAxes {
                 reason: "tensor has a non-finite element".into(),
             });
         }
-        Ok(Self::from_tensor(tensor))
+        let axes = Self::from_tensor(tensor);
+        if !axes.moments.is_finite() {
+            return Err(InertiaError::UnphysicalInertia {
+                reason: format!("principal moments {} exceed the range of f64", axes.moments),
+            });
+        }
+        Ok(axes)
     }
 
     /// Diagonalises a symmetric tensor: `I = R diag(moments) Rᵀ`.
@@ -77,7 +83,16 @@ impl PrincipalAxes {
                 orientation: DQuat::NAN,
             };
         }
-        let (values, vectors) = jacobi_eigen(tensor);
+        // Diagonalise in the tensor's own power-of-two unit (exact), so that
+        // squares inside the rotations neither overflow nor underflow for
+        // any finite tensor; the moments are scaled back (to ±inf if they
+        // exceed f64, which `try_from_tensor` refuses).
+        let exponent = unit_exponent(tensor);
+        let half = -exponent / 2;
+        let unit = tensor * 2f64.powi(half) * 2f64.powi(-exponent - half);
+        let (unit_values, vectors) = jacobi_eigen(unit);
+        let half = exponent / 2;
+        let values = unit_values.map(|x| x * 2f64.powi(half) * 2f64.powi(exponent - half));
         let mut order = [0usize, 1, 2];
         order.sort_by(|&i, &j| values[i].total_cmp(&values[j]));
         let moments = DVec3::new(values[order[0]], values[order[1]], values[order[2]]);
@@ -98,6 +113,9 @@ impl PrincipalAxes {
         let e2 = (e2 - e1 * e1.dot(e2)).normalize();
         let e3 = e1.cross(e2);
         let axes = DMat3::from_cols(e1, e2, e3);
+        // Cannot panic: e1, e2 are finite orthonormal vectors (columns of
+        // Jacobi's rotation product, re-orthonormalised) and e3 = e1 × e2, so
+        // `axes` is finite with determinant |e1 × e2|² ≈ 1 > 0.
         let q = quat_from_rotation_matrix(axes);
         let orientation = if q.w < 0.0 { -q } else { q };
         Self {
@@ -109,6 +127,23 @@ impl PrincipalAxes {
 }
 
 /// Eigenvalues and unit eigenvectors of the symmetric part of `a`.
+/// The exponent `e` of the power of two nearest below the tensor's largest
+/// element (0 for the zero tensor): `tensor · 2⁻ᵉ` has elements of order 1.
+/// The scaling is applied in two halves, since `2⁻ᵉ` alone overflows for a
+/// subnormal tensor.
+fn unit_exponent(tensor: DMat3) -> i32 {
+    let largest = tensor
+        .to_cols_array()
+        .iter()
+        .fold(0.0_f64, |m, x| m.max(x.abs()));
+    if largest > 0.0 {
+        // Exact for every finite positive f64 (subnormals included).
+        largest.log2().floor() as i32
+    } else {
+        0
+    }
+}
+
 fn jacobi_eigen(a: DMat3) -> ([f64; 3], [DVec3; 3]) {
     // m[r][c], symmetric: take the upper triangle.
     let e = |r: usize, c: usize| a.col(c)[r];
@@ -256,5 +291,29 @@ mod tests {
         t.y_axis.x = f64::NAN;
         assert!(PrincipalAxes::try_from_tensor(t).is_err());
         assert!(PrincipalAxes::from_tensor(t).moments.is_nan());
+    }
+
+    #[test]
+    fn scale_free_and_overflow_refused() {
+        // Regression: at 1e308 the rotations' squares overflowed and Jacobi
+        // stopped with every moment 1e308 (true: 1e307, 1e308, 1.9e308, the
+        // last beyond f64), silently.
+        let base = DMat3::from_cols(
+            DVec3::new(1.0, 0.9, 0.0),
+            DVec3::new(0.9, 1.0, 0.0),
+            DVec3::new(0.0, 0.0, 1.0),
+        );
+        // Closed form: eigenvalues 1 − 0.9, 1, 1 + 0.9.
+        let exact = DVec3::new(0.1, 1.0, 1.9);
+        for k in [1e-300, 1e-100, 1.0, 1e100, 1e300] {
+            let p = PrincipalAxes::try_from_tensor(base * k).unwrap();
+            let rel = (p.moments / k - exact).abs().max_element();
+            assert!(rel < 1e-15, "scale {k}: {:?}", p.moments);
+            assert!((p.axes.determinant() - 1.0).abs() < 1e-15, "scale {k}");
+        }
+        let huge = PrincipalAxes::from_tensor(base * 1e308);
+        assert!((huge.moments.x / 1e307 - 1.0).abs() < 1e-14, "{huge:?}");
+        assert_eq!(huge.moments.z, f64::INFINITY);
+        assert!(PrincipalAxes::try_from_tensor(base * 1e308).is_err());
     }
 }
