@@ -347,8 +347,14 @@ impl<'a> Source<'a> {
         vertices: Vec<DVec3>,
         triangles: Vec<[u32; 3]>,
     ) -> Result<Body, InertiaError> {
+        let mesh = TriMesh::try_new(vertices, triangles).map_err(|e| self.in_body(&name, e))?;
+        self.body_from_mesh(name, mesh)
+    }
+
+    /// A body of a checked mesh, welded unless the bodies are to be merged.
+    fn body_from_mesh(&self, name: String, mesh: TriMesh) -> Result<Body, InertiaError> {
         let body = Body {
-            mesh: TriMesh::try_new(vertices, triangles).map_err(|e| self.in_body(&name, e))?,
+            mesh,
             name,
             warnings: Vec::new(),
         };

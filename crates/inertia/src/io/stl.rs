@@ -204,16 +204,7 @@ fn binary_body(
 ) -> Result<Vec<Body>, InertiaError> {
     let name = src.stem().to_owned();
     let mesh = TriMesh::try_new(vertices, triangles).map_err(|e| src.in_body(&name, e))?;
-    let body = Body {
-        mesh: mesh.known_exact_unique(),
-        name,
-        warnings: Vec::new(),
-    };
-    Ok(vec![if src.options.merge {
-        body
-    } else {
-        src.weld(body)?
-    }])
+    Ok(vec![src.body_from_mesh(name, mesh.known_exact_unique())?])
 }
 
 /// Binary triangle records being read into shared vertices and triangles.
