@@ -4,6 +4,23 @@ use glam::{DQuat, DVec3};
 
 use super::EulerAnglesAndRates;
 use super::motion::{Kind, LagrangeTopMotion};
+use super::third_kind::ThirdKind;
+
+/// The nutation phase `ν t` split into whole periods and the rest:
+/// `ν t = 2K j + s`, `|s| ≤ K` (`j = 0`, `s = ν t` for an infinite period).
+#[derive(Debug, Clone, Copy)]
+struct Phase {
+    j: f64,
+    s: f64,
+}
+
+/// Gauss–Legendre nodes and weights on [−1, 1], 4 points (exact to degree 7).
+const GAUSS4: [(f64, f64); 4] = [
+    (-0.861_136_311_594_052_6, 0.347_854_845_137_453_85),
+    (-0.339_981_043_584_856_26, 0.652_145_154_862_546_1),
+    (0.339_981_043_584_856_26, 0.652_145_154_862_546_1),
+    (0.861_136_311_594_052_6, 0.347_854_845_137_453_85),
+];
 
 impl LagrangeTopMotion {
     /// (φ, signed θ, ψ, φ̇, θ̇, ψ̇): θ may leave [0, π] when the axis passes
@@ -23,17 +40,32 @@ impl LagrangeTopMotion {
             }
             Kind::Nutating => {}
         }
-        let tau = self.nu * t + self.tau0;
+        let phase = self.phase(t);
+        let tau = self.tau0 + phase.s;
         let (sn, cn, dn) = self.jacobi.sn_cn_dn(tau);
+        let (omu, opu, s2, c2) = self.one_mp_u(sn, cn);
+        let (theta, theta_dot) = self.signed_theta(phase.j, sn, cn, dn, omu, opu);
+        let (phi, psi) = self.precession_and_spin(t, phase, sn, cn, dn);
+        let (phi_dot, psi_dot) = self.rates(omu, opu, s2, c2);
+        EulerAnglesAndRates {
+            phi,
+            theta,
+            psi,
+            phi_dot,
+            theta_dot,
+            psi_dot,
+        }
+    }
+
+    /// The signed θ and θ̇ at the reduced phase `τ₀ + s` (`sn`, `cn`, `dn`
+    /// there, `1 ∓ u` = `omu`, `opu`), `j` whole periods on.
+    fn signed_theta(&self, j: f64, sn: f64, cn: f64, dn: f64, omu: f64, opu: f64) -> (f64, f64) {
         let d = self.delta;
-        let (s2, c2) = (sn * sn, cn * cn);
-        let (omu, opu) = if self.sigma > 0.0 {
-            (self.one_minus_u2 + d * c2, self.one_plus_u1 + d * s2)
-        } else {
-            (self.one_minus_u2 + d * s2, self.one_plus_u1 + d * c2)
-        };
         let udot = 2.0 * self.sigma * d * self.nu * sn * cn * dn;
         let rd = d.sqrt();
+        // sn, cn change sign over each period 2K: the signed θ through a
+        // vertical needs them at the unreduced phase.
+        let (sn, cn) = if j % 2.0 == 0.0 { (sn, cn) } else { (-sn, -cn) };
         let (y, ydot) = if self.through_top {
             let (gv, gd) = if self.sigma > 0.0 {
                 (cn, -sn * dn)
@@ -56,29 +88,110 @@ impl LagrangeTopMotion {
             let x = opu.sqrt();
             (x, udot / (2.0 * x))
         };
-        let theta = 2.0 * y.atan2(x);
-        let theta_dot = x * ydot - y * xdot;
-        let mut phi = i.phi + self.phi_slope * t;
-        let mut psi = i.psi + self.psi_slope * t;
-        if let Some((tk, at0)) = &self.minus {
-            let rest = 0.5 * self.bma * (tk.eval(tau, sn, cn, dn) - at0) / self.nu;
-            phi += rest;
-            psi -= rest;
+        (2.0 * y.atan2(x), x * ydot - y * xdot)
+    }
+
+    /// φ and ψ at `t`, the phase `ν t = 2K j + s` and `sn`, `cn`, `dn` at
+    /// `τ₀ + s`. φ is the mean motion plus the oscillation about it:
+    ///
+    /// ```text
+    /// φ(t) = φ₀ + φ_slope t + Σ± c± (R±(τ) − R±(τ₀)),   c± = (b ∓ a)/(2ν),  τ = τ₀ + ν t
+    /// R±(τ + 2K) = R±(τ) + P±,   ⟨φ̇⟩ = φ_slope + Σ± c± ν P±/(2K)          (third_kind)
+    /// ⇒ φ(t) = φ₀ + ⟨φ̇⟩ t + S(τ₀ + s) − S(τ₀),   S(τ) = Σ± c± (R±(τ) − P± τ/(2K))  (period 2K)
+    /// S(τ₀ + s) − S(τ₀) = ∫₀ˢ (φ̇(τ₀ + σ) − ⟨φ̇⟩) dσ / ν
+    /// ```
+    ///
+    /// `⟨φ̇⟩` is [`mean_precession_rate`](Self::mean_precession_rate) (the
+    /// band-centre form for a thin band, to ~ε of itself), not
+    /// `φ_slope + Σ c± ν P±/(2K)`, whose terms are of the size of the swing
+    /// of φ̇ and cancel to the mean: for a fast top kicked in θ̇ the old
+    /// `φ_slope t + Σ c± (R±(τ) − R±(τ₀))` kept that cancellation in φ, and
+    /// rounded `φ_slope t` and the rests at different phases, so φ(T) − φ₀
+    /// was ε · swing/⟨φ̇⟩ off (4·10⁻³ at ψ̇₀ = 10¹⁵ rad/s). The oscillation
+    /// `S(τ₀ + s) − S(τ₀)` is of the size of the swing `|φ̇ − ⟨φ̇⟩|/ν` and
+    /// rounds to ε of it; within `short_phase` of a whole period it is
+    /// smaller than that rounding (≈ (φ̇(τ₀) − ⟨φ̇⟩) s/ν) and is taken by
+    /// the integral (4-point Gauss–Legendre, error ~(s/ℓ)⁸ and ε of the
+    /// integral), so that φ(N T) − φ₀ = N ⟨φ̇⟩ T keeps ~ε of itself.
+    ///
+    /// ψ keeps the form `ψ_slope t ∓ Σ…`: its accumulated `ω₃ t` dwarfs
+    /// any swing. Without a finite period φ keeps it too (`⟨φ̇⟩` undefined).
+    fn precession_and_spin(&self, t: f64, phase: Phase, sn: f64, cn: f64, dn: f64) -> (f64, f64) {
+        let i = &self.init;
+        let tau = self.tau0 + phase.s;
+        // (c (R(τ) − R(τ₀)), c (R(τ₀ + s) − R(τ₀) − P s/(2K))) of one partial fraction
+        let part = |p: &Option<(ThirdKind, f64)>, coef: f64| {
+            p.as_ref().map_or((0.0, 0.0), |(tk, at0)| {
+                let c = 0.5 * coef / self.nu;
+                let d = c * (tk.eval(tau, sn, cn, dn) - at0);
+                let per = c * tk.per_period();
+                (d + phase.j * per, d - per * phase.s / (2.0 * self.k))
+            })
+        };
+        let (rest_m, osc_m) = part(&self.minus, self.bma);
+        let (rest_p, osc_p) = part(&self.plus, self.bpa);
+        let psi = i.psi + self.psi_slope * t - rest_m + rest_p;
+        let phi = match self.phi_mean {
+            Some(mean) if phase.s.abs() <= self.short_phase() => {
+                i.phi + mean * t + self.phi_swing_by_quadrature(phase.s, mean)
+            }
+            Some(mean) => i.phi + mean * t + (osc_m + osc_p),
+            None => i.phi + self.phi_slope * t + rest_m + rest_p,
+        };
+        (phi, psi)
+    }
+
+    /// `ν t = 2K j + s` with `|s| ≤ K` (the whole periods taken out, so that
+    /// every closed form below sees a phase within one period of τ₀).
+    fn phase(&self, t: f64) -> Phase {
+        let nt = self.nu * t;
+        let period = 2.0 * self.k;
+        let j = (nt / period).round();
+        if !period.is_finite() || !j.is_finite() || j == 0.0 {
+            return Phase { j: 0.0, s: nt };
         }
-        if let Some((tk, at0)) = &self.plus {
-            let rest = 0.5 * self.bpa * (tk.eval(tau, sn, cn, dn) - at0) / self.nu;
-            phi += rest;
-            psi += rest;
+        Phase {
+            j,
+            s: nt - j * period,
         }
-        let (phi_dot, psi_dot) = self.rates(omu, opu, s2, c2);
-        EulerAnglesAndRates {
-            phi,
-            theta,
-            psi,
-            phi_dot,
-            theta_dot,
-            psi_dot,
+    }
+
+    /// `(1 − u, 1 + u, sn², cn²)` at the phase whose `sn`, `cn` are given.
+    fn one_mp_u(&self, sn: f64, cn: f64) -> (f64, f64, f64, f64) {
+        let d = self.delta;
+        let (s2, c2) = (sn * sn, cn * cn);
+        let (omu, opu) = if self.sigma > 0.0 {
+            (self.one_minus_u2 + d * c2, self.one_plus_u1 + d * s2)
+        } else {
+            (self.one_minus_u2 + d * s2, self.one_plus_u1 + d * c2)
+        };
+        (omu, opu, s2, c2)
+    }
+
+    /// The reduced phases `|s|` up to which φ's swing is integrated by
+    /// quadrature: 10⁻³ of the scale on which φ̇ varies in τ (1, or
+    /// `√((1 ∓ u)/Δ)` at a turning point close to a pole).
+    fn short_phase(&self) -> f64 {
+        let near_pole = self.one_minus_u2.min(self.one_plus_u1);
+        1e-3 * (near_pole / self.delta).sqrt().min(1.0)
+    }
+
+    /// `∫₀ˢ (φ̇(τ₀ + σ) − ⟨φ̇⟩) dσ / ν` by 4-point Gauss–Legendre, for a
+    /// short reduced phase `s` (see `precession_and_spin`).
+    fn phi_swing_by_quadrature(&self, s: f64, mean: f64) -> f64 {
+        if s == 0.0 {
+            return 0.0;
         }
+        let half = 0.5 * s;
+        let sum: f64 = GAUSS4
+            .iter()
+            .map(|&(x, w)| {
+                let (sn, cn, _) = self.jacobi.sn_cn_dn(self.tau0 + half * (1.0 + x));
+                let (omu, opu, s2, c2) = self.one_mp_u(sn, cn);
+                w * (self.rates(omu, opu, s2, c2).0 - mean)
+            })
+            .sum();
+        half * sum / self.nu
     }
 
     /// φ̇ and ψ̇ at `1 − u = omu`, `1 + u = opu` (`sn²`, `cn²` of the phase):

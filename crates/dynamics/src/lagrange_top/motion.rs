@@ -97,6 +97,9 @@ pub struct LagrangeTopMotion {
     /// `∓a/2` (module docs of `third_kind`): φ(t) = φ₀ + slope t + rests.
     pub(super) phi_slope: f64,
     pub(super) psi_slope: f64,
+    /// The mean precession rate ([`LagrangeTopMotion::mean_precession_rate`]),
+    /// the secular part of φ(t) in `euler_at` (`None` for an infinite period).
+    pub(super) phi_mean: Option<f64>,
     /// The rest of `∫dτ/(1 − u)` and its value at τ₀ (`None` if `b = a`).
     pub(super) minus: Option<(ThirdKind, f64)>,
     /// The rest of `∫dτ/(1 + u)` and its value at τ₀ (`None` if `b = −a`).
@@ -320,6 +323,7 @@ impl LagrangeTopMotion {
             mc,
             phi_slope: 0.0,
             psi_slope: 0.0,
+            phi_mean: None,
             w1: tp.w1,
             w2: tp.w2,
             g: tp.g,
@@ -411,6 +415,7 @@ impl LagrangeTopMotion {
         };
         motion.phi_slope = phi_slope;
         motion.psi_slope = psi_slope;
+        motion.phi_mean = motion.mean_precession_rate();
         motion
     }
 }
