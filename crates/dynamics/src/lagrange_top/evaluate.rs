@@ -235,7 +235,16 @@ impl LagrangeTopMotion {
     /// ```text
     /// u = cos θ = u_b + σ Δ sn²(ν t + τ₀ | m),  φ, ψ: see the type's docs
     /// θ = 2 atan2(√(1 − u), √(1 + u)),  θ̇ = −u̇ / sin θ
+    /// φ = φ₀ + ⟨φ̇⟩ t + (its oscillation about the mean motion, period T)
     /// ```
+    ///
+    /// φ is the mean precession ([`mean_precession_rate`](Self::mean_precession_rate))
+    /// plus a periodic swing formed without cancellation, so that it keeps
+    /// full precision also for a fast top whose φ̇ swings far wider than its
+    /// mean (φ(N T) − φ₀ = N ⟨φ̇⟩ T to ~ε). Whatever the form, the phase
+    /// `ν t` is only as good as ν (a few ulp): after N periods it is off by
+    /// ~ε · 2πN rad, which is what the angles and rates of a fast top lose
+    /// at long times.
     ///
     /// θ ∈ [0, π]; φ and ψ are continuous except for the jumps by ±π where
     /// the axis passes exactly through a vertical (type docs). For the
@@ -313,5 +322,56 @@ impl LagrangeTopMotion {
             e.phi_dot * st * cp - e.theta_dot * sp,
             e.phi_dot * ct + e.psi_dot,
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lagrange_top::{LagrangeTop, LagrangeTopInitial};
+
+    /// The two forms of φ's oscillation, the closed form (just past
+    /// `short_phase`) and the quadrature (up to it), agree where they meet,
+    /// on slow and fast tops, either side of a whole period: to the
+    /// rounding of the closed form, ~ε of the swing `max|φ̇|/ν`.
+    #[test]
+    fn quadrature_and_closed_form_meet() {
+        let cases = [
+            (LagrangeTop::new(1.0, 0.5, 1.0), 0.5, 0.3, 0.2, 20.0),
+            (LagrangeTop::new(1.0, 0.5, 1.0), 2.5, -0.3, -0.7, 3.0),
+            (LagrangeTop::new(2.0, 0.3, -1.5), 2.0, 0.4, 0.1, 5.0),
+            (LagrangeTop::new(1.25, 0.5, -1.0), 2.5, 0.0, 0.3, 1e7),
+            (LagrangeTop::new(1.25, 0.5, 1.0), 0.05, 0.3, 0.02, 30.0),
+        ];
+        for (top, theta, phi_dot, theta_dot, psi_dot) in cases {
+            let init = LagrangeTopInitial {
+                theta,
+                phi_dot,
+                theta_dot,
+                psi_dot,
+                ..Default::default()
+            };
+            let m = top.try_solve(init).unwrap();
+            let mean = m.phi_mean.unwrap();
+            let short = m.short_phase();
+            assert!(short > 0.0, "{init:?}");
+            let period = m.nutation_period().unwrap();
+            let swing = (0..16)
+                .map(|k| (m.euler_at(period * k as f64 / 16.0).phi_dot - mean).abs())
+                .fold(0.0, f64::max);
+            for s in [short, -short] {
+                let s = s * (1.0 + 1e-9);
+                let (sn, cn, dn) = m.jacobi.sn_cn_dn(m.tau0 + s);
+                let t = s / m.nu;
+                let phase = Phase { j: 0.0, s };
+                let closed = m.precession_and_spin(t, phase, sn, cn, dn).0 - mean * t;
+                let quad = m.phi_swing_by_quadrature(s, mean);
+                let tol = 8.0 * f64::EPSILON * swing / m.nu + 1e-12 * quad.abs();
+                assert!(
+                    (closed - quad).abs() <= tol,
+                    "{init:?} s {s:e}: {closed:e} {quad:e} ({tol:e})"
+                );
+            }
+        }
     }
 }

@@ -22,7 +22,9 @@ use crate::elliptic::{JacobiElliptic, carlson_rf};
 /// (partial fractions of `φ̇ = (b − au)/(1 − u²)` and `ψ̇ = ω₃ − u φ̇`; the
 /// integrals of the third kind as in Byrd & Friedman 1971, with a
 /// cancellation-free form for `n < 0`). τ₀ is the incomplete `F` of the
-/// initial phase, signed by the direction of `u̇₀`.
+/// initial phase, signed by the direction of `u̇₀`. φ is evaluated as the
+/// mean precession times t plus its periodic swing about it
+/// ([`LagrangeTopMotion::euler_at`]).
 ///
 /// **Through the vertical.** When `b = a` exactly (θ₀ = 0 with θ̇₀ ≠ 0, or
 /// φ̇₀ chosen so), `u₂ = 1` and the axis passes through the upward vertical.
