@@ -47,8 +47,8 @@ Physics and conventions (kreisel's, see crates/dynamics/src/lagrange_top)
   asserts the two agree to 1e-60 relative. FAST_EXTRA adds single
   regression rows (any spin) to the same file. The band u2 - u1 is ~1e-29 at
   psi'0 = 1e15, so the roots need ~30 digits more than the output.
-* Fast-top angles (`python3 tests/data/gen/lagrange_top.py fast_angles`, about a
-  minute): tests/data/lagrange_top/fast_top_angles.csv holds, for the 25 rows of
+* Fast-top angles (`python3 tests/data/gen/lagrange_top.py fast_angles`, about 3.5
+  minutes): tests/data/lagrange_top/fast_top_angles.csv holds, for the 25 rows of
   the five fast families, phi, theta, psi and their rates at t = 0.3 T, T,
   10.37 T and 1000 T (T the period rounded to f64; each t an f64). No
   trajectory integration and no elliptic functions: with
