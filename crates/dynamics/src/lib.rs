@@ -54,6 +54,7 @@ mod exact;
 mod heavy_top;
 mod integrator;
 mod lagrange_top;
+mod method;
 mod moser_veselov;
 mod moser_veselov_preprocessed;
 mod rigid_body;
@@ -76,6 +77,7 @@ pub use lagrange_top::{
     EulerAnglesAndRates, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, SteadyPrecession,
     TopMotionKind,
 };
+pub use method::{FreeBodyMethod, HeavyTopMethod};
 pub use moser_veselov::MoserVeselov;
 pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;
 pub use rigid_body::{MIN_MOMENT_RATIO, RigidBody};
