@@ -260,22 +260,15 @@ impl FreeBodyMethod {
             Self::Rk4 => Box::new(Rk4),
             Self::Strang => Box::new(AxisStrang),
             Self::Splitting => Box::new(SymmetricTopSplitting),
-            Self::Splitting4 => Box::new(self.composition(&SUZUKI_4)),
-            Self::Splitting6 => Box::new(self.composition(&KAHAN_LI_6)),
-            Self::Splitting8 => Box::new(self.composition(&KAHAN_LI_8)),
+            Self::Splitting4 => Box::new(Composition::new(self.name(), 4, &SUZUKI_4)),
+            Self::Splitting6 => Box::new(Composition::new(self.name(), 6, &KAHAN_LI_6)),
+            Self::Splitting8 => Box::new(Composition::new(self.name(), 8, &KAHAN_LI_8)),
             Self::Dmv => Box::new(MoserVeselov),
             Self::Pdmv4 => Box::new(PreprocessedMoserVeselov::ORDER_4),
             Self::Pdmv6 => Box::new(PreprocessedMoserVeselov::ORDER_6),
             Self::Pdmv8 => Box::new(PreprocessedMoserVeselov::ORDER_8),
             Self::Pdmv10 => Box::new(PreprocessedMoserVeselov::ORDER_10),
         }
-    }
-
-    /// The composition of [`SymmetricTopSplitting`] by `coefficients`,
-    /// named and ordered as this method.
-    fn composition(self, coefficients: &'static crate::CompositionCoefficients) -> Composition {
-        // Only the splitting compositions get here, and they have an order.
-        Composition::new(self.name(), self.order().unwrap_or(u32::MAX), coefficients)
     }
 }
 
