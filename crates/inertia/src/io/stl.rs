@@ -11,7 +11,9 @@
 //! ([`VertexTable`]), so memory is the shared vertices and the index
 //! triangles (24 bytes per triangle for a closed mesh) plus the table while
 //! loading, instead of the file, 72 bytes of corners per triangle and a
-//! merge afterwards.
+//! merge afterwards. From [`SPLIT_MIN`] triangles on, the lookups run on two
+//! threads, each with the table of half the keys ([`split`]), with the
+//! same result.
 //!
 //! ASCII: `solid [name]`, facets of `facet normal …`, `outer loop`, three
 //! (or more, fan-triangulated) `vertex x y z` lines, `endloop`, `endfacet`,
@@ -33,6 +35,8 @@ use glam::DVec3;
 
 use super::vertex_table::VertexTable;
 use super::{Body, Source, vertex_index};
+
+mod split;
 use crate::weld::ExactDedup;
 use crate::{InertiaError, TriMesh};
 
@@ -91,6 +95,10 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
 /// Records read at a time when a binary file is streamed (≈ 400 kB).
 const CHUNK: usize = 8192;
 
+/// Triangles from which a binary file's vertices are merged on two threads
+/// ([`split`]; below, starting the threads costs more than it saves).
+const SPLIT_MIN: usize = 4 * CHUNK;
+
 /// Loads the solids of an STL file on disk.
 ///
 /// A binary file is streamed in chunks of records straight into the vertex
@@ -114,9 +122,18 @@ pub(super) fn load_file(src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
         && is_binary(&head, &mut file).map_err(io)?
     {
         file.seek(SeekFrom::Start(HEADER as u64)).map_err(io)?;
-        let mut soup = Soup::new(n as usize);
-        let mut buffer = vec![0; CHUNK.min(n as usize) * RECORD];
-        let mut left = n as usize;
+        let n = n as usize;
+        if n >= SPLIT_MIN {
+            let (vertices, triangles) = split::merge_records(n, CHUNK, |b| file.read_exact(b))
+                .map_err(|e| match e {
+                    split::SplitError::Io(e) => io(e),
+                    split::SplitError::Bad(reason) => src.error(reason),
+                })?;
+            return binary_body(src, vertices, triangles);
+        }
+        let mut soup = Soup::new(n);
+        let mut buffer = vec![0; CHUNK.min(n) * RECORD];
+        let mut left = n;
         while left > 0 {
             let take = CHUNK.min(left);
             let chunk = &mut buffer[..take * RECORD];
@@ -225,22 +242,11 @@ impl Soup {
 
     /// Adds the triangles of these records, merging repeated vertices.
     fn push(&mut self, records: &[[u8; RECORD]]) -> Result<(), String> {
+        non_finite(records, self.triangles.len())?;
         for record in records {
-            let t = self.triangles.len();
             let mut triangle = [0; 3];
-            for (k, corner) in triangle.iter_mut().enumerate() {
-                let at = |i: usize| {
-                    let o = 12 + 12 * k + 4 * i;
-                    f32::from_le_bytes([record[o], record[o + 1], record[o + 2], record[o + 3]])
-                };
-                let xyz = [at(0), at(1), at(2)];
-                if !xyz.iter().all(|c| c.is_finite()) {
-                    let v = DVec3::from_array(xyz.map(f64::from));
-                    return Err(format!(
-                        "triangle {t}, corner {k} has a non-finite coordinate {v}"
-                    ));
-                }
-                *corner = self.table.index(xyz)?;
+            for (k, index) in triangle.iter_mut().enumerate() {
+                *index = self.table.index(corner(record, k))?;
             }
             self.triangles.push(triangle);
         }
@@ -251,6 +257,34 @@ impl Soup {
     fn finish(self) -> (Vec<DVec3>, Vec<[u32; 3]>) {
         (self.table.into_vertices(), self.triangles)
     }
+}
+
+/// Corner `k` (0, 1, 2) of a binary triangle record.
+#[inline]
+fn corner(record: &[u8; RECORD], k: usize) -> [f32; 3] {
+    let at = |i: usize| {
+        let o = 12 + 12 * k + 4 * i;
+        f32::from_le_bytes([record[o], record[o + 1], record[o + 2], record[o + 3]])
+    };
+    [at(0), at(1), at(2)]
+}
+
+/// The first corner with a non-finite coordinate, as a reason naming it
+/// (`first` is the index of the first record).
+fn non_finite(records: &[[u8; RECORD]], first: usize) -> Result<(), String> {
+    for (t, record) in records.iter().enumerate() {
+        for k in 0..3 {
+            let xyz = corner(record, k);
+            if !xyz.iter().all(|c| c.is_finite()) {
+                let v = DVec3::from_array(xyz.map(f64::from));
+                return Err(format!(
+                    "triangle {}, corner {k} has a non-finite coordinate {v}",
+                    first + t
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// One solid being read: exact repeats of a vertex share one index as they
@@ -451,6 +485,51 @@ mod tests {
         assert_eq!(streamed[0].mesh.triangles().len(), 9800);
         // (n + 1)² grid points: repeats and the signed zeros merged.
         assert_eq!(streamed[0].mesh.vertices().len(), 71 * 71);
+    }
+
+    /// The records of `bytes` through [`split::merge_records`], `chunk` at a time.
+    fn split_merge(bytes: &[u8], chunk: usize) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
+        let count = (bytes.len() - HEADER) / RECORD;
+        let mut rest = &bytes[HEADER..];
+        split::merge_records(count, chunk, |b| rest.read_exact(b)).map_err(|e| match e {
+            split::SplitError::Io(e) => e.to_string(),
+            split::SplitError::Bad(reason) => reason,
+        })
+    }
+
+    #[test]
+    fn two_threads_number_vertices_exactly_as_one_table() {
+        // 9800 triangles in chunks of 333: many joins, vertices of both
+        // halves first met in every chunk, the signed zeros merged.
+        let bytes = grid_stl(70);
+        let one = parse_binary(&bytes).unwrap();
+        for chunk in [333, 8192] {
+            let two = split_merge(&bytes, chunk).unwrap();
+            assert_eq!(two.1, one.1);
+            let bits = |v: &[DVec3]| -> Vec<[u64; 3]> {
+                v.iter().map(|p| p.to_array().map(f64::to_bits)).collect()
+            };
+            assert_eq!(bits(&two.0), bits(&one.0));
+        }
+        assert_eq!(one.0.len(), 71 * 71);
+        // The origin keeps the sign its first corner had.
+        assert_eq!(one.0[0].x.to_bits(), (-0.0f64).to_bits());
+    }
+
+    #[test]
+    fn two_threads_name_the_first_non_finite_corner_and_short_reads() {
+        let mut bytes = grid_stl(70);
+        let at = HEADER + 9000 * RECORD + 12 + 24 + 8;
+        bytes[at..at + 4].copy_from_slice(&f32::NAN.to_le_bytes());
+        let err = split_merge(&bytes, 333).unwrap_err();
+        assert!(
+            err.contains("triangle 9000, corner 2 has a non-finite"),
+            "{err}"
+        );
+        let count = (bytes.len() - HEADER) / RECORD;
+        let mut short = &bytes[HEADER..HEADER + 100 * RECORD];
+        let read = split::merge_records(count, 64, |b| short.read_exact(b));
+        assert!(matches!(read, Err(split::SplitError::Io(_))));
     }
 
     #[test]
