@@ -23,7 +23,13 @@
 
 use glam::DVec3;
 
+use crate::mesh_check::Topology;
 use crate::{InertiaError, TriMesh};
+
+/// Triangles from which the check's topology is found on a second thread
+/// while the tolerance pass runs (below, starting the thread costs more
+/// than it saves).
+const PARALLEL_MIN: usize = 1 << 15;
 
 /// Default relative weld tolerance: `1e-6 ×` the bounding-box diagonal.
 ///
@@ -207,13 +213,9 @@ fn find(parent: &mut [u32], mut i: u32) -> u32 {
     i
 }
 
-/// Merges distinct vertices within `tol`, returning the new vertices and
-/// rewriting the triangles; `None` when nothing is within `tol`.
-fn weld_near(
-    vertices: &[DVec3],
-    triangles: &mut [[u32; 3]],
-    tol: f64,
-) -> Option<(Vec<DVec3>, Welded)> {
+/// Distinct vertices within `tol` merged: the new index of each vertex, the
+/// vertices kept and the report; `None` when nothing is within `tol`.
+fn weld_near(vertices: &[DVec3], tol: f64) -> Option<(Vec<u32>, Vec<DVec3>, Welded)> {
     // An oblique direction, so that the axis-aligned planes of CAD meshes
     // do not put many vertices at one projection.
     let d = DVec3::new(1.0, 0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
@@ -273,10 +275,7 @@ fn weld_near(
             welded.max_move = welded.max_move.max(moved);
         }
     }
-    for t in triangles.iter_mut() {
-        *t = t.map(|i| new_index[i as usize]);
-    }
-    Some((kept, welded))
+    Some((new_index, kept, welded))
 }
 
 /// The diagonal of the axis-aligned bounding box.
@@ -331,12 +330,33 @@ impl TriMesh {
             tolerance: tol,
             ..Welded::default()
         };
-        let (vertices, report) = if tol > 0.0 {
-            weld_near(&vertices, &mut triangles, tol).unwrap_or((vertices, unchanged))
+        if tol == 0.0 {
+            return Ok((TriMesh::from_checked_parts(vertices, triangles), unchanged));
+        }
+        // The check's topology is found from the triangles on another
+        // thread while the tolerance pass runs here; it is kept only when
+        // that pass leaves the triangles as they are (the common case).
+        let (near, topology) = if triangles.len() >= PARALLEL_MIN {
+            std::thread::scope(|scope| {
+                let topology = scope.spawn(|| Topology::of_solid(&triangles, vertices.len()));
+                let near = weld_near(&vertices, tol);
+                (near, topology.join().ok().flatten())
+            })
         } else {
-            (vertices, unchanged)
+            (weld_near(&vertices, tol), None)
         };
-        Ok((TriMesh::from_checked_parts(vertices, triangles), report))
+        let Some((new_index, kept, report)) = near else {
+            let mesh = TriMesh::from_checked_parts(vertices, triangles);
+            let mesh = match topology {
+                Some(t) => mesh.with_topology(t),
+                None => mesh,
+            };
+            return Ok((mesh, unchanged));
+        };
+        for t in &mut triangles {
+            *t = t.map(|i| new_index[i as usize]);
+        }
+        Ok((TriMesh::from_checked_parts(kept, triangles), report))
     }
 }
 
