@@ -63,7 +63,7 @@ fn key_of(bits: [u32; 3]) -> [u32; 3] {
 
 /// A corner as read, with its key and hash, computed once.
 #[derive(Clone, Copy)]
-pub(super) struct Corner {
+struct Corner {
     bits: [u32; 3],
     key: [u32; 3],
     hash: u64,
@@ -72,7 +72,7 @@ pub(super) struct Corner {
 impl Corner {
     /// The corner with these `f32` coordinates.
     #[inline]
-    pub(super) fn new(xyz: [f32; 3]) -> Self {
+    fn new(xyz: [f32; 3]) -> Self {
         let bits = xyz.map(f32::to_bits);
         let key = key_of(bits);
         Self {
@@ -81,14 +81,15 @@ impl Corner {
             hash: hash(key),
         }
     }
+}
 
-    /// Which of two tables holds this corner's vertex when the key space is
-    /// split in halves (a hash bit that neither the slot, the tag's use nor
-    /// the recent cache depends on).
-    #[inline]
-    pub(super) fn half(&self) -> usize {
-        (self.hash >> 39) as usize & 1
-    }
+/// Which of two tables holds the vertex at `xyz` when the key space is
+/// split in halves: the top bit of one multiply of the key words (cheaper
+/// than the table's hash, which a thread then computes only for its half).
+#[inline]
+pub(super) fn half(xyz: [f32; 3]) -> usize {
+    let [x, y, z] = key_of(xyz.map(f32::to_bits));
+    ((x ^ y.rotate_left(11) ^ z.rotate_left(22)).wrapping_mul(0x9E37_79B1) >> 31) as usize
 }
 
 /// The `f64` point of a vertex's `f32` bits (exact).
@@ -132,11 +133,8 @@ impl VertexTable {
     }
 
     /// [`VertexTable::index`] of a corner whose hash is known.
-    ///
-    /// # Errors
-    /// As [`VertexTable::index`].
     #[inline]
-    pub(super) fn index_of(&mut self, corner: Corner) -> Result<u32, String> {
+    fn index_of(&mut self, corner: Corner) -> Result<u32, String> {
         let Corner { bits, key, hash: h } = corner;
         let recent = (h >> 40) as usize & (RECENT - 1);
         let r = self.recent[recent];

@@ -1,6 +1,6 @@
 //! Binary STL records merged into shared vertices on two threads.
 //!
-//! The key space is split in two halves by a hash bit ([`Corner::half`]);
+//! The key space is split in two halves by a bit of the key ([`half`]);
 //! each half has its own [`VertexTable`] on its own thread, which sees every
 //! record of a chunk but looks up only the corners of its half, numbering
 //! its vertices in the order their first corners come. The calling thread
@@ -20,7 +20,7 @@ use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
 use glam::DVec3;
 
 use super::super::vertex_index;
-use super::super::vertex_table::{Corner, VertexTable, point};
+use super::super::vertex_table::{VertexTable, half, point};
 use super::{RECORD, corner, non_finite};
 
 /// Worker 0's mark for a corner of the other half.
@@ -60,11 +60,11 @@ pub(super) fn merge_records(
     std::thread::scope(|scope| {
         let mut to = Vec::new();
         let mut back = Vec::new();
-        for half in 0..2 {
+        for mine in 0..2 {
             let (chunks_tx, chunks_rx) = sync_channel(2);
             let (parts_tx, parts_rx) = sync_channel(2);
             // A closed mesh has about half as many vertices as triangles.
-            scope.spawn(move || work(half, count / 4, &chunks_rx, &parts_tx));
+            scope.spawn(move || work(mine, count / 4, &chunks_rx, &parts_tx));
             to.push(chunks_tx);
             back.push(parts_rx);
         }
@@ -106,9 +106,9 @@ fn stopped() -> SplitError {
     SplitError::Bad("internal error: a vertex worker stopped".to_owned())
 }
 
-/// Worker `half`: looks up the corners of its half of every chunk.
+/// Worker `mine`: looks up the corners of its half of every chunk.
 fn work(
-    half: usize,
+    mine: usize,
     expected: usize,
     chunks: &Receiver<Arc<Vec<u8>>>,
     parts: &SyncSender<Result<Part, String>>,
@@ -117,13 +117,13 @@ fn work(
     while let Ok(bytes) = chunks.recv() {
         let (records, _) = bytes.as_chunks::<RECORD>();
         let before = table.len();
-        let mut ids = Vec::with_capacity(if half == 0 { 3 } else { 2 } * records.len());
+        let mut ids = Vec::with_capacity(if mine == 0 { 3 } else { 2 } * records.len());
         let looked_up = records.iter().try_for_each(|record| {
             for k in 0..3 {
-                let c = Corner::new(corner(record, k));
-                if c.half() == half {
-                    ids.push(table.index_of(c)?);
-                } else if half == 0 {
+                let xyz = corner(record, k);
+                if half(xyz) == mine {
+                    ids.push(table.index(xyz)?);
+                } else if mine == 0 {
                     ids.push(OTHER);
                 }
             }
