@@ -15,8 +15,13 @@
 //!   vertex count as inside the load for indexed formats, and for binary STL
 //!   whose loader already shares exact repeats);
 //! - `parse` = `parse+merge` − `merge`;
-//! - `check`: [`prepare_solid`] (degenerate triangles, closure, manifold,
-//!   orientation);
+//! - `check (fresh)`: [`prepare_solid`] on a copy of the loaded mesh built
+//!   from its parts, the whole check: degenerate triangles, closure,
+//!   manifold, orientation;
+//! - `check`: [`prepare_solid`] on the loaded mesh as the CLI runs it (from
+//!   32768 triangles the weld has found the topology on a second thread
+//!   beside its tolerance pass, so what is left is orienting, the volume
+//!   signs and the degenerate triangles);
 //! - `integrate`: [`MeshMoments::solid`] and the mass properties;
 //! - `tobj` (OBJ only): `tobj::load_obj_buf` on the raw file, the third-party
 //!   parser's share;
@@ -40,7 +45,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use kreisel::inertia::io::{MeshFormat, load_bodies, load_bodies_from_bytes};
-use kreisel::inertia::{MeshMoments, Weld, prepare_solid};
+use kreisel::inertia::{MeshMoments, TriMesh, Weld, prepare_solid};
 
 /// CPU time of this thread in seconds, or wall time if unavailable.
 fn now() -> f64 {
@@ -98,6 +103,9 @@ fn phases(path: &Path) -> Result<(), String> {
     let (merged, merge, merge_mem) = timed(|| mesh.clone().welded(Weld::default()));
     let merged = merged.map_err(|e| e.to_string())?.0;
     assert_eq!(merged.vertices().len(), mesh.vertices().len());
+    let parts = || TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec());
+    let (fresh, check_fresh, _) = timed(|| prepare_solid(parts()));
+    fresh.map_err(|e| e.to_string())?;
     let (checked, check, check_mem) = timed(|| prepare_solid(mesh.clone()));
     let checked = checked.map_err(|e| e.to_string())?;
     let (mass, integrate, _) = timed(|| MeshMoments::solid(&checked.mesh).mass_properties(1000.0));
@@ -132,6 +140,7 @@ fn phases(path: &Path) -> Result<(), String> {
         ("parse+merge", ns(load)),
         ("merge", ns(merge)),
         ("parse", ns(load - merge)),
+        ("check (fresh)", ns(check_fresh)),
         ("check", ns(check)),
         ("integrate", ns(integrate)),
         ("load_bodies", ns(load_path)),
