@@ -26,11 +26,11 @@
 //! - `tobj` (OBJ only): `tobj::load_obj_buf` on the raw file, the third-party
 //!   parser's share;
 //! - `load_bodies`: [`load_bodies`] from the path (binary STL streams the
-//!   file instead of reading it whole, and from 32768 triangles merges its
-//!   vertices on two worker threads, whose time this thread's figure leaves
-//!   out); `load_bodies wall` is its wall-clock time and `load_bodies
-//!   process CPU` the whole process's CPU time over it (user + system, all
-//!   threads; from `/proc/self/stat` in ticks of 10 ms, so ±10 ns per
+//!   file instead of reading it whole; from 32768 triangles the weld finds
+//!   the check's topology on a second thread, whose time this thread's
+//!   figure leaves out); `load_bodies wall` is its wall-clock time and
+//!   `load_bodies process CPU` the whole process's CPU time over it (user +
+//!   system, all threads; from `/proc/self/stat` in ticks of 10 ms, so ±10 ns per
 //!   triangle at 10⁶ triangles).
 //!
 //! `… peak B/tri`: how far the process's peak resident memory rose above its

@@ -23,6 +23,11 @@ pub struct TriMesh {
     /// [`TriMesh::welded`] would produce, so it is skipped. Set by loaders
     /// that merge exact repeats as they read; cleared by any change.
     exact_unique: bool,
+    /// Known to be numbered in order of first use with none unused, but
+    /// perhaps with bit-identical vertices (each repeat after its first):
+    /// [`TriMesh::welded`] skips its exact pass and merges the repeats in
+    /// its tolerance pass. Set by loaders; cleared by any change.
+    first_use: bool,
     /// The closed, orientable topology of `triangles`, when found while the
     /// mesh was welded (on another thread, beside the tolerance pass), so
     /// that [`crate::prepare_solid`] need not find it again. It depends on
@@ -80,6 +85,7 @@ impl TriMesh {
             vertices,
             triangles,
             exact_unique: false,
+            first_use: false,
             topology: None,
         })
     }
@@ -109,6 +115,7 @@ impl TriMesh {
             vertices,
             triangles,
             exact_unique: false,
+            first_use: false,
             topology: None,
         }
     }
@@ -119,6 +126,18 @@ impl TriMesh {
     pub(crate) fn known_exact_unique(mut self) -> Self {
         self.exact_unique = true;
         self
+    }
+
+    /// Marks the mesh as numbered in order of first use, none unused, exact
+    /// repeats possible (the caller's guarantee; see the field).
+    pub(crate) fn known_first_use(mut self) -> Self {
+        self.first_use = true;
+        self
+    }
+
+    /// Whether [`TriMesh::known_first_use`] holds.
+    pub(crate) fn is_first_use(&self) -> bool {
+        self.first_use
     }
 
     /// The mesh with the topology of its triangles attached (see the field).
@@ -214,6 +233,7 @@ impl TriMesh {
             });
         }
         self.exact_unique = false;
+        self.first_use = false;
         for v in &mut self.vertices {
             *v *= factor;
         }
@@ -261,6 +281,7 @@ impl TriMesh {
             });
         }
         self.exact_unique = false;
+        self.first_use = false;
         for v in &mut self.vertices {
             *v += offset;
         }
