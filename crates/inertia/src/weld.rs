@@ -13,6 +13,11 @@
 //!    finds every candidate pair, and the exact distance decides. Meshes
 //!    without near-duplicates (the common case) cost only the sort.
 //!
+//! Loaders that already number vertices in order of first use mark the
+//! mesh: pass 1 is skipped, and when exact repeats may remain (the binary
+//! STL loader's provisional numbering) pass 2 merges them too, since equal
+//! points have equal projections; they are not counted as welded.
+//!
 //! Chains: the clusters are the connected components of the graph
 //! "within `tol`" (union–find), i.e. the transitive closure. The result does
 //! not depend on vertex order, and a chain of vertices each within `tol` of
