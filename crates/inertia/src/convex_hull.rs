@@ -7,7 +7,7 @@
 //! hull vertices and encloses 3.4 % of the true volume; on a 1 m × 1 mm × 1 m
 //! one of 2000 points it returns an inside-out hull (volume −1.7 %), and it
 //! reports neither. The hull of an affine image is the affine image of the
-//! hull, so kreisel hands parry the points in their *whitened* frame (the
+//! hull, so kreisel builds the hull of the points in their *whitened* frame (the
 //! principal axes of the point cloud, each scaled to unit half-extent),
 //! where every set is round, and maps the hull's vertices back to the input
 //! points exactly (by identity, not by the inverse map). Measured on the sets
@@ -18,16 +18,22 @@
 //! Before the hull is built, exact duplicates are dropped and an
 //! Akl–Toussaint prefilter discards every point strictly inside the hull of
 //! the extreme points in 256 directions (a point inside a polytope spanned
-//! by input points is no hull vertex). parry's time grows quickly with the
-//! number of points it sees (1 M points in a ball: 2.0 s; 1 M on a thin
-//! spherical shell: 25 s), so the prefilter decides the time on big meshes;
-//! it cannot help when most points are hull vertices (a finely tessellated
-//! sphere), and parry stays slow there. Measured (release, 2 cores shared):
-//! a bumpy sphere of 2.56 M triangles (1.28 M distinct points, 53 k on the
-//! hull): the hull takes about 3 s (distinct 0.3 s, prefilter to 152 k
-//! candidates 1.4 s, parry 1.5 s, check a fraction); `kreisel inertia
-//! --hull` end to end 11.6 s, of which 9 s load the STL (was 54 s). A smooth UV sphere of the
-//! same size, every point on the hull: over 300 s, all in parry.
+//! by input points is no hull vertex). The hull itself is kreisel's own
+//! conflict-list quickhull ([`crate::quickhull`]), chosen by measurement:
+//! parry 0.31's quickhull grows badly with the hull's size (a UV sphere of
+//! 1.28 M points, all on the hull: over 300 s; 1 M points on a thin shell:
+//! 25 s), and scipy's Qhull takes 25 s on that sphere.
+//! Measured (release, `kreisel inertia FILE --hull --format json`, 2 shared
+//! cores; `tests/data/gen/hull_sphere.py` makes the files):
+//!
+//! ```text
+//! input (2.56 M triangles, 1.28 M points)  hull vertices  end to end  (was)
+//! UV sphere, every point on the hull       1 278 402      6.4 s       > 300 s
+//! bumpy sphere                               138 759      2.2 s       11.6 s
+//! ```
+//!
+//! with volumes within 2e-14 of scipy's Qhull on the same points. For the
+//! UV sphere: prefilter 0.6 s (keeps every point), quickhull 2.5 s, check 2 s.
 //!
 //! Nothing is trusted: the result must be a closed surface in which every
 //! edge is used once in each direction (V − E + F = 2), with positive
@@ -37,15 +43,15 @@
 //! Containment is tested by a walk over the hull's faces that maximises the
 //! linear function `n·(p − c) / n·(v − c)` on the polar dual (the simplex
 //! method's argument: on a convex polytope a local maximum is the global
-//! one), so the check costs about √F per point instead of F. The points the
+//! one); the points are taken in the order of their direction's cell on a
+//! cube map, each walk starting where the last one ended, so a walk is a
+//! few steps instead of F tests. The points the
 //! prefilter drops are inside a polytope whose corners are checked points,
 //! so inside the hull as well.
 
-use std::collections::HashMap;
-
 use glam::{DMat3, DVec3};
-use parry3d_f64::math::Vector as ParryVector;
 
+use crate::quickhull::quickhull;
 use crate::{InertiaError, PrincipalAxes, TriMesh};
 
 /// A point set thinner than this, relative to its largest extent, spans no
@@ -68,8 +74,8 @@ const PREFILTER_MARGIN: f64 = 1e-9;
 /// # Errors
 /// [`InertiaError::DegenerateHull`] for fewer than four distinct points, or
 /// points that all lie on one line or in one plane (within `1e-10` of their
-/// size); [`InertiaError::HullCheckFailed`] if the hull parry returns fails
-/// the checks (not closed, not outward, not convex, or missing a point).
+/// size); [`InertiaError::HullCheckFailed`] if quickhull gives up or its
+/// hull fails the checks (not closed, not outward, not convex, or missing a point).
 ///
 /// ```
 /// use glam::DVec3;
@@ -93,33 +99,13 @@ pub fn convex_hull(mesh: &TriMesh) -> Result<TriMesh, InertiaError> {
     let frame = Whitening::of(&points)?;
     let white: Vec<DVec3> = points.iter().map(|&p| frame.apply(p)).collect();
     let candidates = prefilter(&white);
-    let parry_points: Vec<ParryVector> = candidates
-        .iter()
-        .map(|&i| crate::to_parry(white[i]))
-        .collect();
-    let (hull_points, triangles) = parry3d_f64::transformation::try_convex_hull(&parry_points)
-        .map_err(|e| InertiaError::HullCheckFailed {
-            points: points.len(),
-            reason: format!("parry's quickhull failed: {e:?}"),
-        })?;
-    // parry copies the points it keeps: find each one's input index by its bits.
-    let index_of: HashMap<[u64; 3], usize> =
-        candidates.iter().map(|&i| (bits(white[i]), i)).collect();
-    let mut hull_index = Vec::with_capacity(hull_points.len());
-    for p in &hull_points {
-        let i = index_of.get(&bits(crate::from_parry(*p))).ok_or_else(|| {
-            InertiaError::HullCheckFailed {
-                points: points.len(),
-                reason: "parry returned a vertex that is no input point".into(),
-            }
-        })?;
-        hull_index.push(*i);
-    }
-    let white_hull: Vec<DVec3> = hull_index.iter().map(|&i| white[i]).collect();
     let fail = |reason: String| InertiaError::HullCheckFailed {
         points: points.len(),
         reason,
     };
+    let (hull_index, triangles) =
+        quickhull(&white, &candidates).map_err(|e| fail(format!("quickhull: {e}")))?;
+    let white_hull: Vec<DVec3> = hull_index.iter().map(|&i| white[i]).collect();
     check_hull(&white_hull, &triangles, &candidates, &white).map_err(fail)?;
     let vertices = hull_index.iter().map(|&i| points[i]).collect();
     TriMesh::try_new(vertices, triangles)
@@ -238,14 +224,10 @@ fn prefilter(white: &[DVec3]) -> Vec<usize> {
     let mut extremes: Vec<usize> = best.iter().map(|b| b.0).collect();
     extremes.sort_unstable();
     extremes.dedup();
-    let pts: Vec<ParryVector> = extremes
-        .iter()
-        .map(|&i| crate::to_parry(white[i]))
-        .collect();
-    let Ok((hp, tris)) = parry3d_f64::transformation::try_convex_hull(&pts) else {
+    let Ok((hp, tris)) = quickhull(white, &extremes) else {
         return all();
     };
-    let hp: Vec<DVec3> = hp.into_iter().map(crate::from_parry).collect();
+    let hp: Vec<DVec3> = hp.into_iter().map(|i| white[i]).collect();
     let Ok(neighbours) = face_graph(&tris) else {
         return all();
     };
@@ -258,7 +240,8 @@ fn prefilter(white: &[DVec3]) -> Vec<usize> {
     {
         return all();
     }
-    let mut starts = vec![0; CELLS];
+    let map = CubeMap::for_faces(tris.len());
+    let mut starts = vec![0; map.len()];
     (0..white.len())
         .filter(|&i| {
             let p = white[i];
@@ -266,7 +249,7 @@ fn prefilter(white: &[DVec3]) -> Vec<usize> {
                 let (n, off) = planes[k];
                 n.dot(p) / off
             };
-            let start = &mut starts[cell(p)];
+            let start = &mut starts[map.cell(p)];
             *start = climb(*start, &neighbours, &ratio);
             // Every plane at least `nearest · (1 − max ratio)` away.
             nearest * (1.0 - ratio(*start)) <= PREFILTER_MARGIN
@@ -274,27 +257,45 @@ fn prefilter(white: &[DVec3]) -> Vec<usize> {
         .collect()
 }
 
-/// Cells of [`cell`]: 6 cube faces of 16 × 16.
-const CELLS: usize = 6 * 256;
+/// Directions binned on a cube map of `side × side` cells per cube face, so
+/// that each face walk starts where the last walk in that direction ended.
+struct CubeMap {
+    /// Cells along each edge of a cube face.
+    side: usize,
+}
 
-/// The cell of the direction of `p` on a cube map, so that each face walk
-/// starts where the last walk in that direction ended.
-fn cell(p: DVec3) -> usize {
-    let a = p.abs();
-    let (axis, u, v, w) = if a.x >= a.y && a.x >= a.z {
-        (0, p.y, p.z, p.x)
-    } else if a.y >= a.z {
-        (1, p.z, p.x, p.y)
-    } else {
-        (2, p.x, p.y, p.z)
-    };
-    let side = usize::from(w < 0.0);
-    let m = w.abs();
-    let bin = |t: f64| {
-        let b = ((t / m + 1.0) * 8.0) as usize; // NaN and 0/0 give 0
-        b.min(15)
-    };
-    (2 * axis + side) * 256 + bin(u) * 16 + bin(v)
+impl CubeMap {
+    /// A map with about 48 of a hull's `faces` per cell (at least 16 × 16
+    /// cells per cube face), so that a walk from the cell's last face is short.
+    fn for_faces(faces: usize) -> Self {
+        let side = ((faces / 48) as f64).sqrt() as usize;
+        Self {
+            side: side.clamp(16, 1024),
+        }
+    }
+
+    /// The number of cells.
+    fn len(&self) -> usize {
+        6 * self.side * self.side
+    }
+
+    /// The cell of the direction of `p` (the origin and NaN fall in cell 0).
+    fn cell(&self, p: DVec3) -> usize {
+        let a = p.abs();
+        let (axis, u, v, w) = if a.x >= a.y && a.x >= a.z {
+            (0, p.y, p.z, p.x)
+        } else if a.y >= a.z {
+            (1, p.z, p.x, p.y)
+        } else {
+            (2, p.x, p.y, p.z)
+        };
+        let side = usize::from(w < 0.0);
+        let m = w.abs();
+        let half = self.side as f64 / 2.0;
+        // NaN and 0/0 give 0.
+        let bin = |t: f64| (((t / m + 1.0) * half) as usize).min(self.side - 1);
+        ((2 * axis + side) * self.side + bin(u)) * self.side + bin(v)
+    }
 }
 
 /// Every edge convex: the far corner of each neighbouring triangle is on
@@ -341,29 +342,45 @@ fn fibonacci_sphere(n: usize) -> Vec<DVec3> {
 
 /// The face across each edge of each triangle of a closed surface in which
 /// every edge is used once in each direction, or where that fails.
+///
+/// The edges are sorted by their undirected key (a sort, not a hash map: 3
+/// times faster on the 7.7 M edge uses of a 2.56 M-triangle hull).
 fn face_graph(triangles: &[[u32; 3]]) -> Result<Vec<[usize; 3]>, String> {
-    let mut edge_face: HashMap<(u32, u32), usize> = HashMap::with_capacity(3 * triangles.len());
+    // (undirected key, use index 3k + e, runs from the smaller end).
+    let mut uses: Vec<(u64, u32, bool)> = Vec::with_capacity(3 * triangles.len());
     for (k, t) in triangles.iter().enumerate() {
         for e in 0..3 {
             let (a, b) = (t[e], t[(e + 1) % 3]);
-            if a == b || edge_face.insert((a, b), k).is_some() {
-                return Err(format!("triangle {k} repeats an edge or a vertex"));
+            if a == b {
+                return Err(format!("triangle {k} repeats vertex {a}"));
             }
+            let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+            let at = u32::try_from(3 * k + e).map_err(|_| "over 2³² edge uses")?;
+            uses.push((key, at, a < b));
         }
     }
-    triangles
-        .iter()
-        .map(|t| {
-            let mut across = [0; 3];
-            for e in 0..3 {
-                let (a, b) = (t[e], t[(e + 1) % 3]);
-                across[e] = *edge_face
-                    .get(&(b, a))
-                    .ok_or_else(|| format!("the surface is open at edge {a}-{b}"))?;
-            }
-            Ok(across)
-        })
-        .collect()
+    uses.sort_unstable_by_key(|u| u.0);
+    let mut neighbours = vec![[0; 3]; triangles.len()];
+    let mut rest = uses.as_slice();
+    while let [first, tail @ ..] = rest {
+        let (a, b) = ((first.0 >> 32) as u32, first.0 as u32);
+        let [second, tail @ ..] = tail else {
+            return Err(format!("the surface is open at edge {a}-{b}"));
+        };
+        if second.0 != first.0 {
+            return Err(format!("the surface is open at edge {a}-{b}"));
+        }
+        if second.2 == first.2 || tail.first().is_some_and(|u| u.0 == first.0) {
+            return Err(format!(
+                "edge {a}-{b} is used more than once in one direction"
+            ));
+        }
+        let (x, y) = (first.1 as usize, second.1 as usize);
+        neighbours[x / 3][x % 3] = y / 3;
+        neighbours[y / 3][y % 3] = x / 3;
+        rest = tail;
+    }
+    Ok(neighbours)
 }
 
 /// Each triangle's unit normal and its distance from `c` (zero normal for a
@@ -428,8 +445,16 @@ fn check_hull(
     }
     // Containment: a walk to the face of largest n·(p − c)/off.
     let reach = planes.iter().map(|p| p.1).fold(0.0_f64, f64::max);
-    let mut starts = vec![0; CELLS];
-    for &i in candidates {
+    // Points in cube-map cell order, each walk starting where the last one
+    // ended: near its point.
+    let map = CubeMap::for_faces(f);
+    let mut order: Vec<(usize, usize)> = candidates
+        .iter()
+        .map(|&i| (map.cell(white[i] - c), i))
+        .collect();
+    order.sort_unstable();
+    let mut last = 0;
+    for (_, i) in order {
         let p = white[i] - c;
         let ratio = |k: usize| {
             let (n, off) = planes[k];
@@ -439,9 +464,8 @@ fn check_hull(
                 f64::NEG_INFINITY
             }
         };
-        let start = &mut starts[cell(p)];
-        let best = climb(*start, &neighbours, &ratio);
-        *start = best;
+        let best = climb(last, &neighbours, &ratio);
+        last = best;
         let excess = (ratio(best) - 1.0) * reach;
         if excess.is_nan() || excess > CONTAIN_TOLERANCE {
             return Err(format!(
@@ -499,6 +523,8 @@ fn climb(start: usize, neighbours: &[[usize; 3]], value: &dyn Fn(usize) -> f64) 
 
 #[cfg(test)]
 mod tests {
+    use std::collections::HashMap;
+
     use super::*;
     use crate::MeshMoments;
 
@@ -587,9 +613,9 @@ mod tests {
         let points = ellipsoid_points(300, DVec3::new(1.0, 0.3, 0.01));
         let w = Whitening::of(&points).unwrap();
         let white: Vec<DVec3> = points.iter().map(|&p| w.apply(p)).collect();
-        let parry: Vec<ParryVector> = white.iter().map(|&p| crate::to_parry(p)).collect();
-        let (hp, tris) = parry3d_f64::transformation::try_convex_hull(&parry).unwrap();
-        let hull: Vec<DVec3> = hp.into_iter().map(crate::from_parry).collect();
+        let all: Vec<usize> = (0..white.len()).collect();
+        let (hp, tris) = quickhull(&white, &all).unwrap();
+        let hull: Vec<DVec3> = hp.into_iter().map(|i| white[i]).collect();
         let mut edge_face = HashMap::new();
         for (k, t) in tris.iter().enumerate() {
             for e in 0..3 {
