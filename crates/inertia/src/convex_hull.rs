@@ -20,20 +20,23 @@
 //! the extreme points in 256 directions (a point inside a polytope spanned
 //! by input points is no hull vertex). The hull itself is kreisel's own
 //! conflict-list quickhull ([`crate::quickhull`]), chosen by measurement:
-//! parry 0.31's quickhull grows badly with the hull's size (a UV sphere of
-//! 1.28 M points, all on the hull: over 300 s; 1 M points on a thin shell:
-//! 25 s), and scipy's Qhull takes 25 s on that sphere.
-//! Measured (release, `kreisel inertia FILE --hull --format json`, 2 shared
-//! cores; `tests/data/gen/hull_sphere.py` makes the files):
+//! parry 0.31's quickhull grows badly with the hull's size, scipy's Qhull
+//! takes 25 s on the UV sphere below, `chull` 0.2.4 (f64, "fast" mode)
+//! over 120 s on a tenth of it and 17 s on a tenth of the bumpy one, and
+//! `quickhull` 0.1 is f32 only (no exact vertex identity). Measured
+//! (release, `/usr/bin/time kreisel inertia FILE --hull --format json`, 2
+//! shared cores, user time; `tests/data/gen/hull_sphere.py` makes the files):
 //!
 //! ```text
-//! input (2.56 M triangles, 1.28 M points)  hull vertices  end to end  (was)
-//! UV sphere, every point on the hull       1 278 402      6.4 s       > 300 s
-//! bumpy sphere                               138 759      2.2 s       11.6 s
+//! input (2.56 M triangles, 1.28 M points)  hull vertices  now     parry
+//! UV sphere, every point on the hull       1 277 351      5.1 s   165 s (305 s wall)
+//! bumpy sphere                               138 759      1.8 s   7.2 s
 //! ```
 //!
-//! with volumes within 2e-14 of scipy's Qhull on the same points. For the
-//! UV sphere: prefilter 0.6 s (keeps every point), quickhull 2.5 s, check 2 s.
+//! with volumes within 3e-14 of scipy's Qhull on the same points (UV
+//! sphere: 1051 points near the poles lie within 2e-10 of the half-extent
+//! of the hull's faces and are left out; Qhull keeps all). UV sphere phases:
+//! prefilter 0.6 s (keeps every point), quickhull 2.5 s, check 2 s.
 //!
 //! Nothing is trusted: the result must be a closed surface in which every
 //! edge is used once in each direction (V − E + F = 2), with positive
@@ -51,7 +54,7 @@
 
 use glam::{DMat3, DVec3};
 
-use crate::quickhull::quickhull;
+use crate::quickhull::{Visibility, quickhull};
 use crate::{InertiaError, PrincipalAxes, TriMesh};
 
 /// A point set thinner than this, relative to its largest extent, spans no
@@ -103,12 +106,29 @@ pub fn convex_hull(mesh: &TriMesh) -> Result<TriMesh, InertiaError> {
         points: points.len(),
         reason,
     };
-    let (hull_index, triangles) =
-        quickhull(&white, &candidates).map_err(|e| fail(format!("quickhull: {e}")))?;
-    let white_hull: Vec<DVec3> = hull_index.iter().map(|&i| white[i]).collect();
-    check_hull(&white_hull, &triangles, &candidates, &white).map_err(fail)?;
-    let vertices = hull_index.iter().map(|&i| points[i]).collect();
-    TriMesh::try_new(vertices, triangles)
+    // Coplanar faces: replace them, or if that fails the check keep them
+    // (see `quickhull.rs`); the first hull that passes is returned.
+    let mut failures = Vec::new();
+    for (visibility, how) in [
+        (Visibility::Inclusive, "replacing coplanar faces"),
+        (Visibility::Strict, "keeping coplanar faces"),
+    ] {
+        let checked = quickhull(&white, &candidates, visibility)
+            .map_err(|e| format!("quickhull: {e}"))
+            .and_then(|(hull_index, triangles)| {
+                let white_hull: Vec<DVec3> = hull_index.iter().map(|&i| white[i]).collect();
+                check_hull(&white_hull, &triangles, &candidates, &white)?;
+                Ok((hull_index, triangles))
+            });
+        match checked {
+            Ok((hull_index, triangles)) => {
+                let vertices = hull_index.iter().map(|&i| points[i]).collect();
+                return TriMesh::try_new(vertices, triangles);
+            }
+            Err(reason) => failures.push(format!("{how}: {reason}")),
+        }
+    }
+    Err(fail(failures.join("; ")))
 }
 
 /// The distinct points (exact duplicates, and −0 against 0, removed).
@@ -224,7 +244,7 @@ fn prefilter(white: &[DVec3]) -> Vec<usize> {
     let mut extremes: Vec<usize> = best.iter().map(|b| b.0).collect();
     extremes.sort_unstable();
     extremes.dedup();
-    let Ok((hp, tris)) = quickhull(white, &extremes) else {
+    let Ok((hp, tris)) = quickhull(white, &extremes, Visibility::Inclusive) else {
         return all();
     };
     let hp: Vec<DVec3> = hp.into_iter().map(|i| white[i]).collect();
@@ -236,7 +256,7 @@ fn prefilter(white: &[DVec3]) -> Vec<usize> {
     // walk finds the farthest face) to mean anything.
     let nearest = planes.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
     if not_above(nearest, PREFILTER_MARGIN)
-        || !locally_convex(&hp, &tris, &neighbours, &planes, DVec3::ZERO)
+        || locally_convex(&hp, &tris, &neighbours, &planes, DVec3::ZERO).is_err()
     {
         return all();
     }
@@ -299,24 +319,29 @@ impl CubeMap {
 }
 
 /// Every edge convex: the far corner of each neighbouring triangle is on
-/// the inner side of the triangle's plane (within the containment tolerance).
+/// the inner side of the triangle's plane (within the containment
+/// tolerance). `Err` names the first triangle where it is not, and by how much.
 fn locally_convex(
     points: &[DVec3],
     triangles: &[[u32; 3]],
     neighbours: &[[usize; 3]],
     planes: &[(DVec3, f64)],
     c: DVec3,
-) -> bool {
-    triangles.iter().enumerate().all(|(k, t)| {
+) -> Result<(), (usize, f64)> {
+    for (k, t) in triangles.iter().enumerate() {
         let (n, off) = planes[k];
-        neighbours[k].iter().enumerate().all(|(e, &g)| {
+        for (e, &g) in neighbours[k].iter().enumerate() {
             let far = triangles[g]
                 .iter()
                 .find(|&&i| i != t[e] && i != t[(e + 1) % 3])
                 .map_or(c, |&i| points[i as usize]);
-            n.dot(far - c) - off <= CONTAIN_TOLERANCE
-        })
-    })
+            let excess = n.dot(far - c) - off;
+            if excess.is_nan() || excess > CONTAIN_TOLERANCE {
+                return Err((k, excess));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// How many directions the prefilter takes extremes in.
@@ -440,8 +465,16 @@ fn check_hull(
     if not_above(volume, 0.0) {
         return Err(format!("the surface is inside out (volume {volume:e})"));
     }
-    if !locally_convex(hull, triangles, &neighbours, &planes, c) {
-        return Err("the surface is not convex at every edge".into());
+    // The vertices' centroid is inside a convex hull, below every face: a
+    // face facing it is folded back (or has no area), which the edge test
+    // cannot see when the fold lies in one plane.
+    if let Some(k) = planes.iter().position(|p| not_above(p.1, 0.0)) {
+        return Err(format!("triangle {k} faces inward (or has no area)"));
+    }
+    if let Err((k, excess)) = locally_convex(hull, triangles, &neighbours, &planes, c) {
+        return Err(format!(
+            "the surface is not convex at triangle {k} (a neighbour rises {excess:e} of the half-extent above it)"
+        ));
     }
     // Containment: a walk to the face of largest n·(p − c)/off.
     let reach = planes.iter().map(|p| p.1).fold(0.0_f64, f64::max);
@@ -614,7 +647,7 @@ mod tests {
         let w = Whitening::of(&points).unwrap();
         let white: Vec<DVec3> = points.iter().map(|&p| w.apply(p)).collect();
         let all: Vec<usize> = (0..white.len()).collect();
-        let (hp, tris) = quickhull(&white, &all).unwrap();
+        let (hp, tris) = quickhull(&white, &all, Visibility::Inclusive).unwrap();
         let hull: Vec<DVec3> = hp.into_iter().map(|i| white[i]).collect();
         let mut edge_face = HashMap::new();
         for (k, t) in tris.iter().enumerate() {
@@ -646,6 +679,105 @@ mod tests {
                 (value_of(p, &tris[best]) - brute).abs() <= 1e-12 * brute.abs(),
                 "{p}"
             );
+        }
+    }
+}
+
+#[cfg(test)]
+mod degenerate_sets {
+    use proptest::prelude::*;
+
+    use super::*;
+
+    /// Whether integer points span a volume (exact: some 3 × 3 determinant
+    /// of differences is non-zero).
+    fn spans_volume(p: &[[i64; 3]]) -> bool {
+        let d = |a: [i64; 3]| [a[0] - p[0][0], a[1] - p[0][1], a[2] - p[0][2]];
+        p.iter().any(|&a| {
+            p.iter().any(|&b| {
+                p.iter().any(|&c| {
+                    let (a, b, c) = (d(a), d(b), d(c));
+                    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                        + a[2] * (b[0] * c[1] - b[1] * c[0])
+                        != 0
+                })
+            })
+        })
+    }
+
+    #[test]
+    fn a_lattice_set_that_folded_a_plane_gets_its_true_hull() {
+        // Regression (found by the proptest below): replacing coplanar faces
+        // folded a face plane over itself (one triangle facing inward, an
+        // extra vertex outside the true hull), and the edge test could not
+        // see a fold within one plane. The check now refuses inward faces,
+        // and the strict policy gives the hull. Exact: Qhull on the integer
+        // points gives 119/6 with 8 vertices.
+        let lattice = [
+            [2, 3, 3],
+            [3, 3, 3],
+            [1, 1, 0],
+            [1, 0, 0],
+            [3, 3, 0],
+            [0, 0, 0],
+            [0, 0, 0],
+            [0, 0, 1],
+            [0, 3, 0],
+            [0, 3, 3],
+            [0, 0, 0],
+            [2, 0, 0],
+            [3, 1, 3],
+            [0, 0, 0],
+        ];
+        let stretch = DVec3::new(1.0, 1e-4, 1e-2);
+        let rotation =
+            DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 5.636402101045564);
+        let points: Vec<DVec3> = lattice
+            .iter()
+            .map(|a| rotation * (DVec3::new(a[0] as f64, a[1] as f64, a[2] as f64) * stretch))
+            .collect();
+        let hull = convex_hull(&TriMesh::new(points, vec![[0, 1, 2]])).unwrap();
+        // (A point on the hull's surface may stay a vertex: 9 here.)
+        assert!(hull.vertices().len() >= 8);
+        let volume = crate::MeshMoments::solid(&hull).zeroth;
+        let exact = 119.0 / 6.0 * 1e-6;
+        assert!((volume / exact - 1.0).abs() < 1e-9, "{volume} vs {exact}");
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// Points on a small integer lattice (many coplanar and collinear
+        /// points, duplicates), stretched up to 10⁴ : 1 and rotated: the hull
+        /// is built and passes its checks, or the set is flat and says so.
+        #[test]
+        fn lattice_sets_give_a_checked_hull_or_a_flat_error(
+            lattice in prop::collection::vec(prop::array::uniform3(0i64..4), 4..120),
+            stretch in prop::array::uniform3(prop::sample::select(vec![1.0, 1e-2, 1e-4, 3.0])),
+            angle in 0.0f64..6.3,
+        ) {
+            let rotation = DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), angle);
+            let points: Vec<DVec3> = lattice
+                .iter()
+                .map(|a| rotation * (DVec3::new(a[0] as f64, a[1] as f64, a[2] as f64) * DVec3::from_array(stretch)))
+                .collect();
+            match convex_hull(&TriMesh::new(points.clone(), vec![[0, 1, 2]])) {
+                Ok(hull) => {
+                    prop_assert!(spans_volume(&lattice));
+                    // Brute force: every point inside every face plane.
+                    let size = DVec3::from_array(stretch).max_element() * 4.0;
+                    for t in hull.triangles() {
+                        let [a, b, c] = hull.corners(*t);
+                        let n = (b - a).cross(c - a).normalize();
+                        for p in &points {
+                            prop_assert!(n.dot(*p - a) < 1e-9 * size, "{p} outside");
+                        }
+                    }
+                    prop_assert!(hull.vertices().iter().all(|v| points.contains(v)));
+                }
+                Err(InertiaError::DegenerateHull { .. }) => prop_assert!(!spans_volume(&lattice)),
+                Err(e) => prop_assert!(false, "{e}"),
+            }
         }
     }
 }
