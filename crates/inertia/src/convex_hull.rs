@@ -744,6 +744,57 @@ mod degenerate_sets {
         assert!((volume / exact - 1.0).abs() < 1e-9, "{volume} vs {exact}");
     }
 
+    #[test]
+    fn a_lattice_needle_gets_no_sliver_faces() {
+        // Regression (found by the proptest below): three nearly collinear
+        // points made a triangle 5e-13 high, whose plane rounding tilts so
+        // far that a point 2e-4 m inside the needle lay "outside" it.
+        let lattice = [
+            [1, 1, 0],
+            [2, 0, 3],
+            [0, 1, 0],
+            [2, 2, 1],
+            [3, 2, 1],
+            [1, 1, 2],
+            [2, 2, 0],
+            [3, 1, 0],
+            [0, 3, 0],
+            [3, 0, 0],
+            [2, 0, 1],
+            [2, 2, 0],
+            [1, 3, 1],
+            [0, 0, 1],
+            [2, 0, 0],
+            [0, 1, 3],
+            [1, 0, 3],
+            [0, 0, 3],
+            [1, 3, 3],
+            [2, 1, 2],
+            [3, 2, 3],
+            [0, 3, 3],
+            [2, 3, 1],
+            [0, 2, 2],
+            [3, 3, 0],
+        ];
+        let stretch = DVec3::new(3.0, 1e-4, 1e-4);
+        let rotation =
+            DMat3::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 2.9626739640450066);
+        let points: Vec<DVec3> = lattice
+            .iter()
+            .map(|a| rotation * (DVec3::new(a[0] as f64, a[1] as f64, a[2] as f64) * stretch))
+            .collect();
+        let hull = convex_hull(&TriMesh::new(points.clone(), vec![[0, 1, 2]])).unwrap();
+        // Qhull on the integer points: 11 vertices, volume 74/3.
+        assert_eq!(hull.vertices().len(), 11);
+        for t in hull.triangles() {
+            let [a, b, c] = hull.corners(*t);
+            let n = (b - a).cross(c - a).normalize();
+            for p in &points {
+                assert!(n.dot(*p - a) < 1e-11, "{p} outside {t:?}");
+            }
+        }
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(300))]
 
