@@ -181,3 +181,21 @@ fn duplicate_points_do_not_change_the_hull() {
     let (va, vb) = (MeshMoments::solid(&a).zeroth, MeshMoments::solid(&b).zeroth);
     assert!((va / vb - 1.0).abs() < 1e-14, "{va} vs {vb}");
 }
+
+#[test]
+fn a_cad_mesh_whose_prefilter_walk_was_trapped() {
+    // Regression: the distinct vertices of pybullet_data's
+    // xarm/xarm_description/meshes/xarm6/visual/base.stl (UFACTORY xArm,
+    // BSD-3-Clause), full of coplanar and cocircular points. The face walk
+    // stopped at 0.985 of the true maximum on a hull that was convex to
+    // 1e-12, the prefilter dropped 51 hull points, and the result was 0.5 %
+    // short of Qhull, silently. Qhull (scipy 1.17.1, same points): volume
+    // 0.0016792569503917493, 165 vertices.
+    let p = points("xarm6_base");
+    assert_eq!(p.len(), 1222);
+    let h = hull(p).unwrap();
+    let volume = MeshMoments::solid(&h).zeroth;
+    let qhull = 0.0016792569503917493;
+    assert!((volume / qhull - 1.0).abs() < 1e-12, "{volume} vs {qhull}");
+    assert!(h.vertices().len() >= 165);
+}
