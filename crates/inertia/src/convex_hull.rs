@@ -528,6 +528,25 @@ fn check_hull(
     if let Some(k) = planes.iter().position(|p| not_above(p.1, 0.0)) {
         return Err(format!("triangle {k} faces inward (or has no area)"));
     }
+    // Seen from the centroid, the faces must cover the sphere of directions
+    // once (solid angles summing to 4π), not wind around it twice: with the
+    // edge test below, the surface is then convex, and the walks find the
+    // farthest face.
+    let turns: f64 = triangles
+        .iter()
+        .map(|t| {
+            let [a, b, d] = t.map(|i| hull[i as usize] - c);
+            let (la, lb, ld) = (a.length(), b.length(), d.length());
+            let below = la * lb * ld + a.dot(b) * ld + a.dot(d) * lb + b.dot(d) * la;
+            2.0 * a.dot(b.cross(d)).atan2(below)
+        })
+        .sum::<f64>()
+        / (4.0 * core::f64::consts::PI);
+    if turns.is_nan() || (turns - 1.0).abs() >= 1e-6 {
+        return Err(format!(
+            "the surface winds {turns} times around its centre (a convex one, once)"
+        ));
+    }
     if let Err((k, excess)) = locally_convex(hull, triangles, &neighbours, &planes, c) {
         return Err(format!(
             "the surface is not convex at triangle {k} (a neighbour rises {excess:e} of the half-extent above it)"
@@ -787,6 +806,25 @@ mod degenerate_sets {
                 })
             })
         })
+    }
+
+    #[test]
+    fn a_surface_winding_twice_fails_the_check() {
+        // A bipyramid over a pentagram: closed, a sphere, every face facing
+        // away from the centre, but it covers the directions twice.
+        let mut hull: Vec<DVec3> = (0..5)
+            .map(|i| {
+                let t = core::f64::consts::TAU * f64::from(2 * i) / 5.0;
+                DVec3::new(t.cos(), t.sin(), 0.0)
+            })
+            .collect();
+        hull.extend([DVec3::Z, -DVec3::Z]);
+        let triangles: Vec<[u32; 3]> = (0..5u32)
+            .flat_map(|i| [[i, (i + 1) % 5, 5], [(i + 1) % 5, i, 6]])
+            .collect();
+        let all: Vec<usize> = (0..hull.len()).collect();
+        let e = check_hull(&hull, &triangles, &all, &hull).unwrap_err();
+        assert!(e.contains("winds 2"), "{e}");
     }
 
     #[test]
