@@ -28,9 +28,9 @@
 //! shared cores, user time; `tests/data/gen/hull_sphere.py` makes the files):
 //!
 //! ```text
-//! input (2.56 M triangles, 1.28 M points)  hull vertices  now     parry
-//! UV sphere, every point on the hull       1 277 351      5.1 s   165 s (305 s wall)
-//! bumpy sphere                               138 759      1.8 s   7.2 s
+//! input (2.56 M triangles, 1.28 M points)  hull vertices  now       parry
+//! UV sphere, every point on the hull       1 277 351      5.1–7 s   165 s (305 s wall)
+//! bumpy sphere                               138 759      1.8–2.4 s 7.2 s
 //! ```
 //!
 //! with volumes within 3e-14 of scipy's Qhull on the same points (UV
@@ -44,17 +44,20 @@
 //!
 //! Nothing is trusted: the result must be a closed surface in which every
 //! edge is used once in each direction (V − E + F = 2), with positive
-//! volume, convex at every edge, and containing every input point within
-//! `1e-9` of the point set's extent along each principal axis. A hull that
-//! fails is an [`InertiaError::HullCheckFailed`], never a silent number.
-//! Containment is tested by a walk over the hull's faces that maximises the
-//! linear function `n·(p − c) / n·(v − c)` on the polar dual (the simplex
-//! method's argument: on a convex polytope a local maximum is the global
-//! one); the points are taken in the order of their direction's cell on a
-//! cube map, each walk starting where the last one ended, so a walk is a
-//! few steps instead of F tests. The points the
-//! prefilter drops are inside a polytope whose corners are checked points,
-//! so inside the hull as well.
+//! volume, every face facing away from the vertices' centroid, covering
+//! the directions from it once (solid angles summing to 4π), convex at
+//! every edge, and containing every input point within `1e-9` of the point
+//! set's extent along each principal axis. A hull that fails is an
+//! [`InertiaError::HullCheckFailed`], never a silent number. Containment is
+//! tested by a walk over the hull's faces that maximises the linear
+//! function `n·(p − c) / n·(v − c)` on the polar dual (the simplex method's
+//! argument: on a convex polytope a local maximum is the global one; the
+//! walk also searches [`PLATEAU`] below its best, past the tiny dents the
+//! tolerances allow); the points are taken in the order of their
+//! direction's cell on a cube map, each walk starting where the last one
+//! ended, so a walk is a few steps instead of F tests. The points the
+//! prefilter drops are inside a polytope (itself checked the same way)
+//! whose corners are checked points, so inside the hull as well.
 
 use glam::{DMat3, DVec3};
 
