@@ -48,6 +48,7 @@ mod gltf;
 mod obj;
 mod ply;
 mod stl;
+mod text_scan;
 mod vertex_table;
 
 /// The mesh file formats kreisel reads.

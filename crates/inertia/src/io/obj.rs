@@ -29,6 +29,7 @@
 
 use glam::DVec3;
 
+use super::text_scan::{is_blank, next_line, next_word, parse_float, parse_integer};
 use super::{Body, LoadWarning, Source};
 use crate::InertiaError;
 
@@ -41,11 +42,10 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
     if bytes.is_empty() {
         return Err(src.error("the file is empty"));
     }
-    let text = String::from_utf8_lossy(bytes);
     let Parsed {
         models,
         mut skipped,
-    } = parse(&text).map_err(|r| src.error(r))?;
+    } = parse(bytes).map_err(|r| src.error(r))?;
     let mut bodies = Vec::new();
     for model in models {
         // The skipped faces of this object/group (by name: every skipped
@@ -139,8 +139,8 @@ struct Reader {
     deferred: Option<&'static str>,
 }
 
-/// Reads the whole text, checking every `v` and `f` line.
-fn parse(text: &str) -> Result<Parsed, String> {
+/// Reads the whole file, checking every `v` and `f` line.
+fn parse(bytes: &[u8]) -> Result<Parsed, String> {
     let mut r = Reader {
         positions: Vec::new(),
         colours: 0,
@@ -152,24 +152,31 @@ fn parse(text: &str) -> Result<Parsed, String> {
         forward: Vec::new(),
         deferred: None,
     };
-    let mut lines = text.lines().enumerate();
+    let mut rest = bytes;
+    let mut n = 0;
     let mut corners = Vec::new();
     let mut failed_vertex = 0;
     let failure = loop {
-        let Some((i, line)) = lines.next() else {
+        let Some(line) = next_line(&mut rest) else {
             break None;
         };
-        let n = i + 1;
-        let mut words = words(line);
+        n += 1;
+        let lossy;
+        let mut words = if line.is_ascii() {
+            Words::Ascii(line)
+        } else {
+            lossy = String::from_utf8_lossy(line);
+            Words::Other(lossy.split_whitespace())
+        };
         match words.next() {
-            Some("v") => {
+            Some(b"v") => {
                 if let Err(reason) = r.vertex(words) {
                     // This line counts among the file's vertices too.
                     failed_vertex = 1;
                     break Some(format!("line {n}: {reason}"));
                 }
             }
-            Some("f") => {
+            Some(b"f") => {
                 corners.clear();
                 let mut bad = None;
                 for word in words {
@@ -193,11 +200,11 @@ fn parse(text: &str) -> Result<Parsed, String> {
                     r.triangles.push([first, pair[0], pair[1]]);
                 }
             }
-            Some(word @ ("o" | "g")) => {
+            Some(word @ (b"o" | b"g")) => {
                 if !r.triangles.is_empty() {
                     r.finish_model();
                 }
-                r.name = object_name(line, word);
+                r.name = object_name(&String::from_utf8_lossy(line), word.len());
             }
             _ => {}
         }
@@ -206,8 +213,9 @@ fn parse(text: &str) -> Result<Parsed, String> {
     // The file's vertex count: those read, and those after an error line.
     let total = seen
         + failed_vertex
-        + lines
-            .filter(|(_, l)| l.split_whitespace().next() == Some("v"))
+        + String::from_utf8_lossy(rest)
+            .lines()
+            .filter(|l| l.split_whitespace().next() == Some("v"))
             .count() as u64;
     if let Some(f) = r.forward.iter().find(|f| f.index > total) {
         return Err(format!(
@@ -231,15 +239,16 @@ fn parse(text: &str) -> Result<Parsed, String> {
 impl Reader {
     /// Reads a `v` line's words after the keyword: three numbers, then
     /// optionally `w` or a colour.
-    fn vertex<'a>(&mut self, mut words: impl Iterator<Item = &'a str>) -> Result<(), String> {
+    fn vertex<'a>(&mut self, mut words: impl Iterator<Item = &'a [u8]>) -> Result<(), String> {
         let mut p = [0.0; 3];
         for (axis, value) in ["x", "y", "z"].into_iter().zip(&mut p) {
             let word = words
                 .next()
                 .ok_or_else(|| format!("vertex has no {axis} coordinate"))?;
-            *value = word
-                .parse::<f64>()
-                .map_err(|_| format!("vertex {axis} coordinate '{word}' is not a number"))?;
+            *value = parse_float(word).ok_or_else(|| {
+                let word = String::from_utf8_lossy(word);
+                format!("vertex {axis} coordinate '{word}' is not a number")
+            })?;
         }
         if let Some(first) = words.next() {
             self.extra(first, words, &mut p);
@@ -252,15 +261,15 @@ impl Reader {
     /// a colour (counted: a face's vertex needs one once any has one).
     fn extra<'a>(
         &mut self,
-        first: &str,
-        mut words: impl Iterator<Item = &'a str>,
+        first: &[u8],
+        mut words: impl Iterator<Item = &'a [u8]>,
         p: &mut [f64; 3],
     ) {
         match (words.next(), words.next()) {
-            (None, _) => match first.parse::<f64>() {
-                Err(_) => self.defer("position parse error"),
-                Ok(0.0) => self.defer("scaling (w) by zero"),
-                Ok(w) => {
+            (None, _) => match parse_float::<f64>(first) {
+                None => self.defer("position parse error"),
+                Some(0.0) => self.defer("scaling (w) by zero"),
+                Some(w) => {
                     for x in p.iter_mut() {
                         *x /= w;
                     }
@@ -269,7 +278,7 @@ impl Reader {
             (Some(second), Some(third)) if words.next().is_none() => {
                 self.colours += [first, second, third]
                     .into_iter()
-                    .take_while(|c| c.parse::<f64>().is_ok())
+                    .take_while(|c| parse_float::<f64>(c).is_some())
                     .count();
             }
             _ => self.defer("color parse error (too many or too few components)"),
@@ -283,22 +292,25 @@ impl Reader {
 
     /// The 0-based position index of one face corner `v[/vt][/vn]` on line
     /// `n` (`u32::MAX` when past `u32`).
-    fn face_index(&mut self, word: &str, n: usize) -> Result<u32, String> {
+    fn face_index(&mut self, word: &[u8], n: usize) -> Result<u32, String> {
         let seen = self.positions.len();
-        let v = word.split('/').next().unwrap_or(word);
-        let index: i64 = v
-            .parse()
-            .map_err(|_| format!("face vertex '{word}' is not an index"))?;
+        let v = word.split(|&b| b == b'/').next().unwrap_or(word);
+        let word = || String::from_utf8_lossy(word);
+        let index: i64 =
+            parse_integer(v).ok_or_else(|| format!("face vertex '{}' is not an index", word()))?;
         let absolute = match index {
-            0 => return Err(format!("face vertex '{word}': OBJ indices start at 1")),
+            0 => {
+                return Err(format!("face vertex '{}': OBJ indices start at 1", word()));
+            }
             i if i > 0 => i.unsigned_abs(),
             i => (seen as u64 + 1)
                 .checked_sub(i.unsigned_abs())
                 .filter(|&a| a >= 1)
                 .ok_or_else(|| {
                     format!(
-                        "face vertex '{word}' reaches before the first vertex \
-                         (vertices defined so far: {seen})"
+                        "face vertex '{}' reaches before the first vertex \
+                         (vertices defined so far: {seen})",
+                        word()
                     )
                 })?,
         };
@@ -362,52 +374,33 @@ impl Reader {
 }
 
 /// The words of a line, as `str::split_whitespace` gives them: by bytes
-/// when the line is ASCII (the same separators then: space, `\t`, `\n`,
-/// `\x0B`, `\x0C`, `\r`), which is the bulk of the parse's time otherwise.
-fn words(line: &str) -> Words<'_> {
-    if line.is_ascii() {
-        Words::Ascii(line)
-    } else {
-        Words::Other(line.split_whitespace())
-    }
-}
-
-/// See [`words`].
+/// when the line is ASCII (the same separators then, [`is_blank`]), which
+/// is the bulk of the parse's time otherwise.
 enum Words<'a> {
     /// The rest of an ASCII line.
-    Ascii(&'a str),
-    /// Any other line.
+    Ascii(&'a [u8]),
+    /// Any other line, decoded (invalid UTF-8 replaced, as for the whole
+    /// text before).
     Other(std::str::SplitWhitespace<'a>),
 }
 
 impl<'a> Iterator for Words<'a> {
-    type Item = &'a str;
+    type Item = &'a [u8];
 
-    fn next(&mut self) -> Option<&'a str> {
-        let Words::Ascii(rest) = self else {
-            let Words::Other(words) = self else {
-                return None;
-            };
-            return words.next();
-        };
-        let bytes = rest.as_bytes();
-        let start = bytes
-            .iter()
-            .position(|&c| !c.is_ascii_whitespace() && c != 0x0B)?;
-        let end = bytes[start..]
-            .iter()
-            .position(|&c| c.is_ascii_whitespace() || c == 0x0B)
-            .map_or(bytes.len(), |e| start + e);
-        let word = &rest[start..end];
-        *rest = &rest[end..];
-        Some(word)
+    #[inline]
+    fn next(&mut self) -> Option<&'a [u8]> {
+        match self {
+            Words::Ascii(rest) => next_word(rest, is_blank),
+            Words::Other(words) => words.next().map(str::as_bytes),
+        }
     }
 }
 
 /// The name of the object or group an `o`/`g` line starts: the rest of the
-/// line, trimmed ([`UNNAMED`] when empty).
-fn object_name(line: &str, keyword: &str) -> String {
-    let rest = line.trim_start()[keyword.len()..].trim();
+/// line after the keyword of `keyword_len` bytes, trimmed ([`UNNAMED`] when
+/// empty).
+fn object_name(line: &str, keyword_len: usize) -> String {
+    let rest = line.trim_start()[keyword_len..].trim();
     if rest.is_empty() {
         UNNAMED.to_owned()
     } else {

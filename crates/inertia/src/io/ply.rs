@@ -25,6 +25,7 @@ use glam::DVec3;
 use ply_rs_bw::parser::{Parser, Reader};
 use ply_rs_bw::ply::{DefaultElement, ElementDef, Encoding, Header, PropertyType, ScalarType};
 
+use super::text_scan::{next_line, next_word, parse_float, parse_integer};
 use super::{Body, Source};
 use crate::InertiaError;
 
@@ -100,7 +101,7 @@ fn parse(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
         encoding: header.encoding,
         rest: payload,
         line: 0,
-        words: "".split_ascii_whitespace(),
+        words: &[],
     };
     let mut mesh = Mesh {
         // The header's counts were checked against the payload's length
@@ -198,8 +199,9 @@ struct Values<'a> {
     rest: &'a [u8],
     /// Payload lines consumed so far (ASCII).
     line: usize,
-    /// The values left on the current line (ASCII).
-    words: core::str::SplitAsciiWhitespace<'a>,
+    /// The rest of the current line (ASCII), its values separated by ASCII
+    /// blanks (as `str::split_ascii_whitespace` separates them).
+    words: &'a [u8],
 }
 
 impl<'a> Values<'a> {
@@ -209,18 +211,20 @@ impl<'a> Values<'a> {
             return Ok(());
         }
         let line = self.next_line()?;
-        let text = core::str::from_utf8(line)
-            .map_err(|_| format!("payload line {} is not text", self.line))?;
-        self.words = text.split_ascii_whitespace();
+        if !line.is_ascii() && core::str::from_utf8(line).is_err() {
+            return Err(format!("payload line {} is not text", self.line));
+        }
+        self.words = line;
         Ok(())
     }
 
     /// Checks that an element's line has no values left over (ASCII).
     fn end_element(&mut self) -> Result<(), String> {
-        match self.words.next() {
+        match next_word(&mut self.words, |b| b.is_ascii_whitespace()) {
             Some(extra) => Err(format!(
-                "payload line {} has more values than the element declares ('{extra}')",
-                self.line
+                "payload line {} has more values than the element declares ('{}')",
+                self.line,
+                String::from_utf8_lossy(extra)
             )),
             None => Ok(()),
         }
@@ -229,16 +233,9 @@ impl<'a> Values<'a> {
     /// The next non-blank payload line, without its line break.
     fn next_line(&mut self) -> Result<&'a [u8], String> {
         loop {
-            if self.rest.is_empty() {
+            let Some(line) = next_line(&mut self.rest) else {
                 return Err("unexpected end of file (the file may be truncated)".to_owned());
-            }
-            let end = self
-                .rest
-                .iter()
-                .position(|&b| b == b'\n')
-                .unwrap_or(self.rest.len());
-            let (line, rest) = self.rest.split_at(end);
-            self.rest = rest.get(1..).unwrap_or_default();
+            };
             self.line += 1;
             if !line.iter().all(u8::is_ascii_whitespace) {
                 return Ok(line);
@@ -247,8 +244,8 @@ impl<'a> Values<'a> {
     }
 
     /// The next ASCII value.
-    fn word(&mut self, t: &ScalarType) -> Result<&'a str, String> {
-        self.words.next().ok_or_else(|| {
+    fn word(&mut self, t: &ScalarType) -> Result<&'a [u8], String> {
+        next_word(&mut self.words, |b| b.is_ascii_whitespace()).ok_or_else(|| {
             format!(
                 "payload line {} ends before a value of type {}",
                 self.line,
@@ -275,16 +272,16 @@ impl<'a> Values<'a> {
     fn integer(&mut self, t: &ScalarType) -> Result<i64, String> {
         if self.encoding == Encoding::Ascii {
             let word = self.word(t)?;
-            let bad = || format!("'{word}' is not a {} value", type_name(t));
-            return match t {
-                ScalarType::Char => word.parse::<i8>().map(i64::from).map_err(|_| bad()),
-                ScalarType::UChar => word.parse::<u8>().map(i64::from).map_err(|_| bad()),
-                ScalarType::Short => word.parse::<i16>().map(i64::from).map_err(|_| bad()),
-                ScalarType::UShort => word.parse::<u16>().map(i64::from).map_err(|_| bad()),
-                ScalarType::Int => word.parse::<i32>().map(i64::from).map_err(|_| bad()),
-                ScalarType::UInt => word.parse::<u32>().map(i64::from).map_err(|_| bad()),
-                ScalarType::Float | ScalarType::Double => Err(bad()),
+            let value = match t {
+                ScalarType::Char => parse_integer::<i8>(word).map(i64::from),
+                ScalarType::UChar => parse_integer::<u8>(word).map(i64::from),
+                ScalarType::Short => parse_integer::<i16>(word).map(i64::from),
+                ScalarType::UShort => parse_integer::<u16>(word).map(i64::from),
+                ScalarType::Int => parse_integer::<i32>(word).map(i64::from),
+                ScalarType::UInt => parse_integer::<u32>(word).map(i64::from),
+                ScalarType::Float | ScalarType::Double => None,
             };
+            return value.ok_or_else(|| bad_value(word, t));
         }
         Ok(match t {
             ScalarType::Char => i64::from(i8::from_le_bytes(self.bytes()?)),
@@ -305,10 +302,10 @@ impl<'a> Values<'a> {
             ScalarType::Float | ScalarType::Double if self.encoding == Encoding::Ascii => {
                 let word = self.word(t)?;
                 let value = match t {
-                    ScalarType::Float => word.parse::<f32>().map(f64::from),
-                    _ => word.parse::<f64>(),
+                    ScalarType::Float => parse_float::<f32>(word).map(f64::from),
+                    _ => parse_float::<f64>(word),
                 };
-                value.map_err(|_| format!("'{word}' is not a {} value", type_name(t)))
+                value.ok_or_else(|| bad_value(word, t))
             }
             ScalarType::Float => Ok(f64::from(f32::from_le_bytes(self.bytes()?))),
             ScalarType::Double => Ok(f64::from_le_bytes(self.bytes()?)),
@@ -322,6 +319,15 @@ impl<'a> Values<'a> {
         let n = self.integer(t)?;
         usize::try_from(n).map_err(|_| format!("negative list length {n}"))
     }
+}
+
+/// The error for a word that is not a value of type `t`.
+fn bad_value(word: &[u8], t: &ScalarType) -> String {
+    format!(
+        "'{}' is not a {} value",
+        String::from_utf8_lossy(word),
+        type_name(t)
+    )
 }
 
 /// The PLY name of a scalar type.
