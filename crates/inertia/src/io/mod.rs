@@ -44,6 +44,7 @@ use glam::DVec3;
 
 use crate::{InertiaError, TriMesh, Weld};
 
+mod exact_repeats;
 mod gltf;
 mod obj;
 mod ply;

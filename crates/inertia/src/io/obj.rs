@@ -59,7 +59,7 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
         } else {
             model.name
         };
-        let mut body = src.body(name, model.vertices, model.triangles)?;
+        let mut body = src.indexed_body(name, model.vertices, model.triangles)?;
         if !mine.is_empty() {
             let lines = mine.into_iter().map(|(_, line)| line).collect();
             body.warnings.push(LoadWarning::MalformedFaces { lines });

@@ -32,7 +32,7 @@ use crate::InertiaError;
 /// Loads the one body of a PLY file, named by the file stem.
 pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
     let (vertices, triangles) = parse(bytes).map_err(|r| src.error(r))?;
-    Ok(vec![src.body(
+    Ok(vec![src.indexed_body(
         src.stem().to_owned(),
         vertices,
         triangles,
