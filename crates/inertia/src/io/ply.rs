@@ -20,6 +20,9 @@
 //! ASCII: one element per non-blank line, values separated by blanks, each
 //! parsed as its declared type (`float` as `f32`, then widened exactly); a
 //! line with fewer or more values than its element declares is an error.
+//! A large file of just a `vertex` and then a `face` element has its faces
+//! read on a second thread while its vertices are read (with the same
+//! results and errors as one thread).
 
 use glam::DVec3;
 use ply_rs_bw::parser::{Parser, Reader};
@@ -114,17 +117,92 @@ fn parse(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
         triangles: Vec::new(),
         vertex_count,
     };
-    for (name, def) in &header.elements {
-        let fields = fields(name, def);
-        for i in 0..def.count {
-            values
-                .start_element()
-                .and_then(|()| mesh.read_element(name, i, &fields, &mut values))
-                .and_then(|()| values.end_element())
-                .map_err(|e| format!("element '{name}' {i}: {e}"))?;
+    let elements: Vec<(&String, &ElementDef)> = header.elements.iter().collect();
+    let mut done = 0;
+    if let [(vertex_name, vertex_def), (face_name, face_def)] = elements[..]
+        && values.encoding == Encoding::Ascii
+        && payload.len() >= PARALLEL_BYTES
+        && vertex_name == "vertex"
+        && face_name == "face"
+    {
+        let faces = std::thread::scope(|scope| {
+            let faces = scope.spawn(|| faces_ahead(payload, vertex_count, face_def));
+            read_elements(vertex_name, vertex_def, &mut values, &mut mesh)?;
+            Ok::<_, String>(faces.join().ok().flatten())
+        })?;
+        let vertices_end = payload.len() - values.rest.len();
+        if let Some(faces) = faces
+            && values.line == vertex_count
+            && faces.start == vertices_end
+        {
+            mesh.triangles = faces.result?;
+            return Ok((mesh.vertices, mesh.triangles));
         }
+        // A blank line among the vertices: the faces from where they end.
+        done = 1;
+    }
+    for &(name, def) in &elements[done..] {
+        read_elements(name, def, &mut values, &mut mesh)?;
     }
     Ok((mesh.vertices, mesh.triangles))
+}
+
+/// Payload bytes from which an ASCII file's faces are read on a second
+/// thread while the vertices are read (smaller files: one thread). This
+/// saves wall time, not CPU time: the second thread first scans the vertex
+/// lines for where they end (figures in BENCHMARKS.md, "End to end").
+const PARALLEL_BYTES: usize = 1 << 20;
+
+/// The faces of an ASCII file, read ahead on the assumption that the
+/// `vertex` lines (the first `vertex_count` lines of the payload) are all
+/// non-blank. The caller checks that assumption when the vertices are read
+/// (then this is what reading on from there gives, error and line numbers
+/// included) and reads the faces itself otherwise.
+fn faces_ahead(payload: &[u8], vertex_count: usize, def: &ElementDef) -> Option<FacesAhead> {
+    let mut rest = payload;
+    for _ in 0..vertex_count {
+        next_line(&mut rest)?;
+    }
+    let start = payload.len() - rest.len();
+    let mut values = Values {
+        encoding: Encoding::Ascii,
+        rest,
+        line: vertex_count,
+        words: &[],
+    };
+    let mut mesh = Mesh {
+        vertices: Vec::new(),
+        triangles: Vec::new(),
+        vertex_count,
+    };
+    let result = read_elements("face", def, &mut values, &mut mesh).map(|()| mesh.triangles);
+    Some(FacesAhead { start, result })
+}
+
+/// See [`faces_ahead`].
+struct FacesAhead {
+    /// The payload offset the faces were read from.
+    start: usize,
+    /// The triangles, or the error reading them.
+    result: Result<Vec<[u32; 3]>, String>,
+}
+
+/// Reads every element of one type.
+fn read_elements(
+    name: &str,
+    def: &ElementDef,
+    values: &mut Values<'_>,
+    mesh: &mut Mesh,
+) -> Result<(), String> {
+    let fields = fields(name, def);
+    for i in 0..def.count {
+        values
+            .start_element()
+            .and_then(|()| mesh.read_element(name, i, &fields, values))
+            .and_then(|()| values.end_element())
+            .map_err(|e| format!("element '{name}' {i}: {e}"))?;
+    }
+    Ok(())
 }
 
 /// The mesh being read.
@@ -523,6 +601,73 @@ mod tests {
             let (v, f) = parse(&bytes).unwrap();
             let (rv, rf) = reference(&bytes);
             assert_eq!((v, f), (rv, fan(&rf)), "{format}");
+        }
+    }
+
+    /// An ASCII PLY of `n` vertices and `n − 2` fan triangles, over
+    /// [`PARALLEL_BYTES`] of payload for n = 40 000; `extra_element` adds an
+    /// empty third element, which makes the parse take one thread.
+    fn big_ascii(n: usize, extra_element: bool) -> String {
+        let extra = if extra_element {
+            "element edge 0\nproperty int a\n"
+        } else {
+            ""
+        };
+        let mut text = format!(
+            "ply\nformat ascii 1.0\nelement vertex {n}\nproperty double x\nproperty double y\n\
+             property double z\nelement face {}\nproperty list uchar int vertex_indices\n\
+             {extra}end_header\n",
+            n - 2
+        );
+        for i in 0..n {
+            let t = i as f64 * 0.001;
+            text += &format!("{} {} {}\n", t.cos(), t.sin(), t * 0.1);
+        }
+        for i in 1..n - 1 {
+            text += &format!("3 0 {i} {}\n", i + 1);
+        }
+        text
+    }
+
+    #[test]
+    fn faces_read_ahead_on_a_second_thread_equal_one_thread() {
+        let n = 40_000;
+        let (one, two) = (big_ascii(n, true), big_ascii(n, false));
+        assert!(two.len() - two.find("end_header").unwrap() > PARALLEL_BYTES);
+        let face = |k: usize| format!("\n3 0 {k} {}\n", k + 1);
+        let vertex_line = |text: &str, k: usize| {
+            let start = text.find("end_header\n").unwrap() + 11;
+            text[start..]
+                .split_inclusive('\n')
+                .nth(k)
+                .unwrap()
+                .to_owned()
+        };
+        // Each edit is made to both texts: the results (and errors, with
+        // their element and line numbers) must agree.
+        let edits: Vec<(String, String)> = vec![
+            (String::new(), String::new()),
+            (face(30_000), "\n3 0 30000 x\n".to_owned()),
+            (face(30_000), "\n3 0 30000 40000\n".to_owned()),
+            (face(30_000), "\n\n  \n3 0 30000 30001 7\n".to_owned()),
+            (face(39_997), "\n3 0 39997\n".to_owned()),
+            (vertex_line(&two, 123), "1 2 three\n".to_owned()),
+            (vertex_line(&two, 123), "\n1 2 3\n".to_owned()),
+        ];
+        for (from, to) in edits {
+            let (a, b) = if from.is_empty() {
+                (one.clone(), two.clone())
+            } else {
+                (one.replacen(&from, &to, 1), two.replacen(&from, &to, 1))
+            };
+            assert_ne!(from.is_empty(), a != one, "{to:?} applied");
+            let (sequential, parallel) = (parse(a.as_bytes()), parse(b.as_bytes()));
+            assert_eq!(sequential, parallel, "{to:?}");
+            if from.is_empty() || to.starts_with("\n1 2 3") {
+                assert_eq!(parallel.unwrap().1.len(), n - 2);
+            } else {
+                assert!(parallel.is_err(), "{to:?}");
+            }
         }
     }
 
