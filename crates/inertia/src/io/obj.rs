@@ -26,6 +26,13 @@
 //! `w` divides the position (`0` is an error), three more are a colour
 //! (two, or more than three, are an error), and a body's vertices must be
 //! defined before the next `o`/`g` line that ends it.
+//!
+//! Lines and words are split on the bytes (see `text_scan`). A file of a
+//! megabyte or more has its second half read on a second thread while the
+//! first half is read, up to the first line that depends on what came
+//! before it beyond the line and vertex counts (an `o`/`g` line, a `v` line
+//! with `w` or a colour, any error); the first thread reads on from there.
+//! The results, warnings and errors are those of one thread (test below).
 
 use glam::DVec3;
 
@@ -87,6 +94,7 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
 }
 
 /// One object/group with faces, as read.
+#[derive(Debug, PartialEq)]
 struct Model {
     /// The `o`/`g` name ([`UNNAMED`] before any).
     name: String,
@@ -97,6 +105,7 @@ struct Model {
 }
 
 /// A whole file, read.
+#[derive(Debug, PartialEq)]
 struct Parsed {
     /// The objects/groups with faces, in file order.
     models: Vec<Model>,
@@ -106,7 +115,7 @@ struct Parsed {
 }
 
 /// A face index that went past the vertices read so far.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Debug)]
 struct Forward {
     /// 1-based line number.
     line: usize,
@@ -116,7 +125,10 @@ struct Forward {
 
 /// The parser's state between lines.
 struct Reader {
-    /// Every `v` position so far.
+    /// How many `v` positions come before `positions` (those of the part of
+    /// the file before the one this reader reads; 0 for the whole file).
+    base: usize,
+    /// Every `v` position so far (after the first `base`).
     positions: Vec<DVec3>,
     /// Colour components read so far (`v` lines with six numbers).
     colours: usize,
@@ -139,24 +151,51 @@ struct Reader {
     deferred: Option<&'static str>,
 }
 
-/// Reads the whole file, checking every `v` and `f` line.
+/// Reads the whole file, checking every `v` and `f` line (the second half
+/// of a large file read ahead on a second thread, see [`Ahead`]).
 fn parse(bytes: &[u8]) -> Result<Parsed, String> {
-    let mut r = Reader {
-        positions: Vec::new(),
-        colours: 0,
-        name: UNNAMED.to_owned(),
-        triangles: Vec::new(),
-        local: Vec::new(),
-        models: Vec::new(),
-        skipped: Vec::new(),
-        forward: Vec::new(),
-        deferred: None,
-    };
+    if bytes.len() < PARALLEL_BYTES {
+        return parse_from(bytes, None);
+    }
+    // The line after the middle byte.
+    let split = bytes.len() / 2 + newline_after(&bytes[bytes.len() / 2..]);
+    std::thread::scope(|scope| {
+        let ahead = scope.spawn(|| Ahead::read(bytes, split));
+        parse_from(bytes, Some((split, ahead)))
+    })
+}
+
+/// Bytes from which an OBJ file's second half is read on a second thread
+/// (smaller files: one thread).
+const PARALLEL_BYTES: usize = 1 << 20;
+
+/// The length of `bytes` up to and including its first `\n` (all of it
+/// when none).
+fn newline_after(bytes: &[u8]) -> usize {
+    let mut rest = bytes;
+    next_line(&mut rest);
+    bytes.len() - rest.len()
+}
+
+/// Reads the file, taking over the lines a second thread read ahead (when
+/// `ahead` is given) once the first half is read.
+fn parse_from(
+    bytes: &[u8],
+    mut ahead: Option<(usize, std::thread::ScopedJoinHandle<'_, Ahead>)>,
+) -> Result<Parsed, String> {
+    let mut r = Reader::new(0);
     let mut rest = bytes;
     let mut n = 0;
     let mut corners = Vec::new();
     let mut failed_vertex = 0;
     let failure = loop {
+        if let Some((split, _)) = ahead
+            && bytes.len() - rest.len() == split
+            && let Some((_, handle)) = ahead.take()
+            && let Ok(read) = handle.join()
+        {
+            read.hand_over(&mut r, &mut rest, &mut n, bytes);
+        }
         let Some(line) = next_line(&mut rest) else {
             break None;
         };
@@ -209,7 +248,7 @@ fn parse(bytes: &[u8]) -> Result<Parsed, String> {
             _ => {}
         }
     };
-    let seen = r.positions.len() as u64;
+    let seen = r.seen() as u64;
     // The file's vertex count: those read, and those after an error line.
     let total = seen
         + failed_vertex
@@ -236,7 +275,168 @@ fn parse(bytes: &[u8]) -> Result<Parsed, String> {
     })
 }
 
+/// The second half of a file, from the line after its middle byte, read
+/// while the first half is: as [`parse_from`] reads it, up to the first
+/// line it cannot read without what comes before (an `o`/`g` line, a `v`
+/// line with more than three values, a line with an error, a face of fewer
+/// than three vertices). The first half is only scanned for its lines and
+/// `v` lines, which gives the line numbers and the position count
+/// (`base`) relative indices and bounds depend on. Taken over only when
+/// the first half is read without error and to the same counts.
+struct Ahead {
+    /// The state after the lines read.
+    reader: Reader,
+    /// The first line's number, less one.
+    line_before: usize,
+    /// The lines read.
+    lines: usize,
+    /// Where reading starts and stops (byte offsets into the file).
+    start: usize,
+    stop: usize,
+}
+
+impl Ahead {
+    fn read(bytes: &[u8], start: usize) -> Ahead {
+        let (head, tail) = bytes.split_at(start);
+        let (mut lines_before, mut vertices_before) = (0, 0);
+        let mut rest = head;
+        while let Some(line) = next_line(&mut rest) {
+            lines_before += 1;
+            if first_word_is_v(line) {
+                vertices_before += 1;
+            }
+        }
+        let mut reader = Reader::new(vertices_before);
+        let mut rest = tail;
+        let mut lines = 0;
+        let mut corners = Vec::new();
+        loop {
+            let before = rest;
+            let Some(line) = next_line(&mut rest) else {
+                break;
+            };
+            let n = lines_before + lines + 1;
+            let lossy;
+            let mut words = if line.is_ascii() {
+                Words::Ascii(line)
+            } else {
+                lossy = String::from_utf8_lossy(line);
+                Words::Other(lossy.split_whitespace())
+            };
+            let read = match words.next() {
+                Some(b"v") => match vertex3(words) {
+                    Some(p) => {
+                        reader.positions.push(DVec3::from_array(p));
+                        true
+                    }
+                    None => false,
+                },
+                Some(b"f") => {
+                    corners.clear();
+                    let ok = words.all(|word| match reader.face_index(word, n) {
+                        Ok(index) => {
+                            corners.push(index);
+                            true
+                        }
+                        Err(_) => false,
+                    });
+                    if ok && corners.len() >= 3 {
+                        let first = corners[0];
+                        for pair in corners[1..].windows(2) {
+                            reader.triangles.push([first, pair[0], pair[1]]);
+                        }
+                    }
+                    ok && corners.len() >= 3
+                }
+                Some(b"o" | b"g") => false,
+                _ => true,
+            };
+            if !read {
+                // Left to the first half's reader, from this line on; a
+                // face's forward references were recorded before its error.
+                rest = before;
+                reader.forward.retain(|f| f.line < n);
+                break;
+            }
+            lines += 1;
+        }
+        Ahead {
+            reader,
+            line_before: lines_before,
+            lines,
+            start,
+            stop: bytes.len() - rest.len(),
+        }
+    }
+
+    /// Hands the lines read over to `r`, which has just read the first half
+    /// (`n` lines, `rest` the rest of `bytes`), when its counts agree.
+    fn hand_over<'a>(self, r: &mut Reader, rest: &mut &'a [u8], n: &mut usize, bytes: &'a [u8]) {
+        let agrees = *n == self.line_before
+            && r.seen() == self.reader.base
+            && bytes.len() - rest.len() == self.start;
+        if !agrees {
+            return;
+        }
+        let Reader {
+            positions,
+            triangles,
+            forward,
+            ..
+        } = self.reader;
+        r.positions.extend(positions);
+        r.triangles.extend(triangles);
+        // Each kept forward reference is past all earlier ones.
+        let last = r.forward.last().map_or(0, |f| f.index);
+        r.forward
+            .extend(forward.into_iter().filter(|f| f.index > last));
+        *n += self.lines;
+        *rest = &bytes[self.stop..];
+    }
+}
+
+/// Whether a line's first word is `v`, as [`parse_from`] splits it.
+fn first_word_is_v(line: &[u8]) -> bool {
+    if line.is_ascii() {
+        let mut words = Words::Ascii(line);
+        words.next() == Some(b"v")
+    } else {
+        String::from_utf8_lossy(line).split_whitespace().next() == Some("v")
+    }
+}
+
+/// A `v` line's three coordinates when it has just three numbers.
+fn vertex3<'a>(mut words: impl Iterator<Item = &'a [u8]>) -> Option<[f64; 3]> {
+    let p = [
+        parse_float(words.next()?)?,
+        parse_float(words.next()?)?,
+        parse_float(words.next()?)?,
+    ];
+    words.next().is_none().then_some(p)
+}
+
 impl Reader {
+    /// An empty reader after `base` positions.
+    fn new(base: usize) -> Self {
+        Reader {
+            base,
+            positions: Vec::new(),
+            colours: 0,
+            name: UNNAMED.to_owned(),
+            triangles: Vec::new(),
+            local: Vec::new(),
+            models: Vec::new(),
+            skipped: Vec::new(),
+            forward: Vec::new(),
+            deferred: None,
+        }
+    }
+
+    /// The `v` positions so far in the file.
+    fn seen(&self) -> usize {
+        self.base + self.positions.len()
+    }
+
     /// Reads a `v` line's words after the keyword: three numbers, then
     /// optionally `w` or a colour.
     fn vertex<'a>(&mut self, mut words: impl Iterator<Item = &'a [u8]>) -> Result<(), String> {
@@ -293,7 +493,7 @@ impl Reader {
     /// The 0-based position index of one face corner `v[/vt][/vn]` on line
     /// `n` (`u32::MAX` when past `u32`).
     fn face_index(&mut self, word: &[u8], n: usize) -> Result<u32, String> {
-        let seen = self.positions.len();
+        let seen = self.seen();
         let v = word.split(|&b| b == b'/').next().unwrap_or(word);
         let word = || String::from_utf8_lossy(word);
         let index: i64 =
@@ -405,5 +605,77 @@ fn object_name(line: &str, keyword_len: usize) -> String {
         UNNAMED.to_owned()
     } else {
         rest.to_owned()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A strip of `blocks` blocks: each adds two `v` lines and two faces
+    /// (absolute and relative indices) — over [`PARALLEL_BYTES`] for 16 000.
+    fn strip(blocks: usize) -> String {
+        let mut text = String::from("# strip\nv 0 0 0\nv 0 1 0\n");
+        for b in 1..=blocks {
+            let x = b as f64 * 0.01;
+            text += &format!("v {x} 0 {}\nv {x} 1 {}\n", x * x, -x);
+            let i = 2 * b + 1;
+            text += &format!("f {} {} {i}\nf -3 -1 -2\n", i - 2, i - 1);
+        }
+        text
+    }
+
+    /// `text` with `insert` put at the start of the line holding byte
+    /// `at` (a fraction of the length).
+    fn with_line(text: &str, at: f64, insert: &str) -> String {
+        let byte = (text.len() as f64 * at) as usize;
+        let start = text[..byte].rfind('\n').map_or(0, |i| i + 1);
+        format!("{}{insert}{}", &text[..start], &text[start..])
+    }
+
+    #[test]
+    fn the_second_half_read_ahead_gives_what_one_thread_gives() {
+        let base = strip(16_000);
+        assert!(base.len() > PARALLEL_BYTES);
+        let split = base.len() / 2 + newline_after(&base.as_bytes()[base.len() / 2..]);
+        let ahead = Ahead::read(base.as_bytes(), split);
+        assert!(ahead.lines > 30_000, "read ahead: {} lines", ahead.lines);
+        assert_eq!(ahead.stop, base.len());
+        let inserts = [
+            "",
+            "o second\n",
+            "g\n",
+            "v 1 2 3 2\n",
+            "v 1 2 3 0.5 0.5 0.5\n",
+            "v 1 2 0\n",
+            "v 1 2\n",
+            "v 1 2 x\n",
+            "f 1 0 2\n",
+            "f 1 2\n",
+            "f 1 2 99999999\n",
+            "f 1 2 31000\n",
+            "f 31990/1/1 2 3\n",
+            "f -99999999 1 2\n",
+            "f 1 -1 x\n",
+            "# caf\u{e9}\n",
+            "v\u{a0}1 2 3\n",
+            "\r\n\n  \n",
+            "vt 0.5 0.5\nvn 0 0 1\nl 1 2\n",
+        ];
+        let mut errors = 0;
+        for insert in inserts {
+            for at in [0.25, 0.5, 0.5001, 0.999] {
+                let text = with_line(&base, at, insert);
+                let one = parse_from(text.as_bytes(), None);
+                let two = parse(text.as_bytes());
+                assert_eq!(one, two, "{insert:?} at {at}");
+                errors += usize::from(two.is_err());
+            }
+        }
+        // Seven of the inserts are errors wherever they are.
+        assert_eq!(errors, 7 * 4);
+        // Two edits: one in each half.
+        let text = with_line(&with_line(&base, 0.8, "f 1 2\n"), 0.2, "f 3 4\n");
+        assert_eq!(parse_from(text.as_bytes(), None), parse(text.as_bytes()));
     }
 }
