@@ -28,7 +28,7 @@ use glam::DVec3;
 use ply_rs_bw::parser::{Parser, Reader};
 use ply_rs_bw::ply::{DefaultElement, ElementDef, Encoding, Header, PropertyType, ScalarType};
 
-use super::text_scan::{next_line, next_word, parse_float, parse_integer};
+use super::text_scan::{next_line, next_plain_digits, next_word, parse_float, parse_integer};
 use super::{Body, Source};
 use crate::InertiaError;
 
@@ -349,6 +349,20 @@ impl<'a> Values<'a> {
     /// The next value of an integer type, widened.
     fn integer(&mut self, t: &ScalarType) -> Result<i64, String> {
         if self.encoding == Encoding::Ascii {
+            if let Some((v, word)) = next_plain_digits(&mut self.words, |b| b.is_ascii_whitespace())
+            {
+                // What `parse_integer` gives for plain digits.
+                let fits = match t {
+                    ScalarType::Char => i8::try_from(v).is_ok(),
+                    ScalarType::UChar => u8::try_from(v).is_ok(),
+                    ScalarType::Short => i16::try_from(v).is_ok(),
+                    ScalarType::UShort => u16::try_from(v).is_ok(),
+                    ScalarType::Int => i32::try_from(v).is_ok(),
+                    ScalarType::UInt => u32::try_from(v).is_ok(),
+                    ScalarType::Float | ScalarType::Double => false,
+                };
+                return if fits { Ok(v) } else { Err(bad_value(word, t)) };
+            }
             let word = self.word(t)?;
             let value = match t {
                 ScalarType::Char => parse_integer::<i8>(word).map(i64::from),

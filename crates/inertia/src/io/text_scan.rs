@@ -91,6 +91,34 @@ pub(super) fn plain_digits(word: &[u8]) -> Option<i64> {
     Some(value)
 }
 
+/// The next word of `rest` (split as [`next_word`] splits) with its value
+/// when it is 1 to 18 ASCII digits, advancing past it; `None`, with nothing
+/// consumed, for any other word (one pass over the digits instead of
+/// splitting first and parsing after).
+#[inline]
+pub(super) fn next_plain_digits<'a>(
+    rest: &mut &'a [u8],
+    blank: impl Fn(u8) -> bool,
+) -> Option<(i64, &'a [u8])> {
+    let bytes: &'a [u8] = rest;
+    let start = bytes.iter().position(|&b| !blank(b))?;
+    let mut value: i64 = 0;
+    let mut end = start;
+    while let Some(&b) = bytes.get(end) {
+        let d = b.wrapping_sub(b'0');
+        if d > 9 || end - start == 18 {
+            break;
+        }
+        value = value * 10 + i64::from(d);
+        end += 1;
+    }
+    if end == start || bytes.get(end).is_some_and(|&b| !blank(b)) {
+        return None;
+    }
+    *rest = &bytes[end..];
+    Some((value, &bytes[start..end]))
+}
+
 /// `word` as `T`, exactly as `str::parse::<T>` reads it (plain digits by
 /// hand, anything else by the standard library).
 #[inline]
@@ -191,6 +219,27 @@ mod tests {
             assert_eq!(parse_integer::<i32>(w), word.parse().ok(), "{word}");
             assert_eq!(parse_integer::<i64>(w), word.parse().ok(), "{word}");
         }
+    }
+
+    #[test]
+    fn plain_digit_words_are_taken_in_one_pass_and_others_left() {
+        let line = b" 12\t007 -3 4a 1234567890123456789 123456789012345678 5";
+        let mut fused = &line[..];
+        let mut split = &line[..];
+        while let Some(word) = next_word(&mut split, |b| b.is_ascii_whitespace()) {
+            let before = fused;
+            match next_plain_digits(&mut fused, |b| b.is_ascii_whitespace()) {
+                Some((value, w)) => assert_eq!((Some(value), w), (plain_digits(word), word)),
+                None => {
+                    assert_eq!((plain_digits(word), fused), (None, before));
+                    next_word(&mut fused, |b| b.is_ascii_whitespace());
+                }
+            }
+        }
+        assert_eq!(
+            next_plain_digits(&mut fused, |b| b.is_ascii_whitespace()),
+            None
+        );
     }
 
     proptest! {
