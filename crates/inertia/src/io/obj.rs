@@ -36,7 +36,9 @@
 
 use glam::DVec3;
 
-use super::text_scan::{is_blank, next_line, next_word, parse_float, parse_integer};
+use super::text_scan::{
+    is_blank, next_line, next_plain_digits, next_word, parse_float, parse_integer,
+};
 use super::{Body, LoadWarning, Source};
 use crate::InertiaError;
 
@@ -218,8 +220,8 @@ fn parse_from(
             Some(b"f") => {
                 corners.clear();
                 let mut bad = None;
-                for word in words {
-                    match r.face_index(word, n) {
+                while let Some((word, plain)) = words.next_index() {
+                    match r.face_index(word, plain, n) {
                         Ok(index) => corners.push(index),
                         Err(reason) => {
                             bad = Some(reason);
@@ -333,13 +335,16 @@ impl Ahead {
                 },
                 Some(b"f") => {
                     corners.clear();
-                    let ok = words.all(|word| match reader.face_index(word, n) {
-                        Ok(index) => {
-                            corners.push(index);
-                            true
+                    let mut ok = true;
+                    while let Some((word, plain)) = words.next_index() {
+                        match reader.face_index(word, plain, n) {
+                            Ok(index) => corners.push(index),
+                            Err(_) => {
+                                ok = false;
+                                break;
+                            }
                         }
-                        Err(_) => false,
-                    });
+                    }
                     if ok && corners.len() >= 3 {
                         let first = corners[0];
                         for pair in corners[1..].windows(2) {
@@ -492,12 +497,15 @@ impl Reader {
 
     /// The 0-based position index of one face corner `v[/vt][/vn]` on line
     /// `n` (`u32::MAX` when past `u32`).
-    fn face_index(&mut self, word: &[u8], n: usize) -> Result<u32, String> {
+    /// `plain`: the word's value when it is plain digits (see
+    /// [`Words::next_index`]).
+    fn face_index(&mut self, word: &[u8], plain: Option<i64>, n: usize) -> Result<u32, String> {
         let seen = self.seen();
         let v = word.split(|&b| b == b'/').next().unwrap_or(word);
         let word = || String::from_utf8_lossy(word);
-        let index: i64 =
-            parse_integer(v).ok_or_else(|| format!("face vertex '{}' is not an index", word()))?;
+        let index: i64 = plain
+            .or_else(|| parse_integer(v))
+            .ok_or_else(|| format!("face vertex '{}' is not an index", word()))?;
         let absolute = match index {
             0 => {
                 return Err(format!("face vertex '{}': OBJ indices start at 1", word()));
@@ -582,6 +590,20 @@ enum Words<'a> {
     /// Any other line, decoded (invalid UTF-8 replaced, as for the whole
     /// text before).
     Other(std::str::SplitWhitespace<'a>),
+}
+
+impl<'a> Words<'a> {
+    /// The next word and, when it is 1 to 18 plain digits on an ASCII line,
+    /// its value, read in the same pass as the split.
+    #[inline]
+    fn next_index(&mut self) -> Option<(&'a [u8], Option<i64>)> {
+        if let Words::Ascii(rest) = self
+            && let Some((value, word)) = next_plain_digits(rest, is_blank)
+        {
+            return Some((word, Some(value)));
+        }
+        self.next().map(|word| (word, None))
+    }
 }
 
 impl<'a> Iterator for Words<'a> {
