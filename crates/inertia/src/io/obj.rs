@@ -162,8 +162,11 @@ fn parse(bytes: &[u8]) -> Result<Parsed, String> {
     // The line after the middle byte.
     let split = bytes.len() / 2 + newline_after(&bytes[bytes.len() / 2..]);
     std::thread::scope(|scope| {
-        let ahead = scope.spawn(|| Ahead::read(bytes, split));
-        parse_from(bytes, Some((split, ahead)))
+        // No thread (the system refused one): one thread reads it all.
+        let ahead = std::thread::Builder::new()
+            .spawn_scoped(scope, || Ahead::read(bytes, split))
+            .ok();
+        parse_from(bytes, ahead.map(|handle| (split, handle)))
     })
 }
 

@@ -126,9 +126,12 @@ fn parse(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
         && face_name == "face"
     {
         let faces = std::thread::scope(|scope| {
-            let faces = scope.spawn(|| faces_ahead(payload, vertex_count, face_def));
+            // No thread (the system refused one): the faces are read after.
+            let faces = std::thread::Builder::new()
+                .spawn_scoped(scope, || faces_ahead(payload, vertex_count, face_def))
+                .ok();
             read_elements(vertex_name, vertex_def, &mut values, &mut mesh)?;
-            Ok::<_, String>(faces.join().ok().flatten())
+            Ok::<_, String>(faces.and_then(|f| f.join().ok()).flatten())
         })?;
         let vertices_end = payload.len() - values.rest.len();
         if let Some(faces) = faces
