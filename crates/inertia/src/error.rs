@@ -47,6 +47,36 @@ pub enum InertiaError {
         /// What is wrong with the body's mesh.
         source: Box<InertiaError>,
     },
+    /// A mesh file that parses but holds no body with triangles.
+    #[error("{}: the file holds no mesh bodies", path.display())]
+    NoBodies {
+        /// The file.
+        path: PathBuf,
+    },
+    /// Scaling a body's coordinates to metres made one overflow.
+    #[error("{}: body '{body}': coordinates overflow when scaled by {scale}", path.display())]
+    ScaleOverflow {
+        /// The file.
+        path: PathBuf,
+        /// The body's name in the file.
+        body: String,
+        /// The scale factor, metres per file unit.
+        scale: f64,
+    },
+    /// A total mass spread over the bodies' total volume gives no finite
+    /// positive density (the volume is too small or too large).
+    #[error(
+        "{}: total volume {volume} m^3 gives no finite positive density for a total mass of {mass} kg",
+        path.display()
+    )]
+    DerivedDensity {
+        /// The file.
+        path: PathBuf,
+        /// The total mass asked for, kg.
+        mass: f64,
+        /// The total volume of the bodies, m³.
+        volume: f64,
+    },
     /// A mesh without vertices or triangles.
     #[error("mesh is empty ({vertices} vertices, {triangles} triangles)")]
     EmptyMesh {

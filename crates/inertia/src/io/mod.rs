@@ -14,6 +14,11 @@
 //! file become one (welded together), for files whose objects are closed only
 //! as a whole.
 //!
+//! [`load_solid`] goes on from a file to the mass properties of its bodies
+//! and of all of them as one rigid solid ([`SolidOptions`]: units, model,
+//! density or total mass): the one way the CLI and the demos build a body
+//! from a mesh.
+//!
 //! | format | bodies | name |
 //! | --- | --- | --- |
 //! | STL | one per `solid` (binary: one) | `solid NAME`, else the file stem |
@@ -44,10 +49,13 @@ use glam::DVec3;
 
 use crate::{InertiaError, TriMesh, Weld};
 
+pub use solid::{Solid, SolidBody, SolidOptions, SolidWarning, load_solid};
+
 mod exact_repeats;
 mod gltf;
 mod obj;
 mod ply;
+mod solid;
 mod stl;
 mod text_scan;
 mod vertex_table;
