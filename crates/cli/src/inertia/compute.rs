@@ -1,13 +1,14 @@
-//! From the options to the numbers: load the bodies, scale them, integrate
-//! each under the model and material, and sum them into the assembly.
+//! From the options to the numbers: the library's [`SolidOptions`] loads the
+//! bodies, scales them, integrates each under the model and material and
+//! sums them into the assembly; this file states the setup, words the
+//! warnings in metres and turns a rejected body into advice.
 
 use std::path::PathBuf;
 
 use glam::DVec3;
-use kreisel_inertia::io::{Body, LoadOptions, LoadWarning};
+use kreisel_inertia::io::{Body, LoadOptions, LoadWarning, SolidBody, SolidOptions, SolidWarning};
 use kreisel_inertia::{
-    InertiaError, MassModel, MassProperties, Material, MeshMassReport, PrincipalAxes,
-    mesh_mass_properties, prepare_solid,
+    InertiaError, MassModel, MassProperties, Material, PrincipalAxes, prepare_solid,
 };
 
 use super::{DEFAULT_DENSITY, Units, WeldChoice};
@@ -45,11 +46,21 @@ pub struct Setup {
 }
 
 impl Setup {
-    /// How the library loads the file.
-    fn load_options(&self, merge: bool) -> LoadOptions {
-        LoadOptions {
-            weld: self.weld.weld(self.scale),
-            merge,
+    /// How the library turns the file into a solid, merging its bodies or not.
+    fn solid_options(&self, merge: bool) -> SolidOptions {
+        let material = match self.density {
+            DensityChoice::Default => Material::Density(DEFAULT_DENSITY),
+            DensityChoice::Given(d) => Material::Density(d),
+            DensityChoice::TotalMass(m) => Material::TotalMass(m),
+        };
+        SolidOptions {
+            load: LoadOptions {
+                weld: self.weld.weld(self.scale),
+                merge,
+            },
+            scale: self.scale,
+            model: self.model,
+            material,
         }
     }
 
@@ -142,18 +153,25 @@ pub struct Summary {
 }
 
 impl Summary {
-    /// One body's summary from the loader's warnings and the library's report.
-    fn of_body(name: String, loaded: Vec<String>, report: MeshMassReport) -> Self {
-        let mut warnings = loaded;
-        warnings.extend(report.warnings.iter().map(ToString::to_string));
+    /// One body's summary from the library's, with the warnings in words
+    /// (lengths in metres for a file scaled by `scale`).
+    fn of_body(body: SolidBody, density: f64, scale: f64) -> Self {
+        let warnings = body
+            .warnings
+            .iter()
+            .map(|w| match w {
+                SolidWarning::Load(w) => load_warning_text(w, scale),
+                other => other.to_string(),
+            })
+            .collect();
         Self {
-            name,
-            principal: report.properties.principal(),
-            properties: report.properties,
-            density: report.density,
-            volume: report.volume,
-            area: report.area,
-            triangles: report.triangles,
+            name: body.name,
+            principal: body.properties.principal(),
+            properties: body.properties,
+            density,
+            volume: body.volume,
+            area: body.area,
+            triangles: body.triangles,
             warnings,
         }
     }
@@ -195,10 +213,10 @@ const PLAUSIBLE_SIZE: (f64, f64) = (1e-3, 10.0);
 
 /// A warning when the bodies' bounding box (m) is implausibly large or
 /// small for the stated units, naming the unit that makes it plausible.
-fn units_warning(setup: &Setup, bodies: &[(Body, Vec<String>)]) -> Option<String> {
+fn units_warning(setup: &Setup, bodies: &[Body]) -> Option<String> {
     let (lo, hi) = bodies
         .iter()
-        .flat_map(|(b, _)| b.mesh.vertices())
+        .flat_map(|b| b.mesh.vertices())
         .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &v| {
             (lo.min(v), hi.max(v))
         });
@@ -260,7 +278,8 @@ fn unit_name(u: Units) -> &'static str {
 /// [`CliError::LoadMesh`], [`CliError::NoBodies`], [`CliError::Body`] (naming the body; for an open
 /// mesh suggesting `--shell` or `--hull`), [`CliError::DerivedDensity`].
 pub fn compute(setup: Setup) -> Result<Report, CliError> {
-    let bodies = load_scaled(&setup, setup.merge)?;
+    let options = setup.solid_options(setup.merge);
+    let bodies = load_scaled(&setup, &options)?;
     if bodies.is_empty() {
         return Err(CliError::NoBodies {
             path: setup.file.clone(),
@@ -268,38 +287,31 @@ pub fn compute(setup: Setup) -> Result<Report, CliError> {
     }
     let file_warnings: Vec<String> = units_warning(&setup, &bodies).into_iter().collect();
     let several = bodies.len() > 1;
-    let fail = |name: String, e: InertiaError| body_error(&setup, name, several, e);
-    let density = match setup.density {
-        DensityChoice::Default => DEFAULT_DENSITY,
-        DensityChoice::Given(d) => d,
-        DensityChoice::TotalMass(mass) => {
-            // One density for the whole file: integrate once for the volumes.
-            let mut volume = 0.0;
-            for (body, _) in &bodies {
-                let unit =
-                    mesh_mass_properties(body.mesh.clone(), setup.model, Material::Density(1.0))
-                        .map_err(|e| fail(body.name.clone(), e))?;
-                volume += unit.volume;
-            }
-            let density = mass / volume;
-            if !(density.is_finite() && density > 0.0) {
-                return Err(CliError::DerivedDensity {
-                    path: setup.file.clone(),
-                    mass,
-                    volume,
-                });
-            }
-            density
-        }
+    let solid = options.solid(&setup.file, bodies).map_err(|e| match e {
+        InertiaError::InFile { body, source, .. } => body_error(&setup, body, several, *source),
+        InertiaError::DerivedDensity { mass, volume, .. } => CliError::DerivedDensity {
+            path: setup.file.clone(),
+            mass,
+            volume,
+        },
+        source => CliError::LoadMesh { source },
+    })?;
+    let density = solid.density;
+    let summaries: Vec<Summary> = solid
+        .bodies
+        .into_iter()
+        .map(|body| Summary::of_body(body, density, setup.scale))
+        .collect();
+    let assembly = Summary {
+        name: "assembly".into(),
+        principal: solid.properties.principal(),
+        properties: solid.properties,
+        density,
+        volume: solid.volume,
+        area: solid.area,
+        triangles: solid.triangles,
+        warnings: assembly_warnings(&summaries, &file_warnings),
     };
-    let mut summaries = Vec::with_capacity(bodies.len());
-    for (Body { name, mesh, .. }, loaded) in bodies {
-        match mesh_mass_properties(mesh, setup.model, Material::Density(density)) {
-            Ok(report) => summaries.push(Summary::of_body(name, loaded, report)),
-            Err(e) => return Err(fail(name, e)),
-        }
-    }
-    let assembly = assemble(&summaries, &file_warnings, density);
     Ok(Report {
         setup,
         bodies: summaries,
@@ -308,41 +320,21 @@ pub fn compute(setup: Setup) -> Result<Report, CliError> {
     })
 }
 
-/// The file's bodies, scaled to metres, each with its loader warnings as text.
-fn load_scaled(setup: &Setup, merge: bool) -> Result<Vec<(Body, Vec<String>)>, CliError> {
-    let bodies = setup
-        .load_options(merge)
-        .load(&setup.file)
-        .map_err(|source| CliError::LoadMesh { source })?;
-    let mut scaled = Vec::with_capacity(bodies.len());
-    for mut body in bodies {
-        if setup.scale != 1.0 {
-            body.mesh = match body.mesh.try_scaled(setup.scale) {
-                Ok(mesh) => mesh,
-                Err(_) => {
-                    let problem = BodyProblem::ScaleOverflow { scale: setup.scale };
-                    return Err(CliError::Body {
-                        path: setup.file.clone(),
-                        body: body.name,
-                        problem,
-                    });
-                }
-            };
-        }
-        let loaded = body
-            .warnings
-            .iter()
-            .map(|w| load_warning_text(w, setup.scale))
-            .collect();
-        scaled.push((body, loaded));
-    }
-    Ok(scaled)
+/// The file's bodies, scaled to metres.
+fn load_scaled(setup: &Setup, options: &SolidOptions) -> Result<Vec<Body>, CliError> {
+    options.load_bodies(&setup.file).map_err(|e| match e {
+        InertiaError::ScaleOverflow { body, scale, .. } => CliError::Body {
+            path: setup.file.clone(),
+            body,
+            problem: BodyProblem::ScaleOverflow { scale },
+        },
+        source => CliError::LoadMesh { source },
+    })
 }
 
-/// The rigid sum of the bodies (all in the mesh frame).
-fn assemble(bodies: &[Summary], file_warnings: &[String], density: f64) -> Summary {
-    let properties: MassProperties = bodies.iter().map(|b| b.properties).sum();
-    let warnings = file_warnings
+/// The assembly's warnings: the file's, then each body's prefixed with its name.
+fn assembly_warnings(bodies: &[Summary], file_warnings: &[String]) -> Vec<String> {
+    file_warnings
         .iter()
         .cloned()
         .chain(bodies.iter().flat_map(|b| {
@@ -350,17 +342,7 @@ fn assemble(bodies: &[Summary], file_warnings: &[String], density: f64) -> Summa
                 .iter()
                 .map(move |w| format!("body '{}': {w}", b.name))
         }))
-        .collect();
-    Summary {
-        name: "assembly".into(),
-        principal: properties.principal(),
-        properties,
-        density,
-        volume: bodies.iter().map(|b| b.volume).sum(),
-        area: bodies.iter().map(|b| b.area).sum(),
-        triangles: bodies.iter().map(|b| b.triangles).sum(),
-        warnings,
-    }
+        .collect()
 }
 
 /// The error of one body of the setup's file: when the body is open but
@@ -400,11 +382,11 @@ fn welded_is_solid(setup: &Setup, name: &str, weld: f64) -> bool {
         weld: WeldChoice::Metres(weld),
         ..setup.clone()
     };
-    match load_scaled(&trial, setup.merge) {
+    match load_scaled(&trial, &trial.solid_options(setup.merge)) {
         Ok(bodies) => bodies
             .into_iter()
-            .find(|(body, _)| body.name == name)
-            .is_some_and(|(body, _)| prepare_solid(body.mesh).is_ok()),
+            .find(|body| body.name == name)
+            .is_some_and(|body| prepare_solid(body.mesh).is_ok()),
         Err(_) => false,
     }
 }
@@ -418,10 +400,10 @@ fn round_up(x: f64) -> f64 {
 
 /// Whether all bodies of the file together form a closed surface.
 fn merged_is_solid(setup: &Setup) -> bool {
-    match load_scaled(setup, true) {
+    match load_scaled(setup, &setup.solid_options(true)) {
         Ok(bodies) => bodies
             .into_iter()
-            .all(|(body, _)| prepare_solid(body.mesh).is_ok()),
+            .all(|body| prepare_solid(body.mesh).is_ok()),
         Err(_) => false,
     }
 }

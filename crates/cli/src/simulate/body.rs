@@ -8,8 +8,8 @@ use std::path::Path;
 
 use glam::{DMat3, DQuat, DVec3};
 use kreisel_dynamics::{HeavyTop, PrincipalState, RigidBody};
-use kreisel_inertia::io::load_bodies;
-use kreisel_inertia::{MassModel, MassProperties, Material, mesh_mass_properties};
+use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
+use kreisel_inertia::{MassProperties, Material};
 use kreisel_kinematics::{EulerSequence, try_normalize_quat};
 use serde::Deserialize;
 use toml::Spanned;
@@ -269,30 +269,21 @@ fn mesh_properties(
     folder: &Path,
 ) -> Result<MassProperties, CliError> {
     let path = folder.join(mesh.get_ref());
-    let fail = |message: String| keys.fail(mesh, &format!("`mesh`: {message}"));
-    let bodies = load_bodies(&path).map_err(|e| fail(e.to_string()))?;
-    if bodies.is_empty() {
-        return Err(fail(format!(
-            "{}: the file holds no mesh bodies",
-            path.display()
-        )));
-    }
-    let mut parts = Vec::with_capacity(bodies.len());
-    for body in bodies {
-        let report = mesh_mass_properties(body.mesh, MassModel::Solid, Material::Density(density))
-            .map_err(|e| fail(format!("{}: body '{}': {e}", path.display(), body.name)))?;
-        for warning in &report.warnings {
-            // Repairs (winding, degenerate triangles) are worth knowing, not fatal.
+    let options = SolidOptions::new(Material::Density(density));
+    let solid =
+        load_solid(&path, &options).map_err(|e| keys.fail(mesh, &format!("`mesh`: {e}")))?;
+    for (body, warning) in solid.warnings() {
+        // Repairs (winding, degenerate triangles) are worth knowing, not
+        // fatal; the loader's own notes (welds, skipped faces) are not shown.
+        if let SolidWarning::Mesh(warning) = warning {
             let _ = writeln!(
                 std::io::stderr(),
-                "kreisel: warning: {}: body '{}': {warning}",
+                "kreisel: warning: {}: body '{body}': {warning}",
                 path.display(),
-                body.name
             );
         }
-        parts.push(report.properties);
     }
-    Ok(parts.into_iter().sum())
+    Ok(solid.properties)
 }
 
 /// The initial attitude from `orientation` or `euler` (identity without either).
