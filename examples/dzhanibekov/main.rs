@@ -66,9 +66,9 @@ pub enum DemoError {
         /// What it must be.
         range: &'static str,
     },
-    /// The mesh has no body.
-    #[error("{path}: the file holds no body")]
-    EmptyMesh {
+    /// The file's bodies have more vertices together than a drawing can number.
+    #[error("{path}: more than 2^32 vertices in all bodies together")]
+    TooManyVertices {
         /// The mesh file.
         path: PathBuf,
     },

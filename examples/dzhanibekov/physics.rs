@@ -13,8 +13,8 @@ use kreisel::dynamics::{
     AxisStability, EllipticMotion, FreeBodyIntegrator, PrincipalState, Propagator, RigidBody,
     axis_stability, elliptic_motion,
 };
-use kreisel::inertia::io::load_bodies;
-use kreisel::inertia::{MassModel, MassProperties, Material, mesh_mass_properties};
+use kreisel::inertia::io::SolidOptions;
+use kreisel::inertia::{MassProperties, Material};
 
 use super::DemoError;
 
@@ -52,7 +52,8 @@ impl SpinAxis {
 /// The handle: its triangles about the centre of mass, and its inertia.
 #[derive(Debug, Clone)]
 pub struct Handle {
-    /// The body's name in the mesh file.
+    /// The body's name in the mesh file (the names joined by ` + ` when the
+    /// file holds several bodies).
     pub name: String,
     /// Vertices in body coordinates, relative to the centre of mass, m.
     pub vertices_body: Vec<DVec3>,
@@ -65,30 +66,38 @@ pub struct Handle {
 }
 
 impl Handle {
-    /// Loads the first body of a closed mesh file and computes its mass
-    /// properties as a solid of the given density (kg/m³).
+    /// Loads a mesh file as one solid of the given density (kg/m³), as
+    /// `kreisel simulate` does: every body of the file, closed, together as
+    /// one rigid handle (a file of one body is that body).
     ///
     /// # Errors
-    /// The mesh file's errors, an open mesh, a non-positive density, or an
-    /// inertia tensor that is not a rigid body's.
+    /// The mesh file's errors (naming the file, and the body at fault), an
+    /// open mesh, a non-positive density, an inertia tensor that is not a
+    /// rigid body's, or more vertices than triangles can number.
     pub fn load(path: &Path, density: f64) -> Result<Self, DemoError> {
-        let body = load_bodies(path)?
-            .into_iter()
-            .next()
-            .ok_or_else(|| DemoError::EmptyMesh {
-                path: path.to_path_buf(),
-            })?;
-        let report = mesh_mass_properties(
-            body.mesh.clone(),
-            MassModel::Solid,
-            Material::Density(density),
-        )?;
-        let properties = report.properties;
+        let options = SolidOptions::new(Material::Density(density));
+        let bodies = options.load_bodies(path)?;
+        // The drawing: every body's triangles over one list of vertices, as loaded.
+        let mut vertices: Vec<DVec3> = Vec::new();
+        let mut triangles = Vec::new();
+        for body in &bodies {
+            let first = vertices.len() as u32;
+            vertices.extend_from_slice(body.mesh.vertices());
+            // Every index, `first + i < vertices.len()`, then fits in u32.
+            if u32::try_from(vertices.len()).is_err() {
+                return Err(DemoError::TooManyVertices {
+                    path: path.to_path_buf(),
+                });
+            }
+            triangles.extend(body.mesh.triangles().iter().map(|t| t.map(|i| i + first)));
+        }
+        let solid = options.solid(path, bodies)?;
+        let properties = solid.properties;
         let rigid = RigidBody::from_mass_properties(&properties)?;
-        let (vertices, triangles) = body.mesh.into_parts();
+        let names: Vec<&str> = solid.bodies.iter().map(|b| b.name.as_str()).collect();
         let com = properties.center_of_mass;
         Ok(Self {
-            name: body.name,
+            name: names.join(" + "),
             vertices_body: vertices.into_iter().map(|v| v - com).collect(),
             triangles,
             properties,
@@ -351,6 +360,58 @@ mod tests {
 
     fn handle() -> Handle {
         Handle::load(Path::new(super::super::options::DEFAULT_MESH), 7850.0).unwrap()
+    }
+
+    /// A file of two unit cubes, one at the origin and one 2 m along x:
+    /// one rigid handle of both, drawn with every triangle.
+    #[test]
+    fn a_file_of_several_bodies_is_one_handle() {
+        let faces = [
+            [0, 2, 3],
+            [0, 3, 1],
+            [4, 5, 7],
+            [4, 7, 6],
+            [0, 1, 5],
+            [0, 5, 4],
+            [2, 6, 7],
+            [2, 7, 3],
+            [0, 4, 6],
+            [0, 6, 2],
+            [1, 3, 7],
+            [1, 7, 5],
+        ];
+        let mut obj = String::new();
+        for (name, x, first) in [("a", 0, 1), ("b", 2, 9)] {
+            obj += &format!("o {name}\n");
+            for i in 0..8 {
+                obj += &format!("v {} {} {}\n", x + (i & 1), (i >> 1) & 1, (i >> 2) & 1);
+            }
+            for [p, q, r] in faces {
+                obj += &format!("f {} {} {}\n", p + first, q + first, r + first);
+            }
+        }
+        let dir = std::env::temp_dir().join(format!("dzhanibekov-handle-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("two.obj");
+        std::fs::write(&path, obj).unwrap();
+        let h = Handle::load(&path, 1000.0).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert_eq!(h.name, "a + b");
+        assert_eq!((h.vertices_body.len(), h.triangles.len()), (16, 24));
+        assert!(h.triangles.iter().flatten().all(|&i| i < 16));
+        // m = 2 ρ, c = (1.5, 0.5, 0.5); each cube I = ρ/6 about its centre,
+        // the centres 1 m from c along x: I_yy = I_zz = 2 (ρ/6 + ρ · 1²).
+        let rho = 1000.0;
+        assert!((h.properties.mass - 2.0 * rho).abs() < 1e-12);
+        assert!((h.properties.center_of_mass - DVec3::new(1.5, 0.5, 0.5)).length() < 1e-14);
+        let want = DVec3::new(rho / 3.0, 2.0 * (rho / 6.0 + rho), 2.0 * (rho / 6.0 + rho));
+        assert!(
+            (h.moments() - want).abs().max_element() < 1e-10,
+            "{}",
+            h.moments()
+        );
+        let mean = h.vertices_body.iter().sum::<DVec3>() / 16.0;
+        assert!(mean.length() < 1e-14);
     }
 
     #[test]
