@@ -62,6 +62,7 @@ mod rk4;
 pub mod splitting;
 mod stability;
 mod state;
+mod world;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
@@ -85,3 +86,4 @@ pub use stability::{
     AxisStability, EllipticMotion, axis_stability, elliptic_motion, try_axis_stability,
 };
 pub use state::PrincipalState;
+pub use world::{Body, BodyBuilder, BodyId, BodyState, Plan, Support, World};
