@@ -1,15 +1,18 @@
-//! One stepping interface for every torque-free integrator, and the registry
-//! that maps method names to integrators.
+//! One stepping interface for every torque-free integrator, and the string
+//! registry that maps method names to integrators (a thin wrapper over
+//! [`FreeBodyMethod`]).
 
 use glam::DVec3;
 
-use crate::{DivergenceCheck, DynamicsError, PrincipalState, RigidBody};
+use crate::{DivergenceCheck, DynamicsError, FreeBodyMethod, PrincipalState, RigidBody};
 
 /// A one-step method for the torque-free rigid body in its principal frame.
 pub trait FreeBodyIntegrator {
     /// The method's registry name (e.g. `"rk4"`).
     fn name(&self) -> &'static str;
-    /// The order of the method (global error `O(hᵖ)`).
+    /// The order of the method (global error `O(hᵖ)`); `u32::MAX` for the
+    /// exact solution, which has no truncation error (where
+    /// [`FreeBodyMethod::order`] says `None`).
     fn order(&self) -> u32;
     /// Advances `state` by `h` seconds for principal moments `moments`.
     ///
@@ -143,35 +146,36 @@ pub fn integrate(
     Ok(())
 }
 
-/// The names the registry knows: `auto`, the exact solution, then the
-/// integrators (RK4, the exact-rotation splittings and their compositions,
-/// the discrete Moser–Veselov family).
-pub const METHODS: [&str; 13] = [
-    "auto",
-    "exact",
-    "rk4",
-    "strang",
-    "splitting",
-    "splitting4",
-    "splitting6",
-    "splitting8",
-    "dmv",
-    "pdmv4",
-    "pdmv6",
-    "pdmv8",
-    "pdmv10",
-];
+/// The names the registry knows, in [`FreeBodyMethod::ALL`]'s order:
+/// `auto`, the exact solution, then the integrators (RK4, the
+/// exact-rotation splittings and their compositions, the discrete
+/// Moser–Veselov family). A thin wrapper over [`FreeBodyMethod::name`].
+///
+/// ```
+/// use kreisel_dynamics::{FreeBodyMethod, METHODS};
+/// assert_eq!(METHODS, FreeBodyMethod::ALL.map(FreeBodyMethod::name));
+/// ```
+pub const METHODS: [&str; FreeBodyMethod::ALL.len()] = {
+    let mut names = [""; FreeBodyMethod::ALL.len()];
+    let mut k = 0;
+    while k < names.len() {
+        names[k] = FreeBodyMethod::ALL[k].name();
+        k += 1;
+    }
+    names
+};
 
-/// What `auto` resolves to: the exact solution. It skips what a body does
-/// not need — a sphere or a spin about a principal axis is one uniform
-/// rotation, a symmetric body two commuting rotations, an asymmetric body
-/// the elliptic-function solution — has no truncation error at any step
-/// (`tests/free_body_exact.rs`: ≤ 2e-14 rad against every reference
-/// sample), and a step costs less than one Strang splitting step
-/// (`BENCHMARKS.md`).
-pub const AUTO: &str = "exact";
+/// What `auto` resolves to ([`FreeBodyMethod::resolve`]): the exact
+/// solution. It skips what a body does not need — a sphere or a spin about
+/// a principal axis is one uniform rotation, a symmetric body two commuting
+/// rotations, an asymmetric body the elliptic-function solution — has no
+/// truncation error at any step (`tests/free_body_exact.rs`: ≤ 2e-14 rad
+/// against every reference sample), and a step costs less than one Strang
+/// splitting step (`BENCHMARKS.md`).
+pub const AUTO: &str = FreeBodyMethod::Auto.resolve().name();
 
-/// The integrator registered under `name`.
+/// The integrator registered under `name`: a thin wrapper over
+/// [`FreeBodyMethod`]'s `FromStr` and [`FreeBodyMethod::integrator`].
 ///
 /// # Errors
 /// [`DynamicsError::UnknownMethod`] listing the known names.
@@ -184,27 +188,6 @@ pub const AUTO: &str = "exact";
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 pub fn method(name: &str) -> Result<Box<dyn FreeBodyIntegrator>, DynamicsError> {
-    use crate::composition::{Composition, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
-    use crate::splitting::{AxisStrang, SymmetricTopSplitting};
-    Ok(match name {
-        "auto" => return method(AUTO),
-        "rk4" => Box::new(crate::Rk4),
-        "exact" => Box::new(crate::ExactFlow),
-        "strang" => Box::new(AxisStrang),
-        "splitting" => Box::new(SymmetricTopSplitting),
-        "splitting4" => Box::new(Composition::new("splitting4", 4, &SUZUKI_4)),
-        "splitting6" => Box::new(Composition::new("splitting6", 6, &KAHAN_LI_6)),
-        "splitting8" => Box::new(Composition::new("splitting8", 8, &KAHAN_LI_8)),
-        "dmv" => Box::new(crate::MoserVeselov),
-        "pdmv4" => Box::new(crate::PreprocessedMoserVeselov::ORDER_4),
-        "pdmv6" => Box::new(crate::PreprocessedMoserVeselov::ORDER_6),
-        "pdmv8" => Box::new(crate::PreprocessedMoserVeselov::ORDER_8),
-        "pdmv10" => Box::new(crate::PreprocessedMoserVeselov::ORDER_10),
-        _ => {
-            return Err(DynamicsError::UnknownMethod {
-                name: name.to_owned(),
-                known: METHODS.join(", "),
-            });
-        }
-    })
+    name.parse::<FreeBodyMethod>()
+        .map(FreeBodyMethod::integrator)
 }

@@ -23,7 +23,12 @@
 //!   elliptic integrals of the third kind, turning points, nutation period,
 //!   the kinds of motion, sleeping-top stability and steady precession
 //!   (notes §3.10–3.11);
-//! - [`elliptic`]: the elliptic integrals and Jacobi functions this needs.
+//! - [`elliptic`]: the elliptic integrals and Jacobi functions this needs;
+//! - the methods as types, [`FreeBodyMethod`] and [`HeavyTopMethod`]: every
+//!   method's name (`FromStr`, `Display`), order, one-line description and
+//!   integrator, in one list ([`FreeBodyMethod::ALL`]) that the CLI, the
+//!   benches and the tests read. [`method`] and [`METHODS`] (and their
+//!   heavy-top twins) are thin wrappers over them.
 //!
 //! ## Conventions
 //! - SI units, radians. States live in the principal frame:
@@ -54,6 +59,7 @@ mod exact;
 mod heavy_top;
 mod integrator;
 mod lagrange_top;
+mod method;
 mod moser_veselov;
 mod moser_veselov_preprocessed;
 mod rigid_body;
@@ -77,6 +83,7 @@ pub use lagrange_top::{
     EulerAnglesAndRates, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, SteadyPrecession,
     TopMotionKind,
 };
+pub use method::{FreeBodyMethod, HeavyTopMethod};
 pub use moser_veselov::MoserVeselov;
 pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;
 pub use rigid_body::{MIN_MOMENT_RATIO, RigidBody};

@@ -1,9 +1,8 @@
-//! One stepping interface for the heavy-top integrators, and their registry.
+//! One stepping interface for the heavy-top integrators, and their string
+//! registry (a thin wrapper over [`HeavyTopMethod`]).
 
 use super::HeavyTop;
-use super::rk4::HeavyTopRk4;
-use super::splitting::HeavyTopSplitting;
-use crate::{DivergenceCheck, DynamicsError, PrincipalState, Propagator};
+use crate::{DivergenceCheck, DynamicsError, HeavyTopMethod, PrincipalState, Propagator};
 
 /// A one-step method for the heavy top.
 pub trait HeavyTopIntegrator {
@@ -120,18 +119,26 @@ pub fn integrate_heavy_top(
     Ok(())
 }
 
-/// The names the heavy-top registry knows: `auto`, the RK4 baseline, the
-/// Strang splitting and its compositions.
-pub const HEAVY_TOP_METHODS: [&str; 6] = [
-    "auto",
-    "rk4",
-    "strang",
-    "splitting4",
-    "splitting6",
-    "splitting8",
-];
+/// The names the heavy-top registry knows, in [`HeavyTopMethod::ALL`]'s
+/// order: `auto`, the RK4 baseline, the Strang splitting and its
+/// compositions. A thin wrapper over [`HeavyTopMethod::name`].
+///
+/// ```
+/// use kreisel_dynamics::{HEAVY_TOP_METHODS, HeavyTopMethod};
+/// assert_eq!(HEAVY_TOP_METHODS, HeavyTopMethod::ALL.map(HeavyTopMethod::name));
+/// ```
+pub const HEAVY_TOP_METHODS: [&str; HeavyTopMethod::ALL.len()] = {
+    let mut names = [""; HeavyTopMethod::ALL.len()];
+    let mut k = 0;
+    while k < names.len() {
+        names[k] = HeavyTopMethod::ALL[k].name();
+        k += 1;
+    }
+    names
+};
 
-/// The heavy-top integrator registered under `name`.
+/// The heavy-top integrator registered under `name`: a thin wrapper over
+/// [`HeavyTopMethod`]'s `FromStr` and [`HeavyTopMethod::integrator`].
 ///
 /// # Errors
 /// [`DynamicsError::UnknownMethod`] listing the known names.
@@ -143,18 +150,6 @@ pub const HEAVY_TOP_METHODS: [&str; 6] = [
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 pub fn heavy_top_method(name: &str) -> Result<Box<dyn HeavyTopIntegrator>, DynamicsError> {
-    Ok(match name {
-        "auto" => Box::new(super::HeavyTopAuto),
-        "rk4" => Box::new(HeavyTopRk4),
-        "strang" => Box::new(HeavyTopSplitting::STRANG),
-        "splitting4" => Box::new(HeavyTopSplitting::ORDER_4),
-        "splitting6" => Box::new(HeavyTopSplitting::ORDER_6),
-        "splitting8" => Box::new(HeavyTopSplitting::ORDER_8),
-        _ => {
-            return Err(DynamicsError::UnknownMethod {
-                name: name.to_owned(),
-                known: HEAVY_TOP_METHODS.join(", "),
-            });
-        }
-    })
+    name.parse::<HeavyTopMethod>()
+        .map(HeavyTopMethod::integrator)
 }
