@@ -13,7 +13,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use glam::DVec3;
-use kreisel_dynamics::{BodyId, World};
+use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, World};
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -212,15 +212,16 @@ pub fn parse_with_method(
     let name = override_method
         .or(method.as_deref())
         .unwrap_or(methods::AUTO);
-    world
-        .set_free_body_method(name)
-        .map_err(|e| file.error(None, &e.to_string()))?;
-    // A method without a heavy-top version is refused below if a body has a pivot.
-    if world.set_heavy_top_method(name).is_err() {
-        world
-            .set_heavy_top_method(methods::AUTO)
-            .map_err(|e| file.error(None, &e.to_string()))?;
-    }
+    let free: FreeBodyMethod = name
+        .parse()
+        .map_err(|e: DynamicsError| file.error(None, &e.to_string()))?;
+    // A method without a heavy-top version is refused below if a body has
+    // a pivot; until then the heavy-top default stands.
+    let heavy = free.heavy_top().unwrap_or_default();
+    let configured = world
+        .set_free_body_method(free)
+        .and_then(|()| world.set_heavy_top_method(heavy));
+    configured.map_err(|e| file.error(None, &e.to_string()))?;
     let mut bodies: Vec<(String, BodyId)> = Vec::with_capacity(raw.body.len());
     // A set, not a search of the bodies so far: 10⁵ bodies took 31 s that way.
     let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());

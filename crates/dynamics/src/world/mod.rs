@@ -29,8 +29,8 @@ pub use self::state::{BodyId, BodyState};
 use self::clock::{Clock, Route};
 use self::plan::Motion;
 use crate::{
-    DivergenceCheck, DynamicsError, FreeBodyIntegrator, HeavyTop, HeavyTopIntegrator,
-    PrincipalState, RigidBody,
+    DivergenceCheck, DynamicsError, FreeBodyMethod, HeavyTop, HeavyTopMethod, PrincipalState,
+    RigidBody,
 };
 
 /// Bodies under gravity, stepped together: the library's engine.
@@ -59,8 +59,8 @@ use crate::{
 /// ```
 pub struct World {
     gravity: DVec3,
-    free_method: &'static dyn FreeBodyIntegrator,
-    heavy_method: &'static dyn HeavyTopIntegrator,
+    free_method: FreeBodyMethod,
+    heavy_method: HeavyTopMethod,
     clock: Clock,
     entries: Vec<Entry>,
     failed: Option<DynamicsError>,
@@ -87,8 +87,8 @@ impl std::fmt::Debug for World {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("World")
             .field("gravity", &self.gravity)
-            .field("free_body_method", &self.free_method.name())
-            .field("heavy_top_method", &self.heavy_method.name())
+            .field("free_body_method", &self.free_method)
+            .field("heavy_top_method", &self.heavy_method)
             .field("clock", &self.clock)
             .field("bodies", &self.entries)
             .field("failed", &self.failed)
@@ -129,76 +129,72 @@ impl World {
         }
         Ok(Self {
             gravity,
-            free_method: registry::free_body("auto")?,
-            heavy_method: registry::heavy_top("auto")?,
+            free_method: FreeBodyMethod::Auto,
+            heavy_method: HeavyTopMethod::Auto,
             clock: Clock::new(dt),
             entries: Vec::new(),
             failed: None,
         })
     }
 
-    /// Chooses the free-body method by its registry name
-    /// ([`crate::METHODS`]); the bodies' plans are remade from their
-    /// current states.
+    /// Chooses the free-body method; the bodies' plans are remade from
+    /// their current states.
     ///
     /// # Errors
-    /// [`DynamicsError::UnknownMethod`]; the set-up errors of a plan.
+    /// The set-up errors of a plan.
     ///
     /// ```
     /// use glam::DVec3;
-    /// use kreisel_dynamics::{Body, Plan, World};
+    /// use kreisel_dynamics::{Body, FreeBodyMethod, Plan, World};
     /// let mut world = World::try_new(DVec3::ZERO, 0.01)?;
     /// let id = world.add(Body::from_principal_moments(1.0, DVec3::ONE).omega_body(DVec3::Z).try_build()?)?;
     /// assert_eq!(world.plan(id), Some(&Plan::Sphere));
-    /// world.set_free_body_method("pdmv6")?;
-    /// assert_eq!(world.plan(id), Some(&Plan::Stepping { method: "pdmv6", order: 6 }));
-    /// assert!(world.set_free_body_method("euler").is_err());
+    /// world.set_free_body_method("pdmv6".parse()?)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Stepping(FreeBodyMethod::Pdmv6)));
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
-    pub fn set_free_body_method(&mut self, name: &str) -> Result<(), DynamicsError> {
-        self.free_method = registry::free_body(name)?;
+    pub fn set_free_body_method(&mut self, method: FreeBodyMethod) -> Result<(), DynamicsError> {
+        self.free_method = method;
         self.replan_all()
     }
 
-    /// Chooses the heavy-top method by its registry name
-    /// ([`crate::HEAVY_TOP_METHODS`]).
+    /// Chooses the heavy-top method; the plans are remade.
     ///
     /// # Errors
-    /// [`DynamicsError::UnknownMethod`].
+    /// The set-up errors of a plan.
     ///
     /// ```
-    /// # use kreisel_dynamics::World;
+    /// use kreisel_dynamics::{HeavyTopMethod, World};
     /// let mut world = World::try_new(glam::DVec3::ZERO, 0.01)?;
-    /// world.set_heavy_top_method("splitting6")?;
-    /// assert_eq!(world.heavy_top_method(), "splitting6");
-    /// assert!(world.set_heavy_top_method("exact").is_err());
+    /// world.set_heavy_top_method(HeavyTopMethod::Splitting6)?;
+    /// assert_eq!(world.heavy_top_method(), HeavyTopMethod::Splitting6);
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
-    pub fn set_heavy_top_method(&mut self, name: &str) -> Result<(), DynamicsError> {
-        self.heavy_method = registry::heavy_top(name)?;
+    pub fn set_heavy_top_method(&mut self, method: HeavyTopMethod) -> Result<(), DynamicsError> {
+        self.heavy_method = method;
         self.replan_all()
     }
 
-    /// The free-body method's registry name (`exact` for `auto`).
+    /// The free-body method (`auto` by default).
     ///
     /// ```
     /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.01)?;
-    /// assert_eq!(world.free_body_method(), "exact");
+    /// assert_eq!(world.free_body_method(), kreisel_dynamics::FreeBodyMethod::Auto);
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
-    pub fn free_body_method(&self) -> &'static str {
-        self.free_method.name()
+    pub fn free_body_method(&self) -> FreeBodyMethod {
+        self.free_method
     }
 
-    /// The heavy-top method's registry name.
+    /// The heavy-top method (`auto` by default).
     ///
     /// ```
     /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.01)?;
-    /// assert_eq!(world.heavy_top_method(), "auto");
+    /// assert_eq!(world.heavy_top_method(), kreisel_dynamics::HeavyTopMethod::Auto);
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
-    pub fn heavy_top_method(&self) -> &'static str {
-        self.heavy_method.name()
+    pub fn heavy_top_method(&self) -> HeavyTopMethod {
+        self.heavy_method
     }
 
     /// The time step of the stepping methods, s.
@@ -273,7 +269,7 @@ impl World {
     ///     .pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO)
     ///     .try_build()?;
     /// let id = world.add(top)?;
-    /// assert_eq!(world.plan(id), Some(&Plan::HeavyTop { method: "auto", order: 8 }));
+    /// assert_eq!(world.plan(id), Some(&Plan::HeavyTop(kreisel_dynamics::HeavyTopMethod::Auto)));
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn add(&mut self, body: Body) -> Result<BodyId, DynamicsError> {
@@ -325,7 +321,8 @@ impl World {
                 let moments = rigid.principal_moments();
                 let (plan, motion) =
                     Motion::free(self.free_method, moments, state, self.clock.now())?;
-                let check = DivergenceCheck::free_body(self.free_method.name(), moments, &state);
+                let name = registry::free_body(self.free_method).name();
+                let check = DivergenceCheck::free_body(name, moments, &state);
                 (plan, motion, Some(check))
             }
         })
@@ -556,7 +553,7 @@ impl World {
     /// use glam::DVec3;
     /// use kreisel_dynamics::{Body, World};
     /// let mut world = World::try_new(DVec3::ZERO, 0.01)?;
-    /// world.set_free_body_method("rk4")?;
+    /// world.set_free_body_method(kreisel_dynamics::FreeBodyMethod::Rk4)?;
     /// let fast = Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0)).omega_body(DVec3::new(1e4, 1e2, 0.0));
     /// world.add(fast.try_build()?)?;
     /// // h ω = 100: far beyond RK4's stability.
@@ -579,7 +576,7 @@ impl World {
         }
         let end = self.clock.end_of(&route);
         let (clock, dt) = (self.clock, self.clock.dt());
-        let heavy = self.heavy_method;
+        let heavy = registry::heavy_top(self.heavy_method);
         // The time of step k of the route (1-based; the last one ends at route.end).
         let time_of = |k: u64| {
             if k <= route.whole {

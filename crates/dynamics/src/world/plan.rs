@@ -13,9 +13,12 @@
 
 use std::fmt;
 
+use super::registry;
 use crate::elliptic::dd::Dd;
 use crate::exact::ExactKind;
-use crate::{DynamicsError, ExactSolution, FreeBodyIntegrator, PrincipalState, Propagator};
+use crate::{
+    DynamicsError, ExactSolution, FreeBodyMethod, HeavyTopMethod, PrincipalState, Propagator,
+};
 
 /// What a body of a [`crate::World`] is and how it is moved (see
 /// [`crate::World::plans`]). Its [`Display`](fmt::Display) says what the
@@ -57,20 +60,11 @@ pub enum Plan {
     /// Jacobi elliptic functions, set up once and evaluated only at the
     /// times asked.
     Asymmetric,
-    /// A free body moved by the stepping method the user chose.
-    Stepping {
-        /// The method's registry name.
-        method: &'static str,
-        /// Its order.
-        order: u32,
-    },
-    /// A body on a pivot under gravity, moved by the heavy-top method.
-    HeavyTop {
-        /// The method's registry name.
-        method: &'static str,
-        /// Its order.
-        order: u32,
-    },
+    /// A free body moved by the stepping method the user chose, every `dt`.
+    Stepping(FreeBodyMethod),
+    /// A body on a pivot under gravity, moved by the heavy-top method
+    /// every `dt`.
+    HeavyTop(HeavyTopMethod),
 }
 
 impl Plan {
@@ -80,7 +74,7 @@ impl Plan {
     /// ```
     /// use kreisel_dynamics::Plan;
     /// assert!(Plan::Sphere.is_exact());
-    /// assert!(!Plan::Stepping { method: "rk4", order: 4 }.is_exact());
+    /// assert!(!Plan::Stepping(kreisel_dynamics::FreeBodyMethod::Rk4).is_exact());
     /// ```
     pub fn is_exact(&self) -> bool {
         matches!(
@@ -119,13 +113,20 @@ impl fmt::Display for Plan {
                 f,
                 "asymmetric free body: exact, Jacobi elliptic solution set up once and evaluated only at the times asked (three distinct moments)"
             ),
-            Plan::Stepping { method, order } => write!(
-                f,
-                "free body stepped by {method} (order {order}) every dt (the method chosen)"
-            ),
-            Plan::HeavyTop { method, order } => {
-                write!(f, "heavy top on a pivot: {method} (order {order}")?;
-                if *method == "auto" {
+            Plan::Stepping(method) => {
+                write!(f, "free body stepped by {method}")?;
+                if let Some(order) = method.order() {
+                    write!(f, " (order {order})")?;
+                }
+                write!(f, " every dt (the method chosen)")
+            }
+            Plan::HeavyTop(method) => {
+                write!(
+                    f,
+                    "heavy top on a pivot: {method} (order {}",
+                    method.order()
+                )?;
+                if *method == HeavyTopMethod::Auto {
                     write!(f, ", splitting8 sub-stepped within its stability limit")?;
                 }
                 write!(f, ") every dt (gravity exerts a torque about the pivot)")
@@ -167,17 +168,14 @@ impl Motion {
     /// # Errors
     /// The exact solution's set-up errors.
     pub(crate) fn free(
-        method: &'static dyn FreeBodyIntegrator,
+        method: FreeBodyMethod,
         moments: glam::DVec3,
         state: PrincipalState,
         start: Dd,
     ) -> Result<(Plan, Motion), DynamicsError> {
-        if method.name() != "exact" {
-            let plan = Plan::Stepping {
-                method: method.name(),
-                order: method.order(),
-            };
-            return Ok((plan, Motion::Stepping(method.propagator(moments, state))));
+        if method.resolve() != FreeBodyMethod::Exact {
+            let propagator = registry::free_body(method).propagator(moments, state);
+            return Ok((Plan::Stepping(method), Motion::Stepping(propagator)));
         }
         let solution = ExactSolution::try_new(moments, state)?;
         if state.l_principal == glam::DVec3::ZERO {
@@ -213,15 +211,8 @@ impl Motion {
     }
 
     /// The plan and motion of a heavy top.
-    pub(crate) fn heavy_top(
-        method: &'static dyn crate::HeavyTopIntegrator,
-        state: PrincipalState,
-    ) -> (Plan, Motion) {
-        let plan = Plan::HeavyTop {
-            method: method.name(),
-            order: method.order(),
-        };
-        (plan, Motion::HeavyTop(state))
+    pub(crate) fn heavy_top(method: HeavyTopMethod, state: PrincipalState) -> (Plan, Motion) {
+        (Plan::HeavyTop(method), Motion::HeavyTop(state))
     }
 
     /// The current state.
@@ -265,8 +256,7 @@ mod tests {
             world_from_principal: DQuat::IDENTITY,
             l_principal: l,
         };
-        let exact = crate::world::registry::free_body("exact").unwrap();
-        Motion::free(exact, moments, state, Dd::from_f64(0.0))
+        Motion::free(FreeBodyMethod::Auto, moments, state, Dd::from_f64(0.0))
             .unwrap()
             .0
     }
@@ -292,19 +282,13 @@ mod tests {
 
     #[test]
     fn stepping_methods_are_run_as_chosen() {
-        let rk4 = crate::world::registry::free_body("rk4").unwrap();
+        let rk4 = FreeBodyMethod::Rk4;
         let state = PrincipalState {
             world_from_principal: DQuat::IDENTITY,
             l_principal: DVec3::ZERO,
         };
         let (plan, _) = Motion::free(rk4, DVec3::ONE, state, Dd::from_f64(0.0)).unwrap();
-        assert_eq!(
-            plan,
-            Plan::Stepping {
-                method: "rk4",
-                order: 4
-            }
-        );
+        assert_eq!(plan, Plan::Stepping(rk4));
         assert_eq!(
             plan.to_string(),
             "free body stepped by rk4 (order 4) every dt (the method chosen)"

@@ -2,16 +2,16 @@
 //! propagator per stepped body, and a propagator borrows its integrator for
 //! as long as it lives, so the integrator must outlive the world.
 //!
-//! Every integrator of the registry ([`crate::method`],
-//! [`crate::heavy_top_method`]) is a constant, so each name maps to a
-//! `static` here; the tests check that the two registries agree.
+//! Every integrator is a constant, so each [`FreeBodyMethod`] and
+//! [`HeavyTopMethod`] maps to a `static` here (the matches are exhaustive:
+//! a new method does not compile until it is added); the tests check that
+//! they agree with the methods' own `integrator()`.
 
 use crate::composition::{Composition, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 use crate::splitting::{AxisStrang, SymmetricTopSplitting};
 use crate::{
-    DynamicsError, ExactFlow, FreeBodyIntegrator, HEAVY_TOP_METHODS, HeavyTopAuto,
-    HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting, METHODS, MoserVeselov,
-    PreprocessedMoserVeselov, Rk4,
+    ExactFlow, FreeBodyIntegrator, FreeBodyMethod, HeavyTopAuto, HeavyTopIntegrator,
+    HeavyTopMethod, HeavyTopRk4, HeavyTopSplitting, MoserVeselov, PreprocessedMoserVeselov, Rk4,
 };
 
 static SPLITTING4: Composition = Composition::new("splitting4", 4, &SUZUKI_4);
@@ -26,52 +26,35 @@ static HEAVY_SPLITTING4: HeavyTopSplitting = HeavyTopSplitting::ORDER_4;
 static HEAVY_SPLITTING6: HeavyTopSplitting = HeavyTopSplitting::ORDER_6;
 static HEAVY_SPLITTING8: HeavyTopSplitting = HeavyTopSplitting::ORDER_8;
 
-/// The free-body integrator called `name` (`auto` is the exact solution).
-///
-/// # Errors
-/// [`DynamicsError::UnknownMethod`] listing the known names.
-pub(crate) fn free_body(name: &str) -> Result<&'static dyn FreeBodyIntegrator, DynamicsError> {
-    Ok(match name {
-        "auto" | "exact" => &ExactFlow,
-        "rk4" => &Rk4,
-        "strang" => &AxisStrang,
-        "splitting" => &SymmetricTopSplitting,
-        "splitting4" => &SPLITTING4,
-        "splitting6" => &SPLITTING6,
-        "splitting8" => &SPLITTING8,
-        "dmv" => &MoserVeselov,
-        "pdmv4" => &PDMV4,
-        "pdmv6" => &PDMV6,
-        "pdmv8" => &PDMV8,
-        "pdmv10" => &PDMV10,
-        _ => {
-            return Err(DynamicsError::UnknownMethod {
-                name: name.to_owned(),
-                known: METHODS.join(", "),
-            });
-        }
-    })
+/// The integrator that runs free-body method `method` (`auto`: the exact
+/// solution).
+pub(crate) fn free_body(method: FreeBodyMethod) -> &'static dyn FreeBodyIntegrator {
+    match method {
+        FreeBodyMethod::Auto | FreeBodyMethod::Exact => &ExactFlow,
+        FreeBodyMethod::Rk4 => &Rk4,
+        FreeBodyMethod::Strang => &AxisStrang,
+        FreeBodyMethod::Splitting => &SymmetricTopSplitting,
+        FreeBodyMethod::Splitting4 => &SPLITTING4,
+        FreeBodyMethod::Splitting6 => &SPLITTING6,
+        FreeBodyMethod::Splitting8 => &SPLITTING8,
+        FreeBodyMethod::Dmv => &MoserVeselov,
+        FreeBodyMethod::Pdmv4 => &PDMV4,
+        FreeBodyMethod::Pdmv6 => &PDMV6,
+        FreeBodyMethod::Pdmv8 => &PDMV8,
+        FreeBodyMethod::Pdmv10 => &PDMV10,
+    }
 }
 
-/// The heavy-top integrator called `name`.
-///
-/// # Errors
-/// [`DynamicsError::UnknownMethod`] listing the heavy-top names.
-pub(crate) fn heavy_top(name: &str) -> Result<&'static dyn HeavyTopIntegrator, DynamicsError> {
-    Ok(match name {
-        "auto" => &HeavyTopAuto,
-        "rk4" => &HeavyTopRk4,
-        "strang" => &HEAVY_STRANG,
-        "splitting4" => &HEAVY_SPLITTING4,
-        "splitting6" => &HEAVY_SPLITTING6,
-        "splitting8" => &HEAVY_SPLITTING8,
-        _ => {
-            return Err(DynamicsError::UnknownMethod {
-                name: name.to_owned(),
-                known: HEAVY_TOP_METHODS.join(", "),
-            });
-        }
-    })
+/// The integrator that runs heavy-top method `method`.
+pub(crate) fn heavy_top(method: HeavyTopMethod) -> &'static dyn HeavyTopIntegrator {
+    match method {
+        HeavyTopMethod::Auto => &HeavyTopAuto,
+        HeavyTopMethod::Rk4 => &HeavyTopRk4,
+        HeavyTopMethod::Strang => &HEAVY_STRANG,
+        HeavyTopMethod::Splitting4 => &HEAVY_SPLITTING4,
+        HeavyTopMethod::Splitting6 => &HEAVY_SPLITTING6,
+        HeavyTopMethod::Splitting8 => &HEAVY_SPLITTING8,
+    }
 }
 
 #[cfg(test)]
@@ -79,18 +62,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn agrees_with_the_registries() {
-        for name in METHODS {
-            let ours = free_body(name).unwrap();
-            let theirs = crate::method(name).unwrap();
+    fn agrees_with_the_methods() {
+        for m in FreeBodyMethod::ALL {
+            let (ours, theirs) = (free_body(m), m.integrator());
             assert_eq!((ours.name(), ours.order()), (theirs.name(), theirs.order()));
         }
-        for name in HEAVY_TOP_METHODS {
-            let ours = heavy_top(name).unwrap();
-            let theirs = crate::heavy_top_method(name).unwrap();
+        for m in HeavyTopMethod::ALL {
+            let (ours, theirs) = (heavy_top(m), m.integrator());
             assert_eq!((ours.name(), ours.order()), (theirs.name(), theirs.order()));
         }
-        assert!(free_body("euler").is_err());
-        assert!(heavy_top("exact").is_err());
     }
 }
