@@ -110,7 +110,7 @@ impl Clock {
             });
         }
         let ratio = Dd::from_f64(t).add(self.origin.neg()).to_f64() / self.dt;
-        if !(ratio < MAX_WHOLE_STEPS) {
+        if ratio.is_nan() || ratio >= MAX_WHOLE_STEPS {
             return Err(invalid("more than 2^53 steps of dt away"));
         }
         let nearest = ratio.round();

@@ -415,8 +415,8 @@ impl World {
                     pivot_world,
                 },
             ) => {
-                let arm =
-                    world_from_body * (entry.body.mass_properties().center_of_mass - pivot_body);
+                let c = entry.body.mass_properties().center_of_mass - pivot_body;
+                let arm = world_from_body.normalize() * c;
                 let omega_world = state.world_from_principal.normalize()
                     * (state.l_principal / entry.rigid.principal_moments());
                 let energy = top.energy(&state) - mass * g.dot(pivot_world);
