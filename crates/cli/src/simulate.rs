@@ -3,9 +3,10 @@
 //! their states as CSV, in constant memory.
 //!
 //! The scene is read and checked first ([`scene::parse`], every error
-//! naming its line and key), then the bodies are stepped together on the
-//! grid of [`schedule::Schedule`] and the rows of [`output::CsvWriter`] are
-//! written as they are produced.
+//! naming its line and key) into a [`kreisel_dynamics::World`], which is
+//! then advanced from row to row on the grid of [`schedule::Schedule`]; the
+//! rows of [`output::CsvWriter`] are written as they are produced. The
+//! physics lives in the World: this module parses, formats and reports.
 
 #![forbid(unsafe_code)]
 
@@ -81,9 +82,15 @@ Motion:
   moves exactly: x(t) = x0 + v0 t + g t^2/2. A body with a pivot is a heavy
   top: it turns about the fixed pivot under the torque of gravity (none
   without gravity), moved by the heavy-top version of the method (see
-  --list-methods; exact, splitting, dmv and pdmv* have none). Each body is
-  advanced by the method with step dt; the last step is shortened to end
-  exactly at t = duration.
+  --list-methods; exact, splitting, dmv and pdmv* have none). A body moved
+  by a stepping method (every heavy top, and every body when a method other
+  than auto or exact is chosen) takes steps of dt; the last step is
+  shortened to end exactly at t = duration. Under auto or exact a free body
+  is not stepped: its exact solution is set up once and evaluated at the
+  times written (at rest: nothing to compute; a sphere or a spin about a
+  principal axis: one uniform rotation; two equal moments: a closed form).
+  --explain prints each body's plan (what it is, which method, why) and
+  exits without running.
 
 Output (CSV; standard output unless --output):
   t,body,qw,qx,qy,qz,wx,wy,wz,energy,lx,ly,lz
@@ -113,6 +120,7 @@ Examples:
   kreisel simulate spin.toml --output spin.csv
   kreisel simulate spin.toml --method rk4 | head
   kreisel simulate examples/scenes/heavy_top.toml
+  kreisel simulate examples/scenes/heavy_top.toml --explain
   kreisel simulate --list-methods";
 
 /// Arguments of `kreisel simulate`.
