@@ -10,6 +10,14 @@ use crate::{DynamicsError, PrincipalState, RigidBody};
 ///
 /// Applied torques and forces are not offered yet: they will be a field of
 /// [`Body`] of their own, so that a support stays what holds the body.
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{Body, Support};
+/// let b = Body::from_principal_moments(1.0, DVec3::ONE).free(DVec3::X, DVec3::Y).try_build()?;
+/// assert_eq!(b.support(), Support::Free { position: DVec3::X, velocity: DVec3::Y });
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Support {
     /// Nothing holds it: the centre of mass flies ballistically under the
@@ -216,6 +224,14 @@ impl BodyBuilder {
 
     /// The attitude, body → world (any non-zero finite quaternion: the
     /// world normalises it).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let q = glam::DQuat::from_rotation_y(0.4);
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).world_from_body(q).try_build()?;
+    /// assert_eq!(b.world_from_body(), q);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
     pub fn world_from_body(self, world_from_body: DQuat) -> Self {
         Self {
             world_from_body,
@@ -224,12 +240,26 @@ impl BodyBuilder {
     }
 
     /// The angular velocity in body axes, rad/s.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).omega_body(glam::DVec3::X).try_build()?;
+    /// assert_eq!(b.omega_body(), glam::DVec3::X);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
     pub fn omega_body(self, omega_body: DVec3) -> Self {
         Self { omega_body, ..self }
     }
 
     /// A free body with its centre of mass at `position` (m) moving at
     /// `velocity` (m/s), world axes.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// use glam::DVec3;
+    /// let b = Body::from_principal_moments(1.0, DVec3::ONE).free(DVec3::ZERO, DVec3::NAN);
+    /// assert!(b.try_build().is_err());
+    /// ```
     pub fn free(self, position: DVec3, velocity: DVec3) -> Self {
         Self {
             support: Support::Free { position, velocity },
@@ -239,6 +269,14 @@ impl BodyBuilder {
 
     /// A body turning about the fixed point `pivot_body` (body coordinates)
     /// placed at `pivot_world` (world axes): a heavy top.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, Support};
+    /// use glam::DVec3;
+    /// let b = Body::from_principal_moments(1.0, DVec3::ONE).pivot(-DVec3::Z, DVec3::ZERO).try_build()?;
+    /// assert_eq!(b.support(), Support::Pivot { pivot_body: -DVec3::Z, pivot_world: DVec3::ZERO });
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
     pub fn pivot(self, pivot_body: DVec3, pivot_world: DVec3) -> Self {
         Self {
             support: Support::Pivot {
