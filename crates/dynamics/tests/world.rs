@@ -302,3 +302,59 @@ fn a_diverging_body_stops_the_world_with_its_name_and_time() {
         Err(DynamicsError::InvalidTime { .. })
     ));
 }
+
+/// `kreisel simulate`'s grid, written out: steps of `dt` ending at `k·dt`,
+/// the last one `duration − (N − 1)·dt` (N = 10 here, the last step
+/// 0.09999999999999998 s, not 0.1).
+fn simulate_grid(duration: f64, dt: f64, n: u64) -> Vec<f64> {
+    (1..=n)
+        .map(|k| {
+            if k < n {
+                dt
+            } else {
+                duration - (n - 1) as f64 * dt
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn rows_on_the_simulate_grid_equal_a_propagator_stepped_on_it() {
+    let (duration, dt, every) = (1.0, 0.1, 3);
+    let steps = simulate_grid(duration, dt, 10);
+    assert_ne!(steps[9], dt);
+    let body = asymmetric();
+    for method in [
+        FreeBodyMethod::Auto,
+        FreeBodyMethod::Rk4,
+        FreeBodyMethod::Pdmv6,
+    ] {
+        let mut world = World::try_new(DVec3::ZERO, dt).unwrap();
+        world.set_free_body_method(method).unwrap();
+        let id = world.add(body.clone()).unwrap();
+        let integrator = method.integrator();
+        let mut reference = integrator.propagator(MOMENTS, initial(&body));
+        let mut done = 0;
+        for (k, h) in steps.iter().enumerate() {
+            reference.advance(*h);
+            let k = k as u64 + 1;
+            let last = k == steps.len() as u64;
+            if k % every == 0 && !last {
+                world.advance_steps(k - done).unwrap();
+                done = k;
+            } else if last {
+                world.advance_to(duration).unwrap();
+            } else {
+                continue;
+            }
+            let (s, r) = (world.state(id).unwrap(), reference.state());
+            assert_eq!(
+                s.world_from_body,
+                r.world_from_body(body.rigid_body()),
+                "{method} k = {k}"
+            );
+            assert_eq!(s.l_world, r.l_world(), "{method} k = {k}");
+            assert_eq!(s.time, if last { duration } else { k as f64 * dt });
+        }
+    }
+}
