@@ -588,7 +588,13 @@ impl World {
         let mut first: Option<Failure> = None;
         for (index, entry) in self.entries.iter_mut().enumerate() {
             let failure = match &mut entry.motion {
-                motion @ (Motion::Resting { .. } | Motion::Exact { .. }) => {
+                // At rest the state is the exact solution's value at its
+                // start, finite and checked when the plan was made.
+                Motion::Resting { state, settled } => {
+                    *state = *settled;
+                    None
+                }
+                motion @ Motion::Exact { .. } => {
                     motion.evaluate_at(end);
                     let check = entry.check.as_ref();
                     check

@@ -17,7 +17,8 @@ use super::registry;
 use crate::elliptic::dd::Dd;
 use crate::exact::ExactKind;
 use crate::{
-    DynamicsError, ExactSolution, FreeBodyMethod, HeavyTopMethod, PrincipalState, Propagator,
+    DivergenceCheck, DynamicsError, ExactSolution, FreeBodyMethod, HeavyTopMethod, PrincipalState,
+    Propagator,
 };
 
 /// What a body of a [`crate::World`] is and how it is moved (see
@@ -182,6 +183,7 @@ impl Motion {
             // ω t = 0 at every t: the exact solution at any time is its
             // value at 0, computed once.
             let settled = solution.state_at(0.0);
+            DivergenceCheck::free_body("exact", moments, &state).check(&settled, 0.0)?;
             return Ok((Plan::Resting, Motion::Resting { state, settled }));
         }
         let plan = match solution.kind() {
@@ -224,11 +226,8 @@ impl Motion {
         }
     }
 
-    /// For the exact motions: evaluates them at world time `now`.
+    /// For the exact motion: evaluates it at world time `now`.
     pub(crate) fn evaluate_at(&mut self, now: Dd) {
-        if let Motion::Resting { state, settled } = self {
-            *state = *settled;
-        }
         if let Motion::Exact {
             solution,
             start,
