@@ -339,7 +339,7 @@ fn rows_on_the_simulate_grid_equal_a_propagator_stepped_on_it() {
             reference.advance(*h);
             let k = k as u64 + 1;
             let last = k == steps.len() as u64;
-            if k % every == 0 && !last {
+            if k.is_multiple_of(every) && !last {
                 world.advance_steps(k - done).unwrap();
                 done = k;
             } else if last {
