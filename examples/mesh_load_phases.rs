@@ -15,13 +15,23 @@
 //!   vertex count as inside the load for indexed formats, and for binary STL
 //!   whose loader already shares exact repeats);
 //! - `parse` = `parse+merge` − `merge`;
-//! - `check`: [`prepare_solid`] (degenerate triangles, closure, manifold,
-//!   orientation);
+//! - `check (fresh)`: [`prepare_solid`] on a copy of the loaded mesh built
+//!   from its parts, the whole check: degenerate triangles, closure,
+//!   manifold, orientation;
+//! - `check`: [`prepare_solid`] on the loaded mesh as the CLI runs it (from
+//!   32768 triangles the weld has found the topology on a second thread
+//!   beside its tolerance pass, so what is left is orienting, the volume
+//!   signs and the degenerate triangles);
 //! - `integrate`: [`MeshMoments::solid`] and the mass properties;
 //! - `tobj` (OBJ only): `tobj::load_obj_buf` on the raw file, the third-party
 //!   parser's share;
 //! - `load_bodies`: [`load_bodies`] from the path (binary STL streams the
-//!   file instead of reading it whole).
+//!   file instead of reading it whole; from 32768 triangles the weld finds
+//!   the check's topology on a second thread, whose time this thread's
+//!   figure leaves out); `load_bodies wall` is its wall-clock time and
+//!   `load_bodies process CPU` the whole process's CPU time over it (user +
+//!   system, all threads; from `/proc/self/stat` in ticks of 10 ms, so ±10 ns per
+//!   triangle at 10⁶ triangles).
 //!
 //! `… peak B/tri`: how far the process's peak resident memory rose above its
 //! resident memory at the start of `merge`, `check` and `load_bodies` (Linux;
@@ -35,7 +45,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use kreisel::inertia::io::{MeshFormat, load_bodies, load_bodies_from_bytes};
-use kreisel::inertia::{MeshMoments, Weld, prepare_solid};
+use kreisel::inertia::{MeshMoments, TriMesh, Weld, prepare_solid};
 
 /// CPU time of this thread in seconds, or wall time if unavailable.
 fn now() -> f64 {
@@ -45,6 +55,19 @@ fn now() -> f64 {
         Some(ns) => ns as f64 * 1e-9,
         None => START.get_or_init(Instant::now).elapsed().as_secs_f64(),
     }
+}
+
+/// CPU time of the whole process (all threads, user + system) in seconds,
+/// from `/proc/self/stat` (ticks of 1/100 s), if readable.
+fn process_cpu() -> Option<f64> {
+    let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+    // Fields after the parenthesised command name; utime and stime are
+    // fields 14 and 15 of the whole line.
+    let rest = stat.rsplit_once(')')?.1;
+    let mut fields = rest.split_whitespace().skip(11);
+    let user: f64 = fields.next()?.parse().ok()?;
+    let system: f64 = fields.next()?.parse().ok()?;
+    Some((user + system) / 100.0)
 }
 
 /// A field of `/proc/self/status` in bytes (`VmRSS`, `VmHWM`), if readable.
@@ -80,6 +103,9 @@ fn phases(path: &Path) -> Result<(), String> {
     let (merged, merge, merge_mem) = timed(|| mesh.clone().welded(Weld::default()));
     let merged = merged.map_err(|e| e.to_string())?.0;
     assert_eq!(merged.vertices().len(), mesh.vertices().len());
+    let parts = || TriMesh::new(mesh.vertices().to_vec(), mesh.triangles().to_vec());
+    let (fresh, check_fresh, _) = timed(|| prepare_solid(parts()));
+    fresh.map_err(|e| e.to_string())?;
     let (checked, check, check_mem) = timed(|| prepare_solid(mesh.clone()));
     let checked = checked.map_err(|e| e.to_string())?;
     let (mass, integrate, _) = timed(|| MeshMoments::solid(&checked.mesh).mass_properties(1000.0));
@@ -100,7 +126,11 @@ fn phases(path: &Path) -> Result<(), String> {
         seconds
     });
     drop(bytes);
+    let wall = Instant::now();
+    let cpu = process_cpu();
     let (streamed, load_path, load_mem) = timed(|| load_bodies(path));
+    let load_wall = wall.elapsed().as_secs_f64();
+    let load_cpu = process_cpu().zip(cpu).map(|(b, a)| b - a);
     streamed.map_err(|e| e.to_string())?;
     let ns = |s: f64| format!("{:.0}", s / n * 1e9);
     let per = |bytes: f64| format!("{:.0}", bytes / n);
@@ -110,9 +140,15 @@ fn phases(path: &Path) -> Result<(), String> {
         ("parse+merge", ns(load)),
         ("merge", ns(merge)),
         ("parse", ns(load - merge)),
+        ("check (fresh)", ns(check_fresh)),
         ("check", ns(check)),
         ("integrate", ns(integrate)),
         ("load_bodies", ns(load_path)),
+        ("load_bodies wall", ns(load_wall)),
+        (
+            "load_bodies process CPU",
+            load_cpu.map_or_else(|| "?".to_owned(), ns),
+        ),
         ("merge peak B/tri", per(merge_mem)),
         ("check peak B/tri", per(check_mem)),
         ("load_bodies peak B/tri", per(load_mem)),

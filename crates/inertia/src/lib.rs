@@ -27,6 +27,7 @@ mod mesh_mass;
 mod parry_interop;
 mod primitives;
 mod principal_axes;
+mod quickhull;
 mod solid_kernel;
 mod tri_mesh;
 mod weld;

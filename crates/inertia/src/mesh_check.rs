@@ -292,7 +292,7 @@ fn solid_angle(a: DVec3, b: DVec3, c: DVec3) -> f64 {
 /// # Ok::<(), kreisel_inertia::InertiaError>(())
 /// ```
 pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
-    let (vertices, mut triangles) = mesh.into_parts();
+    let (vertices, mut triangles, known) = mesh.into_parts_and_topology();
     let before = triangles.len();
     triangles.retain(|&t| !collapsed(t));
     let collapsed_count = before - triangles.len();
@@ -302,7 +302,13 @@ pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
             triangles: 0,
         });
     }
-    let mut warnings = match orient(&vertices, &mut triangles) {
+    // A topology found while the mesh was welded is that of these very
+    // triangles (it is only kept when none repeats an index).
+    let first = match known {
+        Some(topology) if collapsed_count == 0 => orient_as(&vertices, &mut triangles, &topology),
+        _ => orient(&vertices, &mut triangles),
+    };
+    let mut warnings = match first {
         Ok(warnings) => warnings,
         Err(error) => {
             // A zero-area sliver dangling off the surface: retry without them.
@@ -337,86 +343,150 @@ fn flipped([a, b, c]: [u32; 3]) -> [u32; 3] {
     [a, c, b]
 }
 
+/// How the triangles hang together, found from their indices alone (so it
+/// holds for the mesh however its vertices are scaled or moved): the
+/// connected surfaces across edges of two triangles, and which triangles
+/// to flip so that each surface is consistently wound.
+#[derive(Debug)]
+pub(crate) struct Topology {
+    /// The triangles of each connected surface, seed first.
+    components: Vec<Vec<u32>>,
+    /// Whether each triangle is flipped to agree with its surface's seed.
+    flip: Vec<bool>,
+    /// Edges of more than two triangles (checked once oriented).
+    shared_edges: usize,
+}
+
+/// Why triangles cannot be oriented, found from their indices alone.
+enum TopologyError {
+    /// These edges (`low << 32 | high`, sorted) have one triangle.
+    Open(Vec<u64>),
+    /// A surface of this many triangles is not orientable.
+    NonOrientable(usize),
+}
+
+impl TopologyError {
+    /// The mesh error, with the places named from the vertices.
+    fn into_error(self, vertices: &[DVec3]) -> InertiaError {
+        match self {
+            TopologyError::Open(boundary) => InertiaError::OpenMesh {
+                boundary_edges: boundary.len(),
+                at: edge_midpoint(vertices, boundary[0]),
+                weld_gap: weld_gap(vertices, &boundary),
+            },
+            TopologyError::NonOrientable(triangles) => InertiaError::NonOrientable { triangles },
+        }
+    }
+}
+
+impl Topology {
+    /// The topology of triangles that [`prepare_solid`] would check as they
+    /// are (none repeats a vertex index), if they are closed and orientable;
+    /// `None` otherwise (then the check finds out again, and says why).
+    pub(crate) fn of_solid(triangles: &[[u32; 3]], vertices: usize) -> Option<Self> {
+        if triangles.iter().any(|&t| collapsed(t)) {
+            return None;
+        }
+        Self::of(triangles, vertices).ok()
+    }
+
+    /// Closure and a consistent winding of triangles without a repeated index.
+    fn of(triangles: &[[u32; 3]], vertices: usize) -> Result<Self, TopologyError> {
+        let n = triangles.len();
+        // The neighbour across edge k (from tri[k] to tri[k + 1]) of each
+        // triangle when exactly two triangles share that edge, else u32::MAX.
+        let mut neighbours = vec![[u32::MAX; 3]; n];
+        let mut boundary = Vec::new();
+        let mut shared_edges = 0;
+        let uses = EdgeUses::new(triangles, vertices);
+        uses.for_each_edge(|key, group| match *group {
+            [_] => boundary.push(key),
+            [u, w] => {
+                let (tu, tw) = (use_triangle(u), use_triangle(w));
+                let (ku, _) = edge_slot(triangles[tu], key);
+                let (kw, _) = edge_slot(triangles[tw], key);
+                // Triangle counts fit in u32: indices are u32.
+                neighbours[tu][ku] = tw as u32;
+                neighbours[tw][kw] = tu as u32;
+            }
+            // Orientation does not propagate across these (which pairs?);
+            // they are checked once every surface is oriented.
+            _ => shared_edges += 1,
+        });
+        drop(uses);
+        if !boundary.is_empty() {
+            return Err(TopologyError::Open(boundary));
+        }
+
+        // Orient each connected surface consistently, flipping the minority.
+        let mut component = vec![u32::MAX; n];
+        let mut flip = vec![false; n];
+        let mut components: Vec<Vec<u32>> = Vec::new();
+        for seed in 0..n {
+            if component[seed] != u32::MAX {
+                continue;
+            }
+            let id = components.len() as u32;
+            let mut members = vec![seed as u32];
+            component[seed] = id;
+            let mut next = 0;
+            while next < members.len() {
+                let t = members[next] as usize;
+                next += 1;
+                for (k, &u) in neighbours[t].iter().enumerate() {
+                    if u == u32::MAX {
+                        continue;
+                    }
+                    let u = u as usize;
+                    let tri = triangles[t];
+                    let key = {
+                        let (a, b) = (tri[k], tri[(k + 1) % 3]);
+                        (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
+                    };
+                    let same = edge_slot(triangles[u], key).1 == (tri[k] < tri[(k + 1) % 3]);
+                    // Neighbours must traverse the shared edge in opposite directions.
+                    let want = flip[t] ^ same;
+                    if component[u] == u32::MAX {
+                        component[u] = id;
+                        flip[u] = want;
+                        members.push(u as u32);
+                    } else if flip[u] != want {
+                        return Err(TopologyError::NonOrientable(members.len()));
+                    }
+                }
+            }
+            components.push(members);
+        }
+        Ok(Self {
+            components,
+            flip,
+            shared_edges,
+        })
+    }
+}
+
 /// Checks closure and orients the triangles in place (none has a repeated
 /// index); on an error they are left as they were.
 fn orient(
     vertices: &[DVec3],
     triangles: &mut [[u32; 3]],
 ) -> Result<Vec<MeshWarning>, InertiaError> {
-    let mut warnings = Vec::new();
-    let n = triangles.len();
-    // The neighbour across edge k (from tri[k] to tri[k + 1]) of each
-    // triangle when exactly two triangles share that edge, else u32::MAX.
-    let mut neighbours = vec![[u32::MAX; 3]; n];
-    let mut boundary = Vec::new();
-    let mut shared_edges = 0;
-    let uses = EdgeUses::new(triangles, vertices.len());
-    uses.for_each_edge(|key, group| match *group {
-        [_] => boundary.push(key),
-        [u, w] => {
-            let (tu, tw) = (use_triangle(u), use_triangle(w));
-            let (ku, _) = edge_slot(triangles[tu], key);
-            let (kw, _) = edge_slot(triangles[tw], key);
-            // Triangle counts fit in u32: indices are u32.
-            neighbours[tu][ku] = tw as u32;
-            neighbours[tw][kw] = tu as u32;
-        }
-        // Orientation does not propagate across these (which pairs?);
-        // they are checked once every surface is oriented.
-        _ => shared_edges += 1,
-    });
-    drop(uses);
-    if let Some(&first) = boundary.first() {
-        return Err(InertiaError::OpenMesh {
-            boundary_edges: boundary.len(),
-            at: edge_midpoint(vertices, first),
-            weld_gap: weld_gap(vertices, &boundary),
-        });
-    }
+    let topology = Topology::of(triangles, vertices.len()).map_err(|e| e.into_error(vertices))?;
+    orient_as(vertices, triangles, &topology)
+}
 
-    // Orient each connected surface consistently, flipping the minority.
-    let mut component = vec![u32::MAX; n];
-    let mut flip = vec![false; n];
-    let mut components: Vec<Vec<u32>> = Vec::new();
-    for seed in 0..n {
-        if component[seed] != u32::MAX {
-            continue;
-        }
-        let id = components.len() as u32;
-        let mut members = vec![seed as u32];
-        component[seed] = id;
-        let mut next = 0;
-        while next < members.len() {
-            let t = members[next] as usize;
-            next += 1;
-            for (k, &u) in neighbours[t].iter().enumerate() {
-                if u == u32::MAX {
-                    continue;
-                }
-                let u = u as usize;
-                let tri = triangles[t];
-                let key = {
-                    let (a, b) = (tri[k], tri[(k + 1) % 3]);
-                    (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
-                };
-                let same = edge_slot(triangles[u], key).1 == (tri[k] < tri[(k + 1) % 3]);
-                // Neighbours must traverse the shared edge in opposite directions.
-                let want = flip[t] ^ same;
-                if component[u] == u32::MAX {
-                    component[u] = id;
-                    flip[u] = want;
-                    members.push(u as u32);
-                } else if flip[u] != want {
-                    return Err(InertiaError::NonOrientable {
-                        triangles: members.len(),
-                    });
-                }
-            }
-        }
-        components.push(members);
-    }
-    drop(neighbours);
-    drop(component);
+/// Orients the triangles in place as their [`Topology`] says, turns
+/// inside-out surfaces outwards and checks the edges of more than two
+/// triangles; on an error the triangles are left as they were.
+fn orient_as(
+    vertices: &[DVec3],
+    triangles: &mut [[u32; 3]],
+    topology: &Topology,
+) -> Result<Vec<MeshWarning>, InertiaError> {
+    let mut warnings = Vec::new();
+    let components = &topology.components;
+    let shared_edges = topology.shared_edges;
+    let mut flip = topology.flip.clone();
     // Apply the consistent winding; the sign of each surface's volume then
     // says whether it points outwards.
     for (tri, &f) in triangles.iter_mut().zip(&flip) {
@@ -441,7 +511,7 @@ fn orient(
         .iter()
         .enumerate()
         .map(|(id, members)| {
-            signed_volume(members) < 0.0 && !enclosed(id, &components, consistent, vertices)
+            signed_volume(members) < 0.0 && !enclosed(id, components, consistent, vertices)
         })
         .collect();
     let (mut reoriented, mut inside_out) = (0, 0);
@@ -463,7 +533,6 @@ fn orient(
             }
         }
     }
-    drop(components);
     if shared_edges > 0 {
         // Oriented, every edge of more than two triangles must cancel.
         let mut unbalanced: Vec<u64> = Vec::new();
@@ -541,6 +610,70 @@ mod tests {
 
     fn cube(offset: DVec3, scale: f64) -> (Vec<DVec3>, Vec<[u32; 3]>) {
         crate::tri_mesh::box_mesh(offset, offset + DVec3::splat(scale)).into_parts()
+    }
+
+    /// A closed torus of `2 n²` triangles (R = 1, r = 0.35).
+    fn torus(n: u32) -> TriMesh {
+        let angle = |i: u32| f64::from(i % n) * core::f64::consts::TAU / f64::from(n);
+        let mut v = Vec::new();
+        for i in 0..n {
+            for j in 0..n {
+                let (u, w) = (angle(i), angle(j));
+                let ring = 1.0 + 0.35 * w.cos();
+                v.push(DVec3::new(ring * u.cos(), ring * u.sin(), 0.35 * w.sin()));
+            }
+        }
+        let at = |i: u32, j: u32| (i % n) * n + j % n;
+        let mut t = Vec::new();
+        for i in 0..n {
+            for j in 0..n {
+                let (a, b, c, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                t.push([a, b, c]);
+                t.push([a, c, d]);
+            }
+        }
+        TriMesh::new(v, t)
+    }
+
+    #[test]
+    fn topology_found_while_welding_checks_as_the_check_finds_it() {
+        // Big enough for the weld to find the topology on a second thread.
+        let (v, t) = torus(130).into_parts();
+        assert!(t.len() >= 1 << 15);
+        let inside_out: Vec<[u32; 3]> = t.iter().map(|&tri| flipped(tri)).collect();
+        let mut mixed = t.clone();
+        for tri in mixed.iter_mut().step_by(7) {
+            *tri = flipped(*tri);
+        }
+        for (triangles, warning) in [
+            (t, None),
+            (inside_out, Some(MeshWarning::InsideOut { surfaces: 1 })),
+            (mixed, Some(MeshWarning::Reoriented { triangles: 4829 })),
+        ] {
+            let (welded, report) = TriMesh::new(v.clone(), triangles)
+                .welded(crate::Weld::default())
+                .unwrap();
+            assert_eq!(report.merged, 0);
+            let scaled = welded.try_scaled(1e-3).unwrap();
+            let (vertices, triangles, known) = scaled.clone().into_parts_and_topology();
+            assert!(known.is_some());
+            let with = prepare_solid(scaled).unwrap();
+            let without = prepare_solid(TriMesh::new(vertices, triangles)).unwrap();
+            assert_eq!(with, without);
+            assert_eq!(with.warnings, warning.into_iter().collect::<Vec<_>>());
+        }
+    }
+
+    #[test]
+    fn no_topology_is_kept_when_the_weld_changes_the_triangles() {
+        // A vertex copy 1e-9 away used by one triangle: the weld merges it.
+        let (mut v, mut t) = torus(130).into_parts();
+        v.push(v[0] + DVec3::splat(1e-9));
+        t[0][0] = v.len() as u32 - 1;
+        let (welded, report) = TriMesh::new(v, t).welded(crate::Weld::default()).unwrap();
+        assert_eq!(report.merged, 1);
+        assert!(welded.clone().into_parts_and_topology().2.is_none());
+        assert!(prepare_solid(welded).unwrap().warnings.is_empty());
     }
 
     #[test]

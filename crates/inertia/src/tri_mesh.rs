@@ -1,8 +1,11 @@
 //! Indexed triangle meshes: vertices and triangles, validated on construction.
 
+use std::sync::Arc;
+
 use glam::DVec3;
 
 use crate::InertiaError;
+use crate::mesh_check::Topology;
 
 /// A triangle mesh: vertex positions and triangles as vertex-index triples.
 ///
@@ -20,6 +23,17 @@ pub struct TriMesh {
     /// [`TriMesh::welded`] would produce, so it is skipped. Set by loaders
     /// that merge exact repeats as they read; cleared by any change.
     exact_unique: bool,
+    /// Known to be numbered in order of first use with none unused, but
+    /// perhaps with bit-identical vertices (each repeat after its first):
+    /// [`TriMesh::welded`] skips its exact pass and merges the repeats in
+    /// its tolerance pass. Set by loaders; cleared by any change.
+    first_use: bool,
+    /// The closed, orientable topology of `triangles`, when found while the
+    /// mesh was welded (on another thread, beside the tolerance pass), so
+    /// that [`crate::prepare_solid`] need not find it again. It depends on
+    /// the triangles alone: scaling and moving keep it; every mesh built
+    /// from parts starts without it.
+    topology: Option<Arc<Topology>>,
 }
 
 /// Meshes are equal when their vertices and triangles are.
@@ -71,6 +85,8 @@ impl TriMesh {
             vertices,
             triangles,
             exact_unique: false,
+            first_use: false,
+            topology: None,
         })
     }
 
@@ -99,6 +115,8 @@ impl TriMesh {
             vertices,
             triangles,
             exact_unique: false,
+            first_use: false,
+            topology: None,
         }
     }
 
@@ -108,6 +126,31 @@ impl TriMesh {
     pub(crate) fn known_exact_unique(mut self) -> Self {
         self.exact_unique = true;
         self
+    }
+
+    /// Marks the mesh as numbered in order of first use, none unused, exact
+    /// repeats possible (the caller's guarantee; see the field).
+    pub(crate) fn known_first_use(mut self) -> Self {
+        self.first_use = true;
+        self
+    }
+
+    /// Whether [`TriMesh::known_first_use`] holds.
+    pub(crate) fn is_first_use(&self) -> bool {
+        self.first_use
+    }
+
+    /// The mesh with the topology of its triangles attached (see the field).
+    pub(crate) fn with_topology(mut self, topology: Topology) -> Self {
+        self.topology = Some(Arc::new(topology));
+        self
+    }
+
+    /// The vertices, the triangles and their topology if it is known.
+    pub(crate) fn into_parts_and_topology(
+        self,
+    ) -> (Vec<DVec3>, Vec<[u32; 3]>, Option<Arc<Topology>>) {
+        (self.vertices, self.triangles, self.topology)
     }
 
     /// Whether [`TriMesh::known_exact_unique`] holds.
@@ -190,6 +233,7 @@ impl TriMesh {
             });
         }
         self.exact_unique = false;
+        self.first_use = false;
         for v in &mut self.vertices {
             *v *= factor;
         }
@@ -237,6 +281,7 @@ impl TriMesh {
             });
         }
         self.exact_unique = false;
+        self.first_use = false;
         for v in &mut self.vertices {
             *v += offset;
         }

@@ -13,6 +13,11 @@
 //!    finds every candidate pair, and the exact distance decides. Meshes
 //!    without near-duplicates (the common case) cost only the sort.
 //!
+//! Loaders that already number vertices in order of first use mark the
+//! mesh: pass 1 is skipped, and when exact repeats may remain (the binary
+//! STL loader's provisional numbering) pass 2 merges them too, since equal
+//! points have equal projections; they are not counted as welded.
+//!
 //! Chains: the clusters are the connected components of the graph
 //! "within `tol`" (union–find), i.e. the transitive closure. The result does
 //! not depend on vertex order, and a chain of vertices each within `tol` of
@@ -23,7 +28,13 @@
 
 use glam::DVec3;
 
+use crate::mesh_check::Topology;
 use crate::{InertiaError, TriMesh};
+
+/// Triangles from which the check's topology is found on a second thread
+/// while the tolerance pass runs (below, starting the thread costs more
+/// than it saves).
+const PARALLEL_MIN: usize = 1 << 15;
 
 /// Default relative weld tolerance: `1e-6 ×` the bounding-box diagonal.
 ///
@@ -207,13 +218,16 @@ fn find(parent: &mut [u32], mut i: u32) -> u32 {
     i
 }
 
-/// Merges distinct vertices within `tol`, returning the new vertices and
-/// rewriting the triangles; `None` when nothing is within `tol`.
+/// Vertices within `tol` merged: the new index of each vertex, the
+/// vertices kept and the report; `None` when nothing is within `tol`.
+/// With `repeats`, bit-identical vertices may be among them (the later ones
+/// are merged into the first like any pair within `tol`, but not counted in
+/// [`Welded::merged`]).
 fn weld_near(
     vertices: &[DVec3],
-    triangles: &mut [[u32; 3]],
     tol: f64,
-) -> Option<(Vec<DVec3>, Welded)> {
+    repeats: bool,
+) -> Option<(Vec<u32>, Vec<DVec3>, Welded)> {
     // An oblique direction, so that the axis-aligned planes of CAD meshes
     // do not put many vertices at one projection.
     let d = DVec3::new(1.0, 0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
@@ -234,6 +248,8 @@ fn weld_near(
     let proj = |k: u64| -> f64 { f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k }) };
     let tol2 = tol * tol;
     let mut parent: Vec<u32> = Vec::new();
+    // Vertices bit-identical to one with a smaller index (only `repeats`).
+    let mut repeat: Vec<bool> = Vec::new();
     for (n, &(ki, i)) in order.iter().enumerate() {
         let pi = proj(ki);
         for &(kj, j) in &order[n + 1..] {
@@ -243,6 +259,15 @@ fn weld_near(
             if vertices[i as usize].distance_squared(vertices[j as usize]) <= tol2 {
                 if parent.is_empty() {
                     parent = (0..vertices.len() as u32).collect();
+                }
+                // `==` holds for −0.0 and +0.0 alike, as the keys of the
+                // exact pass do; equal points have equal projections, so
+                // every pair of them is met here.
+                if repeats && vertices[i as usize] == vertices[j as usize] {
+                    if repeat.is_empty() {
+                        repeat = vec![false; vertices.len()];
+                    }
+                    repeat[i.max(j) as usize] = true;
                 }
                 let (a, b) = (find(&mut parent, i), find(&mut parent, j));
                 // The smaller index is the root: the first vertex in use order.
@@ -268,15 +293,15 @@ fn weld_near(
         } else {
             // Roots come first in index order, so the root is numbered.
             new_index[i as usize] = new_index[root as usize];
-            welded.merged += 1;
+            // A repeat is never a root (its first copy has a smaller index).
+            if !repeat.get(i as usize).is_some_and(|&r| r) {
+                welded.merged += 1;
+            }
             let moved = vertices[i as usize].distance(vertices[root as usize]);
             welded.max_move = welded.max_move.max(moved);
         }
     }
-    for t in triangles.iter_mut() {
-        *t = t.map(|i| new_index[i as usize]);
-    }
-    Some((kept, welded))
+    Some((new_index, kept, welded))
 }
 
 /// The diagonal of the axis-aligned bounding box.
@@ -319,24 +344,49 @@ impl TriMesh {
     /// ```
     pub fn welded(self, weld: Weld) -> Result<(TriMesh, Welded), InertiaError> {
         let tol = weld.tolerance(bounding_diagonal(self.vertices()))?;
-        let exact_unique = self.is_exact_unique();
+        let (exact_unique, first_use) = (self.is_exact_unique(), self.is_first_use());
         let (vertices, mut triangles) = self.into_parts();
-        let vertices = if exact_unique {
-            // The loader merged exact repeats in first-use order already.
+        let vertices = if exact_unique || first_use {
+            // The loader numbered the vertices in order of first use (and
+            // merged exact repeats already, unless `first_use`).
             vertices
         } else {
             weld_exact(&vertices, &mut triangles)
         };
+        let repeats = first_use && !exact_unique;
         let unchanged = Welded {
             tolerance: tol,
             ..Welded::default()
         };
-        let (vertices, report) = if tol > 0.0 {
-            weld_near(&vertices, &mut triangles, tol).unwrap_or((vertices, unchanged))
+        if tol == 0.0 && !repeats {
+            return Ok((TriMesh::from_checked_parts(vertices, triangles), unchanged));
+        }
+        // The check's topology is found from the triangles on another
+        // thread while the tolerance pass runs here; it is kept only when
+        // that pass leaves the triangles as they are (the common case; not
+        // tried when exact repeats are left to the pass, which then merges
+        // them).
+        let (near, topology) = if triangles.len() >= PARALLEL_MIN && !repeats {
+            std::thread::scope(|scope| {
+                let topology = scope.spawn(|| Topology::of_solid(&triangles, vertices.len()));
+                let near = weld_near(&vertices, tol, repeats);
+                (near, topology.join().ok().flatten())
+            })
         } else {
-            (vertices, unchanged)
+            (weld_near(&vertices, tol, repeats), None)
         };
-        Ok((TriMesh::from_checked_parts(vertices, triangles), report))
+        let Some((new_index, kept, report)) = near else {
+            let mesh = TriMesh::from_checked_parts(vertices, triangles);
+            let mesh = match topology {
+                Some(t) => mesh.with_topology(t),
+                None => mesh,
+            };
+            return Ok((mesh, unchanged));
+        };
+        for t in &mut triangles {
+            *t = t.map(|i| new_index[i as usize]);
+        }
+        Ok((TriMesh::from_checked_parts(kept, triangles), report))
     }
 }
 
@@ -393,6 +443,44 @@ mod tests {
             assert_eq!(d.insert(p + DVec3::ZERO) as usize, i);
         }
         assert_eq!(d.into_vertices().len(), 1000);
+    }
+
+    #[test]
+    fn repeats_left_to_the_tolerance_pass_weld_as_the_exact_pass_does() {
+        // First-use order with bit-identical repeats (one as −0.0), and one
+        // near-duplicate 1e-9 away: only the near one counts as welded.
+        let v = vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::X,
+            DVec3::Y,
+            DVec3::new(-0.0, 0.0, 0.0),
+            DVec3::Z,
+            DVec3::Y,
+            DVec3::new(1.0 + 1e-9, 0.0, 0.0),
+            DVec3::X,
+        ];
+        let t = vec![[0, 1, 2], [3, 4, 5], [6, 7, 4], [2, 3, 7]];
+        for weld in [Weld::Exact, Weld::default()] {
+            let full = TriMesh::new(v.clone(), t.clone()).welded(weld).unwrap();
+            let left = TriMesh::new(v.clone(), t.clone())
+                .known_first_use()
+                .welded(weld)
+                .unwrap();
+            assert_eq!(left.0, full.0);
+            let bits = |m: &TriMesh| -> Vec<[u64; 3]> {
+                m.vertices()
+                    .iter()
+                    .map(|p| p.to_array().map(f64::to_bits))
+                    .collect()
+            };
+            assert_eq!(bits(&left.0), bits(&full.0));
+            assert_eq!(left.1, full.1);
+        }
+        let (_, report) = TriMesh::new(v, t)
+            .known_first_use()
+            .welded(Weld::default())
+            .unwrap();
+        assert_eq!(report.merged, 1);
     }
 
     #[test]

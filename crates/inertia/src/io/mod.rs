@@ -44,10 +44,12 @@ use glam::DVec3;
 
 use crate::{InertiaError, TriMesh, Weld};
 
+mod exact_repeats;
 mod gltf;
 mod obj;
 mod ply;
 mod stl;
+mod text_scan;
 mod vertex_table;
 
 /// The mesh file formats kreisel reads.

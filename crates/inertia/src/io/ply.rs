@@ -20,18 +20,22 @@
 //! ASCII: one element per non-blank line, values separated by blanks, each
 //! parsed as its declared type (`float` as `f32`, then widened exactly); a
 //! line with fewer or more values than its element declares is an error.
+//! A large file of just a `vertex` and then a `face` element has its faces
+//! read on a second thread while its vertices are read (with the same
+//! results and errors as one thread).
 
 use glam::DVec3;
 use ply_rs_bw::parser::{Parser, Reader};
 use ply_rs_bw::ply::{DefaultElement, ElementDef, Encoding, Header, PropertyType, ScalarType};
 
+use super::text_scan::{next_line, next_plain_digits, next_word, parse_float, parse_integer};
 use super::{Body, Source};
 use crate::InertiaError;
 
 /// Loads the one body of a PLY file, named by the file stem.
 pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
     let (vertices, triangles) = parse(bytes).map_err(|r| src.error(r))?;
-    Ok(vec![src.body(
+    Ok(vec![src.indexed_body(
         src.stem().to_owned(),
         vertices,
         triangles,
@@ -100,7 +104,7 @@ fn parse(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
         encoding: header.encoding,
         rest: payload,
         line: 0,
-        words: "".split_ascii_whitespace(),
+        words: &[],
     };
     let mut mesh = Mesh {
         // The header's counts were checked against the payload's length
@@ -113,17 +117,95 @@ fn parse(bytes: &[u8]) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), String> {
         triangles: Vec::new(),
         vertex_count,
     };
-    for (name, def) in &header.elements {
-        let fields = fields(name, def);
-        for i in 0..def.count {
-            values
-                .start_element()
-                .and_then(|()| mesh.read_element(name, i, &fields, &mut values))
-                .and_then(|()| values.end_element())
-                .map_err(|e| format!("element '{name}' {i}: {e}"))?;
+    let elements: Vec<(&String, &ElementDef)> = header.elements.iter().collect();
+    let mut done = 0;
+    if let [(vertex_name, vertex_def), (face_name, face_def)] = elements[..]
+        && values.encoding == Encoding::Ascii
+        && payload.len() >= PARALLEL_BYTES
+        && vertex_name == "vertex"
+        && face_name == "face"
+    {
+        let faces = std::thread::scope(|scope| {
+            // No thread (the system refused one): the faces are read after.
+            let faces = std::thread::Builder::new()
+                .spawn_scoped(scope, || faces_ahead(payload, vertex_count, face_def))
+                .ok();
+            read_elements(vertex_name, vertex_def, &mut values, &mut mesh)?;
+            Ok::<_, String>(faces.and_then(|f| f.join().ok()).flatten())
+        })?;
+        let vertices_end = payload.len() - values.rest.len();
+        if let Some(faces) = faces
+            && values.line == vertex_count
+            && faces.start == vertices_end
+        {
+            mesh.triangles = faces.result?;
+            return Ok((mesh.vertices, mesh.triangles));
         }
+        // A blank line among the vertices: the faces from where they end.
+        done = 1;
+    }
+    for &(name, def) in &elements[done..] {
+        read_elements(name, def, &mut values, &mut mesh)?;
     }
     Ok((mesh.vertices, mesh.triangles))
+}
+
+/// Payload bytes from which an ASCII file's faces are read on a second
+/// thread while the vertices are read (smaller files: one thread). This
+/// saves wall time, not CPU time: the second thread first scans the vertex
+/// lines for where they end (figures in BENCHMARKS.md, "End to end").
+const PARALLEL_BYTES: usize = 1 << 20;
+
+/// The faces of an ASCII file, read ahead on the assumption that the
+/// `vertex` lines (the first `vertex_count` lines of the payload) are all
+/// non-blank. The caller checks that assumption when the vertices are read
+/// (then this is what reading on from there gives, error and line numbers
+/// included) and reads the faces itself otherwise.
+fn faces_ahead(payload: &[u8], vertex_count: usize, def: &ElementDef) -> Option<FacesAhead> {
+    let mut rest = payload;
+    for _ in 0..vertex_count {
+        next_line(&mut rest)?;
+    }
+    let start = payload.len() - rest.len();
+    let mut values = Values {
+        encoding: Encoding::Ascii,
+        rest,
+        line: vertex_count,
+        words: &[],
+    };
+    let mut mesh = Mesh {
+        vertices: Vec::new(),
+        triangles: Vec::new(),
+        vertex_count,
+    };
+    let result = read_elements("face", def, &mut values, &mut mesh).map(|()| mesh.triangles);
+    Some(FacesAhead { start, result })
+}
+
+/// See [`faces_ahead`].
+struct FacesAhead {
+    /// The payload offset the faces were read from.
+    start: usize,
+    /// The triangles, or the error reading them.
+    result: Result<Vec<[u32; 3]>, String>,
+}
+
+/// Reads every element of one type.
+fn read_elements(
+    name: &str,
+    def: &ElementDef,
+    values: &mut Values<'_>,
+    mesh: &mut Mesh,
+) -> Result<(), String> {
+    let fields = fields(name, def);
+    for i in 0..def.count {
+        values
+            .start_element()
+            .and_then(|()| mesh.read_element(name, i, &fields, values))
+            .and_then(|()| values.end_element())
+            .map_err(|e| format!("element '{name}' {i}: {e}"))?;
+    }
+    Ok(())
 }
 
 /// The mesh being read.
@@ -198,8 +280,9 @@ struct Values<'a> {
     rest: &'a [u8],
     /// Payload lines consumed so far (ASCII).
     line: usize,
-    /// The values left on the current line (ASCII).
-    words: core::str::SplitAsciiWhitespace<'a>,
+    /// The rest of the current line (ASCII), its values separated by ASCII
+    /// blanks (as `str::split_ascii_whitespace` separates them).
+    words: &'a [u8],
 }
 
 impl<'a> Values<'a> {
@@ -209,18 +292,20 @@ impl<'a> Values<'a> {
             return Ok(());
         }
         let line = self.next_line()?;
-        let text = core::str::from_utf8(line)
-            .map_err(|_| format!("payload line {} is not text", self.line))?;
-        self.words = text.split_ascii_whitespace();
+        if !line.is_ascii() && core::str::from_utf8(line).is_err() {
+            return Err(format!("payload line {} is not text", self.line));
+        }
+        self.words = line;
         Ok(())
     }
 
     /// Checks that an element's line has no values left over (ASCII).
     fn end_element(&mut self) -> Result<(), String> {
-        match self.words.next() {
+        match next_word(&mut self.words, |b| b.is_ascii_whitespace()) {
             Some(extra) => Err(format!(
-                "payload line {} has more values than the element declares ('{extra}')",
-                self.line
+                "payload line {} has more values than the element declares ('{}')",
+                self.line,
+                String::from_utf8_lossy(extra)
             )),
             None => Ok(()),
         }
@@ -229,16 +314,9 @@ impl<'a> Values<'a> {
     /// The next non-blank payload line, without its line break.
     fn next_line(&mut self) -> Result<&'a [u8], String> {
         loop {
-            if self.rest.is_empty() {
+            let Some(line) = next_line(&mut self.rest) else {
                 return Err("unexpected end of file (the file may be truncated)".to_owned());
-            }
-            let end = self
-                .rest
-                .iter()
-                .position(|&b| b == b'\n')
-                .unwrap_or(self.rest.len());
-            let (line, rest) = self.rest.split_at(end);
-            self.rest = rest.get(1..).unwrap_or_default();
+            };
             self.line += 1;
             if !line.iter().all(u8::is_ascii_whitespace) {
                 return Ok(line);
@@ -247,8 +325,8 @@ impl<'a> Values<'a> {
     }
 
     /// The next ASCII value.
-    fn word(&mut self, t: &ScalarType) -> Result<&'a str, String> {
-        self.words.next().ok_or_else(|| {
+    fn word(&mut self, t: &ScalarType) -> Result<&'a [u8], String> {
+        next_word(&mut self.words, |b| b.is_ascii_whitespace()).ok_or_else(|| {
             format!(
                 "payload line {} ends before a value of type {}",
                 self.line,
@@ -274,17 +352,31 @@ impl<'a> Values<'a> {
     /// The next value of an integer type, widened.
     fn integer(&mut self, t: &ScalarType) -> Result<i64, String> {
         if self.encoding == Encoding::Ascii {
+            if let Some((v, word)) = next_plain_digits(&mut self.words, |b| b.is_ascii_whitespace())
+            {
+                // What `parse_integer` gives for plain digits.
+                let fits = match t {
+                    ScalarType::Char => i8::try_from(v).is_ok(),
+                    ScalarType::UChar => u8::try_from(v).is_ok(),
+                    ScalarType::Short => i16::try_from(v).is_ok(),
+                    ScalarType::UShort => u16::try_from(v).is_ok(),
+                    ScalarType::Int => i32::try_from(v).is_ok(),
+                    ScalarType::UInt => u32::try_from(v).is_ok(),
+                    ScalarType::Float | ScalarType::Double => false,
+                };
+                return if fits { Ok(v) } else { Err(bad_value(word, t)) };
+            }
             let word = self.word(t)?;
-            let bad = || format!("'{word}' is not a {} value", type_name(t));
-            return match t {
-                ScalarType::Char => word.parse::<i8>().map(i64::from).map_err(|_| bad()),
-                ScalarType::UChar => word.parse::<u8>().map(i64::from).map_err(|_| bad()),
-                ScalarType::Short => word.parse::<i16>().map(i64::from).map_err(|_| bad()),
-                ScalarType::UShort => word.parse::<u16>().map(i64::from).map_err(|_| bad()),
-                ScalarType::Int => word.parse::<i32>().map(i64::from).map_err(|_| bad()),
-                ScalarType::UInt => word.parse::<u32>().map(i64::from).map_err(|_| bad()),
-                ScalarType::Float | ScalarType::Double => Err(bad()),
+            let value = match t {
+                ScalarType::Char => parse_integer::<i8>(word).map(i64::from),
+                ScalarType::UChar => parse_integer::<u8>(word).map(i64::from),
+                ScalarType::Short => parse_integer::<i16>(word).map(i64::from),
+                ScalarType::UShort => parse_integer::<u16>(word).map(i64::from),
+                ScalarType::Int => parse_integer::<i32>(word).map(i64::from),
+                ScalarType::UInt => parse_integer::<u32>(word).map(i64::from),
+                ScalarType::Float | ScalarType::Double => None,
             };
+            return value.ok_or_else(|| bad_value(word, t));
         }
         Ok(match t {
             ScalarType::Char => i64::from(i8::from_le_bytes(self.bytes()?)),
@@ -305,10 +397,10 @@ impl<'a> Values<'a> {
             ScalarType::Float | ScalarType::Double if self.encoding == Encoding::Ascii => {
                 let word = self.word(t)?;
                 let value = match t {
-                    ScalarType::Float => word.parse::<f32>().map(f64::from),
-                    _ => word.parse::<f64>(),
+                    ScalarType::Float => parse_float::<f32>(word).map(f64::from),
+                    _ => parse_float::<f64>(word),
                 };
-                value.map_err(|_| format!("'{word}' is not a {} value", type_name(t)))
+                value.ok_or_else(|| bad_value(word, t))
             }
             ScalarType::Float => Ok(f64::from(f32::from_le_bytes(self.bytes()?))),
             ScalarType::Double => Ok(f64::from_le_bytes(self.bytes()?)),
@@ -322,6 +414,15 @@ impl<'a> Values<'a> {
         let n = self.integer(t)?;
         usize::try_from(n).map_err(|_| format!("negative list length {n}"))
     }
+}
+
+/// The error for a word that is not a value of type `t`.
+fn bad_value(word: &[u8], t: &ScalarType) -> String {
+    format!(
+        "'{}' is not a {} value",
+        String::from_utf8_lossy(word),
+        type_name(t)
+    )
 }
 
 /// The PLY name of a scalar type.
@@ -517,6 +618,73 @@ mod tests {
             let (v, f) = parse(&bytes).unwrap();
             let (rv, rf) = reference(&bytes);
             assert_eq!((v, f), (rv, fan(&rf)), "{format}");
+        }
+    }
+
+    /// An ASCII PLY of `n` vertices and `n − 2` fan triangles, over
+    /// [`PARALLEL_BYTES`] of payload for n = 40 000; `extra_element` adds an
+    /// empty third element, which makes the parse take one thread.
+    fn big_ascii(n: usize, extra_element: bool) -> String {
+        let extra = if extra_element {
+            "element edge 0\nproperty int a\n"
+        } else {
+            ""
+        };
+        let mut text = format!(
+            "ply\nformat ascii 1.0\nelement vertex {n}\nproperty double x\nproperty double y\n\
+             property double z\nelement face {}\nproperty list uchar int vertex_indices\n\
+             {extra}end_header\n",
+            n - 2
+        );
+        for i in 0..n {
+            let t = i as f64 * 0.001;
+            text += &format!("{} {} {}\n", t.cos(), t.sin(), t * 0.1);
+        }
+        for i in 1..n - 1 {
+            text += &format!("3 0 {i} {}\n", i + 1);
+        }
+        text
+    }
+
+    #[test]
+    fn faces_read_ahead_on_a_second_thread_equal_one_thread() {
+        let n = 40_000;
+        let (one, two) = (big_ascii(n, true), big_ascii(n, false));
+        assert!(two.len() - two.find("end_header").unwrap() > PARALLEL_BYTES);
+        let face = |k: usize| format!("\n3 0 {k} {}\n", k + 1);
+        let vertex_line = |text: &str, k: usize| {
+            let start = text.find("end_header\n").unwrap() + 11;
+            text[start..]
+                .split_inclusive('\n')
+                .nth(k)
+                .unwrap()
+                .to_owned()
+        };
+        // Each edit is made to both texts: the results (and errors, with
+        // their element and line numbers) must agree.
+        let edits: Vec<(String, String)> = vec![
+            (String::new(), String::new()),
+            (face(30_000), "\n3 0 30000 x\n".to_owned()),
+            (face(30_000), "\n3 0 30000 40000\n".to_owned()),
+            (face(30_000), "\n\n  \n3 0 30000 30001 7\n".to_owned()),
+            (face(39_997), "\n3 0 39997\n".to_owned()),
+            (vertex_line(&two, 123), "1 2 three\n".to_owned()),
+            (vertex_line(&two, 123), "\n1 2 3\n".to_owned()),
+        ];
+        for (from, to) in edits {
+            let (a, b) = if from.is_empty() {
+                (one.clone(), two.clone())
+            } else {
+                (one.replacen(&from, &to, 1), two.replacen(&from, &to, 1))
+            };
+            assert_ne!(from.is_empty(), a != one, "{to:?} applied");
+            let (sequential, parallel) = (parse(a.as_bytes()), parse(b.as_bytes()));
+            assert_eq!(sequential, parallel, "{to:?}");
+            if from.is_empty() || to.starts_with("\n1 2 3") {
+                assert_eq!(parallel.unwrap().1.len(), n - 2);
+            } else {
+                assert!(parallel.is_err(), "{to:?}");
+            }
         }
     }
 
