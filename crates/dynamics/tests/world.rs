@@ -358,3 +358,19 @@ fn rows_on_the_simulate_grid_equal_a_propagator_stepped_on_it() {
         }
     }
 }
+
+#[test]
+fn exact_bodies_take_no_steps_on_the_way() {
+    // 10¹⁵ steps of dt: a world that stepped its exact bodies would not
+    // finish; one that evaluates them at t answers at once.
+    let body = asymmetric();
+    let mut world = World::try_new(DVec3::ZERO, 1e-9).unwrap();
+    let id = world.add(body.clone()).unwrap();
+    let t = 1e6;
+    world.advance_to(t).unwrap();
+    let exact = ExactSolution::try_new(MOMENTS, initial(&body)).unwrap();
+    let s = world.state(id).unwrap();
+    // Both are evaluations at t (to half an ulp of t): |ω| ulp(t) ≈ 1e-10 rad.
+    let a = angle(&s, &body, &exact.state_at(t));
+    assert!(a < 4.0 * f64::EPSILON * t, "{a:e}");
+}
