@@ -99,4 +99,55 @@ impl World {
         let next = PrincipalState::try_from_omega_body(&entry.rigid, world_from_body, omega_body)?;
         self.replan(id.0, next)
     }
+
+    /// Sets a free body's centre of mass (m) and its velocity (m/s), world
+    /// axes, now: its flight restarts from them.
+    ///
+    /// ```text
+    /// x(t) = x + v (t − now) + ½ g (t − now)²
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidBody`] for
+    /// a non-finite vector or a body on a pivot (which does not fly).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// use glam::DVec3;
+    /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -10.0), 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::ONE).try_build()?)?;
+    /// world.advance_to(1.0)?;
+    /// world.set_centre_of_mass(id, DVec3::ZERO, DVec3::new(0.0, 0.0, 10.0))?; // a blow
+    /// world.advance_to(2.0)?;
+    /// let s = world.state(id).unwrap();
+    /// assert!((s.position - DVec3::new(0.0, 0.0, 5.0)).length() < 1e-14);
+    /// assert!(s.velocity.length() < 1e-14);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_centre_of_mass(
+        &mut self,
+        id: BodyId,
+        position: DVec3,
+        velocity: DVec3,
+    ) -> Result<(), DynamicsError> {
+        let entry = self.entry(id)?;
+        let field = if entry.top.is_some() {
+            Some((
+                "position",
+                "cannot be set for a body on a pivot: it does not fly",
+            ))
+        } else if !position.is_finite() {
+            Some(("position", "must be finite"))
+        } else if !velocity.is_finite() {
+            Some(("velocity", "must be finite"))
+        } else {
+            None
+        };
+        if let Some((field, reason)) = field {
+            return Err(DynamicsError::InvalidBody { field, reason });
+        }
+        let now = self.time();
+        self.entries[id.0].ballistic = (position, velocity, now);
+        Ok(())
+    }
 }
