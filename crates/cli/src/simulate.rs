@@ -217,16 +217,22 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
 /// Writes each body's plan, `NAME: plan`, to standard output.
 fn explain(scene: &Scene) -> Result<(), CliError> {
     let mut out = io::stdout().lock();
-    let world = &scene.world;
-    let mut write = || -> io::Result<()> {
-        for (name, id) in &scene.bodies {
-            if let Some(plan) = world.plan(*id) {
-                writeln!(out, "{name}: {plan}")?;
-            }
+    write_plans(scene, &mut out)
+        .and_then(|()| out.flush())
+        .map_err(|source| write_error(&Stream::Standard, source))
+}
+
+/// One line per body, `NAME: plan`, in scene order.
+///
+/// # Errors
+/// The writer's errors.
+fn write_plans<W: Write + ?Sized>(scene: &Scene, out: &mut W) -> io::Result<()> {
+    for (name, id) in &scene.bodies {
+        if let Some(plan) = scene.world.plan(*id) {
+            writeln!(out, "{name}: {plan}")?;
         }
-        out.flush()
-    };
-    write().map_err(|source| write_error(&Stream::Standard, source))
+    }
+    Ok(())
 }
 
 /// Why a run stopped early.
@@ -361,4 +367,55 @@ fn simulate<W: Write>(
     csv.rows(world, bodies)?;
     progress.update(steps);
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use super::*;
+
+    const SCENE: &str = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
+        [[body]]\nname = \"still\"\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0, 0, 0]\n\
+        [[body]]\nname = \"ball\"\nmass = 1\ninertia = [2, 2, 2]\nangular_velocity = [1, 2, 3]\n\
+        [[body]]\nname = \"disc\"\nmass = 1\ninertia = [1, 1, 2]\nangular_velocity = [0.1, 0, 1]\n\
+        [[body]]\nname = \"handle\"\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0.01, 1, 0]\n\
+        [[body]]\nname = \"top\"\nmass = 1\ninertia = [0.02, 0.02, 0.01]\nangular_velocity = [0, 0, 50]\npivot = [0, 0, -0.1]\n";
+
+    fn plans(method: Option<&str>) -> Vec<String> {
+        let scene = scene::parse_with_method(Path::new("s.toml"), SCENE, method).unwrap();
+        let mut out = Vec::new();
+        write_plans(&scene, &mut out).unwrap();
+        String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(str::to_owned)
+            .collect()
+    }
+
+    #[test]
+    fn explain_names_each_body_and_its_plan() {
+        let lines = plans(None);
+        let starts = [
+            "still: resting free body: exact, nothing to compute",
+            "ball: free sphere: exact, one uniform rotation",
+            "disc: symmetric free body: exact, closed form",
+            "handle: asymmetric free body: exact, Jacobi elliptic solution",
+            "top: heavy top on a pivot: auto (order 8, splitting8 sub-stepped",
+        ];
+        assert_eq!(lines.len(), starts.len());
+        for (line, start) in lines.iter().zip(starts) {
+            assert!(line.starts_with(start), "{line}");
+        }
+        // A stepping method chosen: every body is stepped by it.
+        let lines = plans(Some("rk4"));
+        assert!(
+            lines[0].starts_with("still: free body stepped by rk4 (order 4)"),
+            "{lines:?}"
+        );
+        assert!(
+            lines[4].starts_with("top: heavy top on a pivot: rk4 (order 4)"),
+            "{lines:?}"
+        );
+    }
 }
