@@ -3,9 +3,10 @@
 //! their states as CSV, in constant memory.
 //!
 //! The scene is read and checked first ([`scene::parse`], every error
-//! naming its line and key), then the bodies are stepped together on the
-//! grid of [`schedule::Schedule`] and the rows of [`output::CsvWriter`] are
-//! written as they are produced.
+//! naming its line and key) into a [`kreisel_dynamics::World`], which is
+//! then advanced from row to row on the grid of [`schedule::Schedule`]; the
+//! rows of [`output::CsvWriter`] are written as they are produced. The
+//! physics lives in the World: this module parses, formats and reports.
 
 #![forbid(unsafe_code)]
 
@@ -20,7 +21,7 @@ use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::path::PathBuf;
 
-use kreisel_dynamics::{DivergenceCheck, FreeBodyIntegrator, HeavyTopIntegrator, PrincipalState};
+use kreisel_dynamics::DynamicsError;
 
 use self::output::CsvWriter;
 use self::progress::Progress;
@@ -81,9 +82,15 @@ Motion:
   moves exactly: x(t) = x0 + v0 t + g t^2/2. A body with a pivot is a heavy
   top: it turns about the fixed pivot under the torque of gravity (none
   without gravity), moved by the heavy-top version of the method (see
-  --list-methods; exact, splitting, dmv and pdmv* have none). Each body is
-  advanced by the method with step dt; the last step is shortened to end
-  exactly at t = duration.
+  --list-methods; exact, splitting, dmv and pdmv* have none). A body moved
+  by a stepping method (every heavy top, and every body when a method other
+  than auto or exact is chosen) takes steps of dt; the last step is
+  shortened to end exactly at t = duration. Under auto or exact a free body
+  is not stepped: its exact solution is set up once and evaluated at the
+  times written (at rest: nothing to compute; a sphere or a spin about a
+  principal axis: one uniform rotation; two equal moments: a closed form).
+  --explain prints each body's plan (what it is, which method, why) and
+  exits without running.
 
 Output (CSV; standard output unless --output):
   t,body,qw,qx,qy,qz,wx,wy,wz,energy,lx,ly,lz
@@ -113,6 +120,7 @@ Examples:
   kreisel simulate spin.toml --output spin.csv
   kreisel simulate spin.toml --method rk4 | head
   kreisel simulate examples/scenes/heavy_top.toml
+  kreisel simulate examples/scenes/heavy_top.toml --explain
   kreisel simulate --list-methods";
 
 /// Arguments of `kreisel simulate`.
@@ -134,6 +142,10 @@ pub struct SimulateArgs {
     /// List the integration methods with their order and exit
     #[arg(long)]
     pub list_methods: bool,
+
+    /// Print each body's plan (what it is, which method, why) and exit without running
+    #[arg(long)]
+    pub explain: bool,
 }
 
 /// Runs `kreisel simulate`.
@@ -149,33 +161,25 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         _ => return list_methods(),
     };
     // A bad --method is reported before the scene is even read.
-    let overridden = match &args.method {
-        Some(name) => {
-            Some(methods::integrator(name).map_err(|message| CliError::Method { message })?)
-        }
-        None => None,
-    };
+    if let Some(name) = &args.method {
+        methods::integrator(name).map_err(|message| CliError::Method { message })?;
+    }
     let text = fs::read_to_string(scene_path).map_err(|source| CliError::ReadScene {
         path: scene_path.clone(),
         source,
     })?;
-    let scene = scene::parse(scene_path, &text)?;
+    let mut scene = scene::parse_with_method(scene_path, &text, args.method.as_deref())?;
     let name = match (&args.method, &scene.method) {
-        (Some(name), _) | (None, Some(name)) => name.as_str(),
-        (None, None) => AUTO,
-    };
-    let integrator = match overridden {
-        Some(integrator) => integrator,
-        // Checked by the scene parser already.
-        None => methods::integrator(name).map_err(|message| CliError::Method { message })?,
+        (Some(name), _) | (None, Some(name)) => name.clone(),
+        (None, None) => AUTO.to_owned(),
     };
     // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
-    let heavy = if scene.bodies.iter().any(|b| b.top.is_some()) {
-        let found = methods::heavy_top_integrator(name);
-        Some(found.map_err(|message| CliError::Method { message })?)
-    } else {
-        None
-    };
+    if scene.has_pivot {
+        methods::heavy_top_integrator(&name).map_err(|message| CliError::Method { message })?;
+    }
+    if args.explain {
+        return explain(&scene);
+    }
     let (writer, output, pending) =
         crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
     let mut progress = Progress::new(
@@ -184,11 +188,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     );
     let mut csv = CsvWriter::new(BufWriter::with_capacity(BUFFER_BYTES, writer))
         .map_err(|source| write_error(&output, source))?;
-    let methods = Methods {
-        free: integrator.as_ref(),
-        heavy: heavy.as_deref(),
-    };
-    let simulated = simulate(&scene, methods, &mut csv, &mut progress);
+    let simulated = simulate(&mut scene, &mut csv, &mut progress);
     progress.finish();
     // The rows written before a divergence are valid: flushed either way.
     let flushed = csv.flush();
@@ -200,8 +200,11 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             // The rows before the divergence are valid: the file keeps them.
             flushed.map_err(|source| write_error(&output, source))?;
             crate::convert::commit_output(pending, output)?;
-            let body = &scene.bodies[body].name;
-            Err(diverged(scene_path, body, time, &error, name))
+            let body = scene
+                .bodies
+                .get(body)
+                .map_or("?", |(name, _)| name.as_str());
+            Err(diverged(scene_path, body, time, &error, &name))
         }
         Ok(()) => {
             flushed.map_err(|source| write_error(&output, source))?;
@@ -209,6 +212,27 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             crate::convert::commit_output(pending, output)
         }
     }
+}
+
+/// Writes each body's plan, `NAME: plan`, to standard output.
+fn explain(scene: &Scene) -> Result<(), CliError> {
+    let mut out = io::stdout().lock();
+    write_plans(scene, &mut out)
+        .and_then(|()| out.flush())
+        .map_err(|source| write_error(&Stream::Standard, source))
+}
+
+/// One line per body, `NAME: plan`, in scene order.
+///
+/// # Errors
+/// The writer's errors.
+fn write_plans<W: Write + ?Sized>(scene: &Scene, out: &mut W) -> io::Result<()> {
+    for (name, id) in &scene.bodies {
+        if let Some(plan) = scene.world.plan(*id) {
+            writeln!(out, "{name}: {plan}")?;
+        }
+    }
+    Ok(())
 }
 
 /// Why a run stopped early.
@@ -222,6 +246,24 @@ enum Stop {
         time: f64,
         error: kreisel_dynamics::DynamicsError,
     },
+}
+
+impl Stop {
+    /// The world's error: which body failed, when, and why.
+    fn from_world(error: DynamicsError) -> Self {
+        match error {
+            DynamicsError::BodyFailed { body, time, source } => Stop::Diverged {
+                body,
+                time,
+                error: *source,
+            },
+            other => Stop::Diverged {
+                body: 0,
+                time: f64::NAN,
+                error: other,
+            },
+        }
+    }
 }
 
 impl From<io::Error> for Stop {
@@ -282,71 +324,98 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
     }
 }
 
-/// The methods of a run: one for free bodies, one for bodies with a pivot
-/// (present when the scene has such bodies).
-#[derive(Clone, Copy)]
-struct Methods<'a> {
-    free: &'a dyn FreeBodyIntegrator,
-    heavy: Option<&'a dyn HeavyTopIntegrator>,
-}
-
-/// Steps every body through the schedule, writing the rows it asks for,
-/// and checks every state reached ([`DivergenceCheck`]): a body whose state
-/// becomes non-finite or whose invariants blow up stops the run before its
-/// row is written.
+/// Moves the world through the schedule, writing the rows it asks for:
+/// whole steps of `dt` up to each row before the last, then the world is
+/// advanced to `duration`. The world checks every state it reaches; a body
+/// whose state becomes non-finite or whose invariants blow up stops the run
+/// before its row is written.
 ///
 /// # Errors
 /// The writer's errors; the first divergence, with the body's index.
 fn simulate<W: Write>(
-    scene: &Scene,
-    methods: Methods<'_>,
+    scene: &mut Scene,
     csv: &mut CsvWriter<W>,
     progress: &mut Progress,
 ) -> Result<(), Stop> {
-    let schedule = &scene.schedule;
-    let mut states: Vec<PrincipalState> = scene.bodies.iter().map(|b| b.initial).collect();
-    let checks: Vec<DivergenceCheck<'_>> = scene
-        .bodies
-        .iter()
-        .map(|b| match (&b.top, methods.heavy) {
-            (Some(top), Some(heavy)) => DivergenceCheck::heavy_top(heavy.name(), top, &b.initial),
-            _ => DivergenceCheck::free_body(
-                methods.free.name(),
-                b.rigid.principal_moments(),
-                &b.initial,
-            ),
-        })
-        .collect();
-    // One propagator per body: the exact solution is prepared once here.
-    let mut propagators: Vec<_> = scene
-        .bodies
-        .iter()
-        .map(|b| match (&b.top, methods.heavy) {
-            (Some(top), Some(heavy)) => heavy.propagator(top, b.initial),
-            _ => methods
-                .free
-                .propagator(b.rigid.principal_moments(), b.initial),
-        })
-        .collect();
-    csv.rows(scene, &states, 0.0)?;
-    for k in 1..=schedule.steps() {
-        let h = schedule.step_size(k);
-        let t = schedule.time(k);
-        for (body, (propagator, state)) in propagators.iter_mut().zip(&mut states).enumerate() {
-            propagator
-                .try_advance(h)
-                .and_then(|()| checks[body].check(&propagator.state(), t))
-                .map_err(|error| Stop::Diverged {
-                    body,
-                    time: t,
-                    error,
-                })?;
-            *state = propagator.state();
+    let schedule = scene.schedule;
+    let (world, bodies) = (&mut scene.world, &scene.bodies);
+    csv.rows(world, bodies)?;
+    let steps = schedule.steps();
+    // Without a bar, the world goes from row to row in one call.
+    let chunk = if progress.enabled() {
+        progress::CHECK_EVERY
+    } else {
+        u64::MAX
+    };
+    let mut done = 0;
+    while done < steps - 1 {
+        // The next row before the last step, or the step before the last.
+        let row = schedule.next_row(done).min(steps - 1);
+        let target = row.min(done.saturating_add(chunk) / chunk * chunk);
+        world
+            .advance_steps(target - done)
+            .map_err(Stop::from_world)?;
+        done = target;
+        progress.update(done);
+        if done == row && schedule.writes_row(done) {
+            csv.rows(world, bodies)?;
         }
-        if schedule.writes_row(k) {
-            csv.rows(scene, &states, schedule.time(k))?;
-        }
-        progress.update(k);
     }
+    world
+        .advance_to(schedule.time(steps))
+        .map_err(Stop::from_world)?;
+    csv.rows(world, bodies)?;
+    progress.update(steps);
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use super::*;
+
+    const SCENE: &str = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
+        [[body]]\nname = \"still\"\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0, 0, 0]\n\
+        [[body]]\nname = \"ball\"\nmass = 1\ninertia = [2, 2, 2]\nangular_velocity = [1, 2, 3]\n\
+        [[body]]\nname = \"disc\"\nmass = 1\ninertia = [1, 1, 2]\nangular_velocity = [0.1, 0, 1]\n\
+        [[body]]\nname = \"handle\"\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0.01, 1, 0]\n\
+        [[body]]\nname = \"top\"\nmass = 1\ninertia = [0.02, 0.02, 0.01]\nangular_velocity = [0, 0, 50]\npivot = [0, 0, -0.1]\n";
+
+    fn plans(method: Option<&str>) -> Vec<String> {
+        let scene = scene::parse_with_method(Path::new("s.toml"), SCENE, method).unwrap();
+        let mut out = Vec::new();
+        write_plans(&scene, &mut out).unwrap();
+        String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(str::to_owned)
+            .collect()
+    }
+
+    #[test]
+    fn explain_names_each_body_and_its_plan() {
+        let lines = plans(None);
+        let starts = [
+            "still: resting free body: exact, nothing to compute",
+            "ball: free sphere: exact, one uniform rotation",
+            "disc: symmetric free body: exact, closed form",
+            "handle: asymmetric free body: exact, Jacobi elliptic solution",
+            "top: heavy top on a pivot: auto (order 8, splitting8 sub-stepped",
+        ];
+        assert_eq!(lines.len(), starts.len());
+        for (line, start) in lines.iter().zip(starts) {
+            assert!(line.starts_with(start), "{line}");
+        }
+        // A stepping method chosen: every body is stepped by it.
+        let lines = plans(Some("rk4"));
+        assert!(
+            lines[0].starts_with("still: free body stepped by rk4 (order 4)"),
+            "{lines:?}"
+        );
+        assert!(
+            lines[4].starts_with("top: heavy top on a pivot: rk4 (order 4)"),
+            "{lines:?}"
+        );
+    }
 }

@@ -82,6 +82,41 @@ pub enum DynamicsError {
         /// The rate given, rad/s.
         omega: f64,
     },
+    /// A body setting that no body has (see [`crate::BodyBuilder::try_build`]).
+    #[error("body: `{field}` {reason}")]
+    InvalidBody {
+        /// The setting (`"position"`, `"pivot_body"`, `"gravity"`, …).
+        field: &'static str,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// A time a [`crate::World`] cannot advance to.
+    #[error("cannot advance the world from t = {now} s to t = {t} s: {reason}")]
+    InvalidTime {
+        /// The time asked, s.
+        t: f64,
+        /// The world's time, s.
+        now: f64,
+        /// What is wrong.
+        reason: &'static str,
+    },
+    /// A [`crate::BodyId`] that names no body of this world.
+    #[error("no body number {index} in this world")]
+    UnknownBody {
+        /// The id's index.
+        index: usize,
+    },
+    /// A body of a [`crate::World`] whose step was refused or whose state
+    /// diverged (`source`, usually [`DynamicsError::Diverged`]).
+    #[error("body {body}: the step to t = {time} s failed: {source}")]
+    BodyFailed {
+        /// The body's index ([`crate::BodyId::index`]).
+        body: usize,
+        /// The end of the step that failed, s.
+        time: f64,
+        /// Why.
+        source: Box<DynamicsError>,
+    },
     /// A method name that the registry does not know.
     #[error("unknown method `{name}` (known: {known})")]
     UnknownMethod {

@@ -28,7 +28,11 @@
 //!   method's name (`FromStr`, `Display`), order, one-line description and
 //!   integrator, in one list ([`FreeBodyMethod::ALL`]) that the CLI, the
 //!   benches and the tests read. [`method`] and [`METHODS`] (and their
-//!   heavy-top twins) are thin wrappers over them.
+//!   heavy-top twins) are thin wrappers over them;
+//! - [`World`]: bodies ([`Body`]: mass properties, attitude, spin, a free
+//!   or pivot [`Support`]) under gravity, moved by `step(h)` for game loops
+//!   or `advance_to(t)` for simulations along each body's cheapest exact
+//!   [`Plan`] (a torque-free body is never stepped, only evaluated).
 //!
 //! ## Conventions
 //! - SI units, radians. States live in the principal frame:
@@ -68,6 +72,7 @@ mod rk4;
 pub mod splitting;
 mod stability;
 mod state;
+mod world;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
@@ -92,3 +97,4 @@ pub use stability::{
     AxisStability, EllipticMotion, axis_stability, elliptic_motion, try_axis_stability,
 };
 pub use state::PrincipalState;
+pub use world::{Body, BodyBuilder, BodyId, BodyState, Plan, Support, World};

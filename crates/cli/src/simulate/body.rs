@@ -1,5 +1,6 @@
 //! One `[[body]]` of the scene: its inertia (moments, a tensor or a mesh),
-//! initial attitude and spin, and the ballistic motion of its centre of mass.
+//! initial attitude, spin and support, checked key by key and added to the
+//! scene's [`World`] (which holds the physics).
 
 #![forbid(unsafe_code)]
 
@@ -7,7 +8,7 @@ use std::io::Write;
 use std::path::Path;
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{HeavyTop, PrincipalState, RigidBody};
+use kreisel_dynamics::{Body, BodyBuilder, BodyId, DynamicsError, World};
 use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
 use kreisel_inertia::{MassProperties, Material};
 use kreisel_kinematics::{EulerSequence, try_normalize_quat};
@@ -44,121 +45,62 @@ struct RawEuler {
 }
 
 impl RawBody {
+    /// Whether the body has a `pivot` (is a heavy top).
+    pub fn has_pivot(&self) -> bool {
+        self.pivot.is_some()
+    }
+
     /// Where the `name` key is, if given.
     pub fn name_span(&self) -> Option<std::ops::Range<usize>> {
         self.name.as_ref().map(Spanned::span)
     }
 }
 
-/// A checked body and its initial state.
-#[derive(Debug, Clone)]
-pub struct SimBody {
-    /// The name in the CSV: a plain field (no commas, quotes, line breaks).
-    pub name: String,
-    /// Mass, kg.
-    pub mass: f64,
-    /// Principal moments and the body-from-principal rotation: about the
-    /// centre of mass, or about the pivot for a body with one.
-    pub rigid: RigidBody,
-    /// Attitude and angular momentum (about the pivot if there is one) at t = 0.
-    pub initial: PrincipalState,
-    /// Centre of mass at t = 0 in world axes, m (the pivot for a body with one).
-    pub position: DVec3,
-    /// Its velocity at t = 0, m/s (zero with a pivot).
-    pub velocity: DVec3,
-    /// The heavy top, for a body with a `pivot`.
-    pub top: Option<HeavyTop>,
-}
-
-impl SimBody {
-    /// Checks body number `number` (1-based, for the default name); mesh
-    /// paths are relative to `folder`; `gravity` (world axes, m/s²) pulls
-    /// a body with a pivot.
-    ///
-    /// # Errors
-    /// [`CliError::Scene`] naming the line and key of the first problem.
-    pub fn from_raw(
-        file: SceneFile<'_>,
-        raw: &Spanned<RawBody>,
-        number: usize,
-        folder: &Path,
-        gravity: DVec3,
-    ) -> Result<Self, CliError> {
-        let b = raw.get_ref();
-        let name = match &b.name {
-            Some(name) => checked_name(file, name)?,
-            None => format!("body{number}"),
-        };
-        let keys = Keys::new(file, format!("body `{name}`: "));
-        let (props, rigid) = mass_and_inertia(&keys, raw, folder)?;
-        let attitude = attitude(&keys, b)?;
-        let omega = keys.vector("angular_velocity", &b.angular_velocity)?;
-        let position = optional_vector(&keys, "position", &b.position)?;
-        let velocity = optional_vector(&keys, "velocity", &b.velocity)?;
-        let top = match &b.pivot {
-            Some(pivot) => {
-                if let Some(v) = &b.velocity {
-                    let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
-                    return Err(keys.fail(v, message));
-                }
-                let at = keys.vector("pivot", pivot)?;
-                let top = HeavyTop::try_new(&props, at, gravity)
-                    .map_err(|e| keys.fail(pivot, &format!("`pivot`: {e}")))?;
-                Some(top)
+/// Checks body number `number` (1-based, for the default name) and adds it
+/// to `world`; mesh paths are relative to `folder`. Returns its name and id.
+///
+/// # Errors
+/// [`CliError::Scene`] naming the line and key of the first problem.
+pub fn add_body(
+    file: SceneFile<'_>,
+    raw: &Spanned<RawBody>,
+    number: usize,
+    folder: &Path,
+    world: &mut World,
+) -> Result<(String, BodyId), CliError> {
+    let b = raw.get_ref();
+    let name = match &b.name {
+        Some(name) => checked_name(file, name)?,
+        None => format!("body{number}"),
+    };
+    let keys = Keys::new(file, format!("body `{name}`: "));
+    let inertia = inertia(&keys, raw, folder)?;
+    let attitude = attitude(&keys, b)?;
+    let omega = keys.vector("angular_velocity", &b.angular_velocity)?;
+    let position = optional_vector(&keys, "position", &b.position)?;
+    let velocity = optional_vector(&keys, "velocity", &b.velocity)?;
+    let builder = inertia.builder.world_from_body(attitude).omega_body(omega);
+    let builder = match &b.pivot {
+        Some(pivot) => {
+            if let Some(v) = &b.velocity {
+                let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
+                return Err(keys.fail(v, message));
             }
-            None => None,
-        };
-        let rigid = top.as_ref().map_or(rigid, |top| *top.body());
-        let initial = PrincipalState::try_from_omega_body(&rigid, attitude, omega)
-            .map_err(|e| keys.fail(&b.angular_velocity, &e.to_string()))?;
-        Ok(Self {
-            name,
-            mass: props.mass,
-            rigid,
-            initial,
-            position,
-            velocity,
-            top,
-        })
-    }
-
-    /// Position and velocity of the centre of mass at time `t` (exact ballistic motion).
-    ///
-    /// ```text
-    /// x(t) = x₀ + v₀ t + ½ g t²,   v(t) = v₀ + g t
-    /// ```
-    pub fn centre_of_mass(&self, t: f64, gravity: DVec3) -> (DVec3, DVec3) {
-        let x = self.position + self.velocity * t + gravity * (0.5 * t * t);
-        (x, self.velocity + gravity * t)
-    }
-
-    /// Whether the centre of mass's motion and the energy stay finite over
-    /// `[0, duration]`, checked at both ends: `|v|²` is convex in `t`, and
-    /// `−g·x` is concave, its largest value exceeding the one at `t = 0` by
-    /// at most `|v₀|²/2` per kg.
-    pub fn stays_finite(&self, duration: f64, gravity: DVec3) -> bool {
-        [0.0, duration].into_iter().all(|t| {
-            let (x, v) = self.centre_of_mass(t, gravity);
-            x.is_finite() && v.is_finite() && self.energy(&self.initial, t, gravity).is_finite()
-        })
-    }
-
-    /// Total energy at time `t` in rotational state `state`.
-    ///
-    /// ```text
-    /// free:   E = ½ Σ Lₖ²/Iₖ + ½ m |v|² − m g·x
-    /// pivot:  E = ½ Σ Lₖ²/Jₖ − m g·(p + R c)   (J about the pivot p, c the centre of mass from it)
-    /// ```
-    pub fn energy(&self, state: &PrincipalState, t: f64, gravity: DVec3) -> f64 {
-        match &self.top {
-            Some(top) => top.energy(state) - self.mass * gravity.dot(self.position),
-            None => {
-                let (x, v) = self.centre_of_mass(t, gravity);
-                state.energy(&self.rigid) + 0.5 * self.mass * v.length_squared()
-                    - self.mass * gravity.dot(x)
-            }
+            builder.pivot(keys.vector("pivot", pivot)?, position)
         }
-    }
+        None => builder.free(position, velocity),
+    };
+    let state_error = |e: DynamicsError| keys.fail(&b.angular_velocity, &e.to_string());
+    let body = builder.try_build().map_err(|e| match e {
+        DynamicsError::InvalidState { .. } => state_error(e),
+        other => keys.fail_at(inertia.span.clone(), &format!("`{}`: {other}", inertia.key)),
+    })?;
+    let id = world.add(body).map_err(|e| match (e, &b.pivot) {
+        (e @ DynamicsError::InvalidState { .. }, _) => state_error(e),
+        (e, Some(pivot)) => keys.fail(pivot, &format!("`pivot`: {e}")),
+        (e, None) => keys.fail(raw, &e.to_string()),
+    })?;
+    Ok((name, id))
 }
 
 /// The `name`, which must be a plain CSV field.
@@ -183,17 +125,27 @@ fn optional_vector(
         .map_or(Ok(DVec3::ZERO), |v| keys.vector(key, v))
 }
 
-/// The mass properties (body axes; the centre of mass at the origin for
-/// `inertia` and `inertia_tensor`, where the mesh puts it for `mesh`) and
-/// the rotational inertia about the centre of mass, from exactly one of
-/// `inertia`, `inertia_tensor` and `mesh`.
-fn mass_and_inertia(
+/// The inertia of a body, checked, and the key it came from.
+struct CheckedInertia {
+    /// The body with this inertia (state and support still to set).
+    builder: BodyBuilder,
+    /// `inertia`, `inertia_tensor` or `mesh`.
+    key: &'static str,
+    /// Where that key is.
+    span: std::ops::Range<usize>,
+}
+
+/// The inertia from exactly one of `inertia` (principal moments, body axes
+/// = principal axes, centre of mass at the origin), `inertia_tensor` (about
+/// the centre of mass at the origin) and `mesh` (a solid of `density`,
+/// mesh coordinates), checked by building a body at rest with it.
+fn inertia(
     keys: &Keys<'_>,
     raw: &Spanned<RawBody>,
     folder: &Path,
-) -> Result<(MassProperties, RigidBody), CliError> {
+) -> Result<CheckedInertia, CliError> {
     let b = raw.get_ref();
-    let given: Vec<(&str, std::ops::Range<usize>)> = [
+    let given: Vec<(&'static str, std::ops::Range<usize>)> = [
         ("inertia", b.inertia.as_ref().map(Spanned::span)),
         (
             "inertia_tensor",
@@ -205,15 +157,15 @@ fn mass_and_inertia(
     .filter_map(|(key, span)| span.map(|s| (key, s)))
     .collect();
     const ONE_OF: &str = "use exactly one of `inertia`, `inertia_tensor` and `mesh`";
-    match given.as_slice() {
+    let (key, span) = match given.as_slice() {
         [] => return Err(keys.fail(raw, &format!("no inertia given: {ONE_OF}"))),
-        [_] => {}
+        [(key, span)] => (*key, span.clone()),
         [(first, _), (second, span), ..] => {
             let message = format!("both `{first}` and `{second}` given: {ONE_OF}");
             return Err(keys.fail_at(span.clone(), &message));
         }
-    }
-    if let Some(mesh) = &b.mesh {
+    };
+    let builder = if let Some(mesh) = &b.mesh {
         if let Some(mass) = &b.mass {
             let message =
                 "`mass` cannot be given with `mesh`: it follows from the mesh and `density`";
@@ -223,42 +175,42 @@ fn mass_and_inertia(
             return Err(keys.fail(mesh, "`mesh` needs `density` (kg/m^3)"));
         };
         let density = keys.positive("density", density)?;
-        let props = mesh_properties(keys, mesh, density, folder)?;
-        let rigid = RigidBody::from_mass_properties(&props)
-            .map_err(|e| keys.fail(mesh, &format!("`mesh`: {e}")))?;
-        return Ok((props, rigid));
-    }
-    if let Some(density) = &b.density {
-        return Err(keys.fail(density, "`density` is only used with `mesh`"));
-    }
-    let Some(mass) = &b.mass else {
-        return Err(keys.fail(raw, "`mass` (kg) is missing"));
-    };
-    let mass = keys.positive("mass", mass)?;
-    let (rigid, tensor) = match (&b.inertia, &b.inertia_tensor) {
-        (Some(moments), _) => {
-            let diagonal = DVec3::from_array(*moments.get_ref());
-            let rigid = RigidBody::try_from_principal_moments(diagonal)
-                .map_err(|e| keys.fail(moments, &format!("`inertia`: {e}")))?;
-            (rigid, DMat3::from_diagonal(diagonal))
+        Body::from_mass_properties(mesh_properties(keys, mesh, density, folder)?)
+    } else {
+        if let Some(density) = &b.density {
+            return Err(keys.fail(density, "`density` is only used with `mesh`"));
         }
-        (None, Some(tensor)) => {
-            let rows = *tensor.get_ref();
-            if !rows.as_flattened().iter().all(|x| x.is_finite()) {
-                return Err(keys.fail(tensor, "`inertia_tensor` must be finite numbers"));
+        let Some(mass) = &b.mass else {
+            return Err(keys.fail(raw, "`mass` (kg) is missing"));
+        };
+        let mass = keys.positive("mass", mass)?;
+        match (&b.inertia, &b.inertia_tensor) {
+            (Some(moments), _) => {
+                Body::from_principal_moments(mass, DVec3::from_array(*moments.get_ref()))
             }
-            let matrix = DMat3::from_cols_array_2d(&rows).transpose();
-            let rigid = RigidBody::try_from_inertia_tensor(matrix)
-                .map_err(|e| keys.fail(tensor, &format!("`inertia_tensor`: {e}")))?;
-            (rigid, matrix)
+            (None, Some(tensor)) => {
+                let rows = *tensor.get_ref();
+                if !rows.as_flattened().iter().all(|x| x.is_finite()) {
+                    return Err(keys.fail(tensor, "`inertia_tensor` must be finite numbers"));
+                }
+                let matrix = DMat3::from_cols_array_2d(&rows).transpose();
+                let props = MassProperties::try_new(mass, DVec3::ZERO, matrix).map_err(|e| {
+                    let e = DynamicsError::InertiaTensor {
+                        reason: e.to_string(),
+                    };
+                    keys.fail(tensor, &format!("`inertia_tensor`: {e}"))
+                })?;
+                Body::from_mass_properties(props)
+            }
+            // Ruled out above; kept as an error rather than a panic.
+            (None, None) => return Err(keys.fail(raw, &format!("no inertia given: {ONE_OF}"))),
         }
-        // Ruled out above; kept as an error rather than a panic.
-        (None, None) => return Err(keys.fail(raw, &format!("no inertia given: {ONE_OF}"))),
     };
-    // Checked above: positive mass, a physical tensor.
-    let props = MassProperties::try_new(mass, DVec3::ZERO, tensor)
-        .map_err(|e| keys.fail(raw, &e.to_string()))?;
-    Ok((props, rigid))
+    // At rest, identity attitude, free: only the inertia can be refused.
+    builder
+        .try_build()
+        .map_err(|e| keys.fail_at(span.clone(), &format!("`{key}`: {e}")))?;
+    Ok(CheckedInertia { builder, key, span })
 }
 
 /// The solid mass properties of every body of the mesh file, summed (mesh axes).

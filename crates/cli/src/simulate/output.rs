@@ -6,9 +6,7 @@
 use std::io::{self, Write};
 
 use glam::{DQuat, DVec3};
-use kreisel_dynamics::PrincipalState;
-
-use super::scene::Scene;
+use kreisel_dynamics::{BodyId, World};
 
 use crate::numbers::{Shortest, write_numbers};
 
@@ -61,19 +59,22 @@ impl<W: Write> CsvWriter<W> {
         )
     }
 
-    /// One row per body of `scene` at time `t`, `states` in body order.
+    /// One row per body of `world` at its current time, `bodies` (names
+    /// and ids) in scene order.
     ///
     /// # Errors
     /// The writer's errors.
-    pub fn rows(&mut self, scene: &Scene, states: &[PrincipalState], t: f64) -> io::Result<()> {
-        for (body, state) in scene.bodies.iter().zip(states) {
+    pub fn rows(&mut self, world: &World, bodies: &[(String, BodyId)]) -> io::Result<()> {
+        for (name, id) in bodies {
+            // Every id comes from this world.
+            let Some(s) = world.state(*id) else { continue };
             let row = Row {
-                world_from_body: state.world_from_body(&body.rigid),
-                omega_body: state.omega_body(&body.rigid),
-                energy: body.energy(state, t, scene.gravity),
-                l_world: state.l_world(),
+                world_from_body: s.world_from_body,
+                omega_body: s.omega_body,
+                energy: s.energy,
+                l_world: s.l_world,
             };
-            self.row(t, &body.name, &row)?;
+            self.row(s.time, name, &row)?;
         }
         Ok(())
     }

@@ -18,7 +18,7 @@ const WIDTH: usize = 30;
 const REDRAW: Duration = Duration::from_millis(100);
 
 /// Steps between looks at the clock (a step takes about a microsecond).
-const CHECK_EVERY: u64 = 1024;
+pub const CHECK_EVERY: u64 = 1024;
 
 /// The progress of a run of `total` steps.
 #[derive(Debug)]
@@ -38,6 +38,11 @@ impl Progress {
             drawn: false,
             last: Instant::now(),
         }
+    }
+
+    /// Whether the bar is drawn at all.
+    pub fn enabled(&self) -> bool {
+        self.enabled
     }
 
     /// Whether a person is watching: standard error is a terminal, and the

@@ -13,10 +13,11 @@ use std::ops::Range;
 use std::path::Path;
 
 use glam::DVec3;
+use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, World};
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::body::{RawBody, SimBody};
+use super::body::{RawBody, add_body};
 use super::methods;
 use super::schedule::{INTERVAL_TOLERANCE, MAX_STEPS, Schedule, ScheduleProblem};
 use crate::error::{CliError, one_line};
@@ -43,16 +44,18 @@ struct RawSimulation {
 }
 
 /// A checked scene, ready to run.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct Scene {
     /// The steps and the rows written.
     pub schedule: Schedule,
     /// The `method` key, a known name; `None` when not given.
     pub method: Option<String>,
-    /// Gravitational acceleration, m/s² (zero when not given).
-    pub gravity: DVec3,
-    /// The bodies in file order, with distinct names.
-    pub bodies: Vec<SimBody>,
+    /// The bodies, their methods, gravity and `dt`.
+    pub world: World,
+    /// The bodies' names and ids in file order (distinct names).
+    pub bodies: Vec<(String, BodyId)>,
+    /// Whether some body has a pivot (is a heavy top).
+    pub has_pivot: bool,
 }
 
 /// The scene's path and text: turns spans into line numbers for errors.
@@ -140,12 +143,26 @@ impl<'a> Keys<'a> {
     }
 }
 
-/// Reads and checks a scene; mesh paths are relative to the scene's folder.
+/// Reads and checks a scene and builds its world, moved by the scene's
+/// `method`; mesh paths are relative to the scene's folder.
 ///
 /// # Errors
 /// [`CliError::Scene`] for the first problem found, naming its line and key
 /// when there is one. Mesh files are loaded here, so their errors too.
 pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
+    parse_with_method(path, text, None)
+}
+
+/// As [`parse`], the world moved by method `override_method` if given (a
+/// known name, `--method`) instead of the scene's `method`.
+///
+/// # Errors
+/// As [`parse`].
+pub fn parse_with_method(
+    path: &Path,
+    text: &str,
+    override_method: Option<&str>,
+) -> Result<Scene, CliError> {
     let file = SceneFile { path, text };
     let raw: RawScene =
         toml::from_str(text).map_err(|e| file.error(e.span(), &toml_message(&e)))?;
@@ -191,28 +208,43 @@ pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
         return Err(file.error(None, message));
     }
     let folder = path.parent().unwrap_or(Path::new(""));
-    let mut bodies: Vec<SimBody> = Vec::with_capacity(raw.body.len());
+    let mut world = World::try_new(gravity, dt).map_err(|e| file.error(None, &e.to_string()))?;
+    let name = override_method
+        .or(method.as_deref())
+        .unwrap_or(methods::AUTO);
+    let free: FreeBodyMethod = name
+        .parse()
+        .map_err(|e: DynamicsError| file.error(None, &e.to_string()))?;
+    // A method without a heavy-top version is refused below if a body has
+    // a pivot; until then the heavy-top default stands.
+    let heavy = free.heavy_top().unwrap_or_default();
+    let configured = world
+        .set_free_body_method(free)
+        .and_then(|()| world.set_heavy_top_method(heavy));
+    configured.map_err(|e| file.error(None, &e.to_string()))?;
+    let mut bodies: Vec<(String, BodyId)> = Vec::with_capacity(raw.body.len());
     // A set, not a search of the bodies so far: 10⁵ bodies took 31 s that way.
     let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());
+    let mut has_pivot = false;
     for (n, raw_body) in raw.body.iter().enumerate() {
-        let body = SimBody::from_raw(file, raw_body, n + 1, folder, gravity)?;
-        if !body.stays_finite(duration, gravity) {
+        let (name, id) = add_body(file, raw_body, n + 1, folder, &mut world)?;
+        if !world.stays_finite(id, duration) {
             let message = format!(
-                "body `{}`: its energy or the motion of its centre of mass overflows \
-                 within the run (position, velocity, gravity, mass or duration too large)",
-                body.name
+                "body `{name}`: its energy or the motion of its centre of mass overflows \
+                 within the run (position, velocity, gravity, mass or duration too large)"
             );
             return Err(file.error(Some(raw_body.span()), &message));
         }
-        if !names.insert(body.name.clone()) {
+        if !names.insert(name.clone()) {
             let span = raw_body.get_ref().name_span().unwrap_or(raw_body.span());
-            let message = format!("body name `{}` is used twice; names must differ", body.name);
+            let message = format!("body name `{name}` is used twice; names must differ");
             return Err(file.error(Some(span), &message));
         }
-        bodies.push(body);
+        has_pivot |= raw_body.get_ref().has_pivot();
+        bodies.push((name, id));
     }
     if let Some(name) = &sim.method
-        && bodies.iter().any(|b| b.top.is_some())
+        && has_pivot
     {
         methods::heavy_top_integrator(name.get_ref())
             .map_err(|message| keys.fail(name, &format!("`method`: {message}")))?;
@@ -220,8 +252,9 @@ pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
     Ok(Scene {
         schedule,
         method,
-        gravity,
+        world,
         bodies,
+        has_pivot,
     })
 }
 
@@ -264,8 +297,8 @@ mod tests {
             format!("{SIM}[[body]]\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0, 1, 0]\n");
         let scene = parse(Path::new("s.toml"), &text).unwrap();
         assert_eq!(scene.schedule.steps(), 10);
-        assert_eq!((scene.method, scene.gravity), (None, DVec3::ZERO));
-        assert_eq!(scene.bodies[0].name, "body1");
+        assert_eq!((scene.method, scene.world.gravity()), (None, DVec3::ZERO));
+        assert_eq!(scene.bodies[0].0, "body1");
     }
 
     #[test]

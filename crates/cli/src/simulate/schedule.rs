@@ -120,6 +120,13 @@ impl Schedule {
         k == 0 || k == self.steps || k.is_multiple_of(self.every)
     }
 
+    /// The first step after `k` whose state is written (`N` at the latest).
+    pub fn next_row(&self, k: u64) -> u64 {
+        (k / self.every + 1)
+            .saturating_mul(self.every)
+            .min(self.steps)
+    }
+
     /// How many times rows are written (one row per body each time).
     ///
     /// ```text
@@ -167,6 +174,7 @@ mod tests {
         // Rows after steps 0, 2, 4, 6, 8, 10 and 11.
         assert_eq!(s.row_times(), 7);
         assert_eq!(count_rows(&s), 7);
+        assert_eq!((s.next_row(0), s.next_row(3), s.next_row(10)), (2, 4, 11));
         // dt longer than the duration: one short step.
         let s = schedule(0.5, 2.0, None);
         assert_eq!((s.steps(), s.step_size(1), s.time(1)), (1, 0.5, 0.5));

@@ -58,6 +58,17 @@ pub struct ExactSolution {
     unit: f64,
 }
 
+/// The closed form an [`ExactSolution`] uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ExactKind {
+    /// One uniform rotation (a sphere, or a spin about a principal axis).
+    Uniform,
+    /// Two commuting rotations; `axis` is the symmetry axis.
+    Symmetric { axis: usize },
+    /// Jacobi elliptic functions.
+    Asymmetric,
+}
+
 #[derive(Clone, Debug)]
 enum Motion {
     /// `q(t) = q₀ ⊗ exp(t ω)`, L constant.
@@ -163,7 +174,7 @@ impl ExactSolution {
 
     /// The state at `t_hi + t_lo` (an unevaluated sum, for times accumulated
     /// in double-double by [`ExactPropagator`]).
-    fn state_at_split(&self, t_hi: f64, t_lo: f64) -> PrincipalState {
+    pub(crate) fn state_at_split(&self, t_hi: f64, t_lo: f64) -> PrincipalState {
         let t = t_hi + t_lo;
         let (world_from_principal, l_principal) = match &self.motion {
             Motion::Uniform { q0, l, omega } => (
@@ -186,6 +197,15 @@ impl ExactSolution {
         PrincipalState {
             world_from_principal,
             l_principal: l_principal * self.unit,
+        }
+    }
+
+    /// Which closed form this motion uses (for the world's plans).
+    pub(crate) fn kind(&self) -> ExactKind {
+        match &self.motion {
+            Motion::Uniform { .. } => ExactKind::Uniform,
+            Motion::Symmetric { axis, .. } => ExactKind::Symmetric { axis: *axis },
+            Motion::Asymmetric(_) => ExactKind::Asymmetric,
         }
     }
 

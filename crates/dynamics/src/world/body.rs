@@ -1,0 +1,358 @@
+//! [`Body`]: the one place a rigid body is built — its mass properties, its
+//! attitude and spin, and how it is held ([`Support`]).
+
+use glam::{DMat3, DQuat, DVec3};
+use kreisel_inertia::MassProperties;
+
+use crate::{DynamicsError, PrincipalState, RigidBody};
+
+/// How a body is held.
+///
+/// Applied torques and forces are not offered yet: they will be a field of
+/// [`Body`] of their own, so that a support stays what holds the body.
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{Body, Support};
+/// let b = Body::from_principal_moments(1.0, DVec3::ONE).free(DVec3::X, DVec3::Y).try_build()?;
+/// assert_eq!(b.support(), Support::Free { position: DVec3::X, velocity: DVec3::Y });
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Support {
+    /// Nothing holds it: the centre of mass flies ballistically under the
+    /// world's gravity and the rotation is torque-free.
+    ///
+    /// ```text
+    /// x(t) = x₀ + v₀ t + ½ g t²,   v(t) = v₀ + g t
+    /// ```
+    Free {
+        /// Centre of mass at the time the body is added, world axes, m.
+        position: DVec3,
+        /// Its velocity, world axes, m/s.
+        velocity: DVec3,
+    },
+    /// A fixed point of the body does not move: a heavy top under the
+    /// world's gravity ([`crate::HeavyTop`]).
+    Pivot {
+        /// The pivot in body coordinates (the frame of the body's mass
+        /// properties), m.
+        pivot_body: DVec3,
+        /// Where the pivot is, world axes, m.
+        pivot_world: DVec3,
+    },
+}
+
+/// A rigid body ready to be added to a [`crate::World`]: mass properties
+/// about its centre of mass in body axes, the attitude `world_from_body`,
+/// the angular velocity in body axes, and its [`Support`].
+///
+/// Built by [`Body::from_principal_moments`] or
+/// [`Body::from_mass_properties`] (primitives, a tensor, a mesh through
+/// `kreisel_inertia`) followed by [`BodyBuilder::try_build`], which checks
+/// everything once.
+///
+/// ```
+/// use glam::{DQuat, DVec3};
+/// use kreisel_dynamics::{Body, Support};
+/// let body = Body::from_principal_moments(2.0, DVec3::new(1.0, 2.0, 3.0))
+///     .world_from_body(DQuat::from_rotation_z(0.5))
+///     .omega_body(DVec3::new(0.01, 1.0, 0.0))
+///     .try_build()?;
+/// assert_eq!(body.mass(), 2.0);
+/// assert_eq!(body.rigid_body().principal_moments(), DVec3::new(1.0, 2.0, 3.0));
+/// assert!(matches!(body.support(), Support::Free { .. }));
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Body {
+    mass_properties: MassProperties,
+    rigid: RigidBody,
+    world_from_body: DQuat,
+    omega_body: DVec3,
+    support: Support,
+}
+
+/// Where a body's inertia comes from.
+#[derive(Debug, Clone, Copy)]
+enum Inertia {
+    /// Principal moments in body axes (body axes are principal axes, in
+    /// this order).
+    Principal { mass: f64, moments: DVec3 },
+    /// Mass properties; the principal axes are found.
+    Properties(MassProperties),
+}
+
+/// The settings of a [`Body`] before they are checked
+/// ([`BodyBuilder::try_build`]). Defaults: identity attitude, at rest,
+/// free at the origin.
+#[derive(Debug, Clone, Copy)]
+#[must_use = "a builder does nothing until try_build"]
+pub struct BodyBuilder {
+    inertia: Inertia,
+    world_from_body: DQuat,
+    omega_body: DVec3,
+    support: Support,
+}
+
+impl Body {
+    /// A body of `mass` (kg) whose body axes are principal axes with the
+    /// given `moments` (kg·m², about the centre of mass, which is the body
+    /// origin), in this order.
+    ///
+    /// ```text
+    /// I = diag(I₁, I₂, I₃),   centre of mass = 0
+    /// ```
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(1.0, DVec3::new(3.0, 2.0, 1.0)).try_build()?;
+    /// // The given order is kept: body axes are these principal axes.
+    /// assert_eq!(b.rigid_body().principal_moments(), DVec3::new(3.0, 2.0, 1.0));
+    /// assert!(Body::from_principal_moments(1.0, DVec3::new(1.0, 1.0, 3.0)).try_build().is_err());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn from_principal_moments(mass: f64, moments: DVec3) -> BodyBuilder {
+        BodyBuilder::new(Inertia::Principal { mass, moments })
+    }
+
+    /// A body with these mass properties (body coordinates; the inertia
+    /// about the centre of mass). Its principal axes are found by
+    /// [`RigidBody::from_mass_properties`].
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::Body;
+    /// use kreisel_inertia::MassProperties;
+    /// let brick = MassProperties::solid_box(1000.0, DVec3::new(0.1, 0.2, 0.3)).unwrap();
+    /// let b = Body::from_mass_properties(brick).omega_body(DVec3::X).try_build()?;
+    /// assert_eq!(b.mass(), brick.mass);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn from_mass_properties(mass_properties: MassProperties) -> BodyBuilder {
+        BodyBuilder::new(Inertia::Properties(mass_properties))
+    }
+
+    /// Mass, kg.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(3.0, glam::DVec3::ONE).try_build()?;
+    /// assert_eq!(b.mass(), 3.0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn mass(&self) -> f64 {
+        self.mass_properties.mass
+    }
+
+    /// The mass properties in body coordinates.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(3.0, glam::DVec3::ONE).try_build()?;
+    /// assert_eq!(b.mass_properties().center_of_mass, glam::DVec3::ZERO);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn mass_properties(&self) -> &MassProperties {
+        &self.mass_properties
+    }
+
+    /// Principal moments about the centre of mass and the body-from-principal rotation.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::new(1.0, 2.0, 2.5)).try_build()?;
+    /// assert_eq!(b.rigid_body().body_from_principal(), glam::DQuat::IDENTITY);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn rigid_body(&self) -> &RigidBody {
+        &self.rigid
+    }
+
+    /// The attitude: body coordinates → world coordinates, as given (the
+    /// world normalises it when the body is added).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let q = glam::DQuat::from_xyzw(0.0, 0.0, 2.0, 0.0);
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).world_from_body(q).try_build()?;
+    /// assert_eq!(b.world_from_body(), q);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn world_from_body(&self) -> DQuat {
+        self.world_from_body
+    }
+
+    /// Angular velocity in body axes, rad/s.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).omega_body(glam::DVec3::Z).try_build()?;
+    /// assert_eq!(b.omega_body(), glam::DVec3::Z);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn omega_body(&self) -> DVec3 {
+        self.omega_body
+    }
+
+    /// How the body is held.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, Support};
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).pivot(glam::DVec3::Z, glam::DVec3::ZERO).try_build()?;
+    /// assert!(matches!(b.support(), Support::Pivot { .. }));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn support(&self) -> Support {
+        self.support
+    }
+}
+
+impl BodyBuilder {
+    fn new(inertia: Inertia) -> Self {
+        Self {
+            inertia,
+            world_from_body: DQuat::IDENTITY,
+            omega_body: DVec3::ZERO,
+            support: Support::Free {
+                position: DVec3::ZERO,
+                velocity: DVec3::ZERO,
+            },
+        }
+    }
+
+    /// The attitude, body → world (any non-zero finite quaternion: the
+    /// world normalises it).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let q = glam::DQuat::from_rotation_y(0.4);
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).world_from_body(q).try_build()?;
+    /// assert_eq!(b.world_from_body(), q);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn world_from_body(self, world_from_body: DQuat) -> Self {
+        Self {
+            world_from_body,
+            ..self
+        }
+    }
+
+    /// The angular velocity in body axes, rad/s.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).omega_body(glam::DVec3::X).try_build()?;
+    /// assert_eq!(b.omega_body(), glam::DVec3::X);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn omega_body(self, omega_body: DVec3) -> Self {
+        Self { omega_body, ..self }
+    }
+
+    /// A free body with its centre of mass at `position` (m) moving at
+    /// `velocity` (m/s), world axes.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// use glam::DVec3;
+    /// let b = Body::from_principal_moments(1.0, DVec3::ONE).free(DVec3::ZERO, DVec3::NAN);
+    /// assert!(b.try_build().is_err());
+    /// ```
+    pub fn free(self, position: DVec3, velocity: DVec3) -> Self {
+        Self {
+            support: Support::Free { position, velocity },
+            ..self
+        }
+    }
+
+    /// A body turning about the fixed point `pivot_body` (body coordinates)
+    /// placed at `pivot_world` (world axes): a heavy top.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, Support};
+    /// use glam::DVec3;
+    /// let b = Body::from_principal_moments(1.0, DVec3::ONE).pivot(-DVec3::Z, DVec3::ZERO).try_build()?;
+    /// assert_eq!(b.support(), Support::Pivot { pivot_body: -DVec3::Z, pivot_world: DVec3::ZERO });
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn pivot(self, pivot_body: DVec3, pivot_world: DVec3) -> Self {
+        Self {
+            support: Support::Pivot {
+                pivot_body,
+                pivot_world,
+            },
+            ..self
+        }
+    }
+
+    /// Checks the settings and builds the body.
+    ///
+    /// # Errors
+    /// [`DynamicsError::UnphysicalInertia`] or
+    /// [`DynamicsError::InertiaTensor`] for inertia no body has (the
+    /// triangle inequality, a mass that is not positive);
+    /// [`DynamicsError::InvalidState`] for an attitude that is zero or not
+    /// finite, an angular velocity that is not finite or whose energy
+    /// overflows; [`DynamicsError::InvalidBody`] for a support with
+    /// non-finite vectors.
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::{Body, DynamicsError};
+    /// let b = Body::from_principal_moments(1.0, DVec3::ONE);
+    /// assert!(matches!(b.world_from_body(DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0)).try_build(), Err(DynamicsError::InvalidState { .. })));
+    /// assert!(matches!(b.free(DVec3::NAN, DVec3::ZERO).try_build(), Err(DynamicsError::InvalidBody { field: "position", .. })));
+    /// assert!(matches!(Body::from_principal_moments(-1.0, DVec3::ONE).try_build(), Err(DynamicsError::InertiaTensor { .. })));
+    /// ```
+    pub fn try_build(self) -> Result<Body, DynamicsError> {
+        let tensor_error = |e: kreisel_inertia::InertiaError| DynamicsError::InertiaTensor {
+            reason: e.to_string(),
+        };
+        let (mass_properties, rigid) = match self.inertia {
+            Inertia::Principal { mass, moments } => {
+                let rigid = RigidBody::try_from_principal_moments(moments)?;
+                let props =
+                    MassProperties::try_new(mass, DVec3::ZERO, DMat3::from_diagonal(moments))
+                        .map_err(tensor_error)?;
+                (props, rigid)
+            }
+            Inertia::Properties(props) => {
+                props.validate().map_err(tensor_error)?;
+                (props, RigidBody::from_mass_properties(&props)?)
+            }
+        };
+        let finite = |field: &'static str, v: DVec3| {
+            if v.is_finite() {
+                Ok(())
+            } else {
+                Err(DynamicsError::InvalidBody {
+                    field,
+                    reason: "must be finite",
+                })
+            }
+        };
+        match self.support {
+            Support::Free { position, velocity } => {
+                finite("position", position)?;
+                finite("velocity", velocity)?;
+            }
+            Support::Pivot {
+                pivot_body,
+                pivot_world,
+            } => {
+                finite("pivot_body", pivot_body)?;
+                finite("pivot_world", pivot_world)?;
+            }
+        }
+        PrincipalState::try_from_omega_body(&rigid, self.world_from_body, self.omega_body)?;
+        Ok(Body {
+            mass_properties,
+            rigid,
+            world_from_body: self.world_from_body,
+            omega_body: self.omega_body,
+            support: self.support,
+        })
+    }
+}

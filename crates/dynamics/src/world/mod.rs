@@ -1,0 +1,393 @@
+//! The world: bodies that do not interact, under uniform gravity, each
+//! moved along the cheapest exact-enough path its [`Plan`] names.
+//!
+//! ```text
+//! Body ──add──▶ World { bodies, gravity, methods, dt } ──step(h) / advance_steps(n) / advance_to(t)──▶ states
+//! ```
+//!
+//! - Torque-free bodies under the exact method (`auto`) are never stepped:
+//!   their exact solution is set up once (when added, or when a setter
+//!   changes their state) and evaluated at the world's time, which is kept
+//!   in double-double. [`World::advance_to`] evaluates them once at `t`.
+//! - Bodies under a stepping method (one the user chose, and every heavy
+//!   top) take steps of `dt` on the world's time grid; [`World::step`] takes
+//!   one step of the size asked.
+//! - Every state reached is checked ([`crate::DivergenceCheck`]).
+
+mod body;
+mod clock;
+mod plan;
+mod registry;
+mod setters;
+mod state;
+mod stepping;
+
+use glam::DVec3;
+
+pub use self::body::{Body, BodyBuilder, Support};
+pub use self::plan::Plan;
+pub use self::state::{BodyId, BodyState};
+
+use self::clock::Clock;
+use self::plan::Motion;
+use crate::{
+    DivergenceCheck, DynamicsError, FreeBodyMethod, HeavyTop, HeavyTopMethod, PrincipalState,
+    RigidBody,
+};
+
+/// Bodies under gravity, stepped together: the library's engine.
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{Body, ExactSolution, World};
+/// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1.0 / 60.0)?;
+/// let body = Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0))
+///     .omega_body(DVec3::new(0.01, 1.0, 0.0))
+///     .free(DVec3::ZERO, DVec3::new(1.0, 0.0, 5.0))
+///     .try_build()?;
+/// let id = world.add(body.clone())?;
+/// for _ in 0..60 {
+///     world.step(1.0 / 60.0)?; // a game loop
+/// }
+/// world.advance_to(10.0)?; // a simulation: no steps for a torque-free body
+/// let s = world.state(id).unwrap();
+/// // The exact solution from the same state, evaluated at t = 10 s.
+/// let exact = ExactSolution::try_new(DVec3::new(1.0, 2.0, 3.0), kreisel_dynamics::PrincipalState::try_from_omega_body(body.rigid_body(), body.world_from_body(), body.omega_body())?)?;
+/// let q = exact.state_at(10.0).world_from_principal;
+/// assert!(kreisel_kinematics::rotation_angle_between(s.world_from_body, q) < 1e-14);
+/// // The centre of mass flies exactly: x = v₀ t + g t²/2.
+/// assert!((s.position - DVec3::new(10.0, 0.0, 50.0 - 490.5)).length() < 1e-12);
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+pub struct World {
+    gravity: DVec3,
+    free_method: FreeBodyMethod,
+    heavy_method: HeavyTopMethod,
+    clock: Clock,
+    entries: Vec<Entry>,
+    failed: Option<DynamicsError>,
+}
+
+/// One body as the world moves it.
+#[derive(Debug)]
+struct Entry {
+    body: Body,
+    /// About the centre of mass, or about the pivot for a heavy top.
+    rigid: RigidBody,
+    top: Option<HeavyTop>,
+    plan: Plan,
+    motion: Motion,
+    /// The state when the plan was made: the divergence checks' reference.
+    baseline: PrincipalState,
+    /// The free body's checks (a heavy top's borrow the top: made per call).
+    check: Option<DivergenceCheck<'static>>,
+    /// Centre of mass and velocity at world time `since` (free bodies).
+    ballistic: (DVec3, DVec3, f64),
+}
+
+impl std::fmt::Debug for World {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("World")
+            .field("gravity", &self.gravity)
+            .field("free_body_method", &self.free_method)
+            .field("heavy_top_method", &self.heavy_method)
+            .field("clock", &self.clock)
+            .field("bodies", &self.entries)
+            .field("failed", &self.failed)
+            .finish()
+    }
+}
+
+impl World {
+    /// An empty world at time 0 with gravitational acceleration `gravity`
+    /// (world axes, m/s²) and time step `dt` (s) for the methods that step;
+    /// the methods are `auto` (the exact solution for free bodies, the
+    /// sub-stepped order-8 splitting for heavy tops).
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidStep`] for a `dt` that is not positive and
+    /// finite; [`DynamicsError::InvalidBody`] for a non-finite gravity.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::World;
+    /// let world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 0.01)?;
+    /// assert_eq!((world.time(), world.dt(), world.len()), (0.0, 0.01, 0));
+    /// assert!(World::try_new(DVec3::ZERO, 0.0).is_err());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_new(gravity: DVec3, dt: f64) -> Result<Self, DynamicsError> {
+        if !(dt.is_finite() && dt > 0.0) {
+            return Err(DynamicsError::InvalidStep { h: dt });
+        }
+        if !gravity.is_finite() {
+            return Err(DynamicsError::InvalidBody {
+                field: "gravity",
+                reason: "must be finite",
+            });
+        }
+        Ok(Self {
+            gravity,
+            free_method: FreeBodyMethod::Auto,
+            heavy_method: HeavyTopMethod::Auto,
+            clock: Clock::new(dt),
+            entries: Vec::new(),
+            failed: None,
+        })
+    }
+
+    /// Chooses the free-body method; the bodies' plans are remade from
+    /// their current states.
+    ///
+    /// # Errors
+    /// The set-up errors of a plan.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, FreeBodyMethod, Plan, World};
+    /// let mut world = World::try_new(DVec3::ZERO, 0.01)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::ONE).omega_body(DVec3::Z).try_build()?)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Sphere));
+    /// world.set_free_body_method("pdmv6".parse()?)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Stepping(FreeBodyMethod::Pdmv6)));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_free_body_method(&mut self, method: FreeBodyMethod) -> Result<(), DynamicsError> {
+        self.free_method = method;
+        self.replan_all()
+    }
+
+    /// Chooses the heavy-top method; the plans are remade.
+    ///
+    /// # Errors
+    /// The set-up errors of a plan.
+    ///
+    /// ```
+    /// use kreisel_dynamics::{HeavyTopMethod, World};
+    /// let mut world = World::try_new(glam::DVec3::ZERO, 0.01)?;
+    /// world.set_heavy_top_method(HeavyTopMethod::Splitting6)?;
+    /// assert_eq!(world.heavy_top_method(), HeavyTopMethod::Splitting6);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_heavy_top_method(&mut self, method: HeavyTopMethod) -> Result<(), DynamicsError> {
+        self.heavy_method = method;
+        self.replan_all()
+    }
+
+    /// The free-body method (`auto` by default).
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.01)?;
+    /// assert_eq!(world.free_body_method(), kreisel_dynamics::FreeBodyMethod::Auto);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn free_body_method(&self) -> FreeBodyMethod {
+        self.free_method
+    }
+
+    /// The heavy-top method (`auto` by default).
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.01)?;
+    /// assert_eq!(world.heavy_top_method(), kreisel_dynamics::HeavyTopMethod::Auto);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn heavy_top_method(&self) -> HeavyTopMethod {
+        self.heavy_method
+    }
+
+    /// The time step of the stepping methods, s.
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.25)?;
+    /// assert_eq!(world.dt(), 0.25);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn dt(&self) -> f64 {
+        self.clock.dt()
+    }
+
+    /// Gravitational acceleration, world axes, m/s².
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::Z, 0.25)?;
+    /// assert_eq!(world.gravity(), glam::DVec3::Z);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn gravity(&self) -> DVec3 {
+        self.gravity
+    }
+
+    /// The world's time, s.
+    ///
+    /// ```
+    /// # let mut world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// world.advance_to(0.35)?;
+    /// assert_eq!(world.time(), 0.35);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn time(&self) -> f64 {
+        self.clock.time()
+    }
+
+    /// The number of bodies.
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// assert_eq!(world.len(), 0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Whether the world has no bodies.
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// assert!(world.is_empty());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+
+    /// Adds a body at the world's current time and makes its plan.
+    ///
+    /// # Errors
+    /// For a body on a pivot, the errors of [`HeavyTop::try_new`] and
+    /// [`DynamicsError::InvalidState`] when its spin about the pivot
+    /// overflows; the set-up errors of its plan.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, Plan, World};
+    /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1e-3)?;
+    /// let top = Body::from_principal_moments(1.0, DVec3::new(0.02, 0.02, 0.01))
+    ///     .omega_body(DVec3::new(0.0, 0.0, 50.0))
+    ///     .pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO)
+    ///     .try_build()?;
+    /// let id = world.add(top)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::HeavyTop(kreisel_dynamics::HeavyTopMethod::Auto)));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn add(&mut self, body: Body) -> Result<BodyId, DynamicsError> {
+        let (rigid, top, ballistic) = match body.support() {
+            Support::Free { position, velocity } => {
+                (*body.rigid_body(), None, (position, velocity, self.time()))
+            }
+            Support::Pivot {
+                pivot_body,
+                pivot_world,
+            } => {
+                let top = HeavyTop::try_new(body.mass_properties(), pivot_body, self.gravity)?;
+                (
+                    *top.body(),
+                    Some(top),
+                    (pivot_world, DVec3::ZERO, self.time()),
+                )
+            }
+        };
+        let state =
+            PrincipalState::try_from_omega_body(&rigid, body.world_from_body(), body.omega_body())?;
+        let (plan, motion, check) = self.plan_for(&rigid, top.as_ref(), state)?;
+        self.entries.push(Entry {
+            body,
+            rigid,
+            top,
+            plan,
+            motion,
+            baseline: state,
+            check,
+            ballistic,
+        });
+        Ok(BodyId(self.entries.len() - 1))
+    }
+
+    /// The plan, the motion and the checks of a body in `state` now.
+    fn plan_for(
+        &self,
+        rigid: &RigidBody,
+        top: Option<&HeavyTop>,
+        state: PrincipalState,
+    ) -> Result<(Plan, Motion, Option<DivergenceCheck<'static>>), DynamicsError> {
+        Ok(match top {
+            Some(_) => {
+                let (plan, motion) = Motion::heavy_top(self.heavy_method, state);
+                (plan, motion, None)
+            }
+            None => {
+                let moments = rigid.principal_moments();
+                let (plan, motion) =
+                    Motion::free(self.free_method, moments, state, self.clock.now())?;
+                let name = registry::free_body(self.free_method).name();
+                let check = DivergenceCheck::free_body(name, moments, &state);
+                (plan, motion, Some(check))
+            }
+        })
+    }
+
+    /// Remakes every plan from the current states.
+    fn replan_all(&mut self) -> Result<(), DynamicsError> {
+        for index in 0..self.entries.len() {
+            let state = self.entries[index].motion.state();
+            self.replan(index, state)?;
+        }
+        Ok(())
+    }
+
+    /// Gives body `index` the rotational state `state` now and remakes its plan.
+    fn replan(&mut self, index: usize, state: PrincipalState) -> Result<(), DynamicsError> {
+        let entry = &self.entries[index];
+        state.validate(entry.rigid.principal_moments())?;
+        let (plan, motion, check) = self.plan_for(&entry.rigid, entry.top.as_ref(), state)?;
+        let entry = &mut self.entries[index];
+        (entry.plan, entry.motion, entry.check, entry.baseline) = (plan, motion, check, state);
+        Ok(())
+    }
+
+    /// The body `id` as it was added.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// let mut world = World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(4.0, glam::DVec3::ONE).try_build()?)?;
+    /// assert_eq!(world.body(id).unwrap().mass(), 4.0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn body(&self, id: BodyId) -> Option<&Body> {
+        self.entries.get(id.0).map(|e| &e.body)
+    }
+
+    /// The plan of body `id`: what it is, which method, why.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, Plan, World};
+    /// let mut world = World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, glam::DVec3::new(1.0, 2.0, 3.0)).try_build()?)?;
+    /// // At rest: nothing to compute.
+    /// assert_eq!(world.plan(id), Some(&Plan::Resting));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn plan(&self, id: BodyId) -> Option<&Plan> {
+        self.entries.get(id.0).map(|e| &e.plan)
+    }
+
+    /// Every body's plan, in the order added (what `kreisel simulate
+    /// --explain` prints).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, Plan, World};
+    /// let mut world = World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// world.add(Body::from_principal_moments(1.0, glam::DVec3::ONE).omega_body(glam::DVec3::X).try_build()?)?;
+    /// let plans: Vec<_> = world.plans().map(|(_, p)| *p).collect();
+    /// assert_eq!(plans, [Plan::Sphere]);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn plans(&self) -> impl Iterator<Item = (BodyId, &Plan)> {
+        self.entries
+            .iter()
+            .enumerate()
+            .map(|(i, e)| (BodyId(i), &e.plan))
+    }
+}

@@ -1,0 +1,153 @@
+//! Changing a body's state between steps: its plan is remade from the new
+//! state (the exact solution set up again, the checks' reference reset).
+
+use glam::{DQuat, DVec3};
+
+use super::{BodyId, Entry, World};
+use crate::{DynamicsError, PrincipalState};
+
+impl World {
+    /// The entry of `id`, or [`DynamicsError::UnknownBody`].
+    fn entry(&self, id: BodyId) -> Result<&Entry, DynamicsError> {
+        self.entries
+            .get(id.0)
+            .ok_or(DynamicsError::UnknownBody { index: id.0 })
+    }
+
+    /// Sets body `id`'s angular velocity (body axes, rad/s) now, keeping
+    /// its attitude; its plan is remade from the new state.
+    ///
+    /// # Errors
+    /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidState`] for
+    /// a non-finite or overflowing ω; the plan's set-up errors.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, Plan, World};
+    /// use glam::DVec3;
+    /// let mut world = World::try_new(DVec3::ZERO, 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0)).try_build()?)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Resting));
+    /// world.set_omega_body(id, DVec3::new(0.1, 1.0, 0.0))?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Asymmetric));
+    /// assert!((world.state(id).unwrap().omega_body - DVec3::new(0.1, 1.0, 0.0)).length() < 1e-15);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_omega_body(&mut self, id: BodyId, omega_body: DVec3) -> Result<(), DynamicsError> {
+        let entry = self.entry(id)?;
+        let state = entry.motion.state();
+        let world_from_body = state.world_from_body(&entry.rigid);
+        let next = PrincipalState::try_from_omega_body(&entry.rigid, world_from_body, omega_body)?;
+        self.replan(id.0, next)
+    }
+
+    /// Applies an angular impulse `j_world` (N·m·s, world axes; about the
+    /// centre of mass, or about the pivot) to body `id` now: `L_world += J`.
+    ///
+    /// # Errors
+    /// As [`World::set_omega_body`].
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// use glam::DVec3;
+    /// let mut world = World::try_new(DVec3::ZERO, 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0)).omega_body(DVec3::Y).try_build()?)?;
+    /// world.apply_angular_impulse(id, DVec3::new(0.0, 0.0, 3.0))?;
+    /// assert!((world.state(id).unwrap().l_world - DVec3::new(0.0, 2.0, 3.0)).length() < 1e-15);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn apply_angular_impulse(
+        &mut self,
+        id: BodyId,
+        j_world: DVec3,
+    ) -> Result<(), DynamicsError> {
+        if !j_world.is_finite() {
+            return Err(DynamicsError::InvalidState {
+                reason: "angular impulse is not finite",
+            });
+        }
+        let state = self.entry(id)?.motion.state();
+        let q = state.world_from_principal.normalize();
+        let next = PrincipalState {
+            world_from_principal: q,
+            l_principal: state.l_principal + q.conjugate() * j_world,
+        };
+        self.replan(id.0, next)
+    }
+
+    /// Sets body `id`'s attitude (body → world; normalised) now, keeping
+    /// its angular velocity in body axes.
+    ///
+    /// # Errors
+    /// As [`World::set_omega_body`], and for a zero or non-finite quaternion.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// use glam::{DQuat, DVec3};
+    /// let mut world = World::try_new(DVec3::ZERO, 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0)).omega_body(DVec3::Y).try_build()?)?;
+    /// world.set_attitude(id, DQuat::from_rotation_z(1.0))?;
+    /// assert!((world.state(id).unwrap().l_world - DVec3::new(-2.0 * 1f64.sin(), 2.0 * 1f64.cos(), 0.0)).length() < 1e-15);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_attitude(
+        &mut self,
+        id: BodyId,
+        world_from_body: DQuat,
+    ) -> Result<(), DynamicsError> {
+        let entry = self.entry(id)?;
+        let omega_body = entry.motion.state().omega_body(&entry.rigid);
+        let next = PrincipalState::try_from_omega_body(&entry.rigid, world_from_body, omega_body)?;
+        self.replan(id.0, next)
+    }
+
+    /// Sets a free body's centre of mass (m) and its velocity (m/s), world
+    /// axes, now: its flight restarts from them.
+    ///
+    /// ```text
+    /// x(t) = x + v (t − now) + ½ g (t − now)²
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidBody`] for
+    /// a non-finite vector or a body on a pivot (which does not fly).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// use glam::DVec3;
+    /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -10.0), 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::ONE).try_build()?)?;
+    /// world.advance_to(1.0)?;
+    /// world.set_centre_of_mass(id, DVec3::ZERO, DVec3::new(0.0, 0.0, 10.0))?; // a blow
+    /// world.advance_to(2.0)?;
+    /// let s = world.state(id).unwrap();
+    /// assert!((s.position - DVec3::new(0.0, 0.0, 5.0)).length() < 1e-14);
+    /// assert!(s.velocity.length() < 1e-14);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_centre_of_mass(
+        &mut self,
+        id: BodyId,
+        position: DVec3,
+        velocity: DVec3,
+    ) -> Result<(), DynamicsError> {
+        let entry = self.entry(id)?;
+        let field = if entry.top.is_some() {
+            Some((
+                "position",
+                "cannot be set for a body on a pivot: it does not fly",
+            ))
+        } else if !position.is_finite() {
+            Some(("position", "must be finite"))
+        } else if !velocity.is_finite() {
+            Some(("velocity", "must be finite"))
+        } else {
+            None
+        };
+        if let Some((field, reason)) = field {
+            return Err(DynamicsError::InvalidBody { field, reason });
+        }
+        let now = self.time();
+        self.entries[id.0].ballistic = (position, velocity, now);
+        Ok(())
+    }
+}

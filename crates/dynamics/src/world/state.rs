@@ -1,0 +1,165 @@
+//! [`BodyState`]: what a [`crate::World`] reports about one body at its
+//! current time, and [`BodyId`], the handle that names the body.
+
+use glam::{DQuat, DVec3};
+
+use super::{Support, World};
+
+/// The handle of a body in a [`crate::World`], returned by
+/// [`crate::World::add`]: bodies are numbered from 0 in the order added.
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{Body, World};
+/// let mut world = World::try_new(DVec3::ZERO, 0.01)?;
+/// let a = world.add(Body::from_principal_moments(1.0, DVec3::ONE).try_build()?)?;
+/// let b = world.add(Body::from_principal_moments(1.0, DVec3::ONE).try_build()?)?;
+/// assert_eq!((a.index(), b.index()), (0, 1));
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct BodyId(pub(crate) usize);
+
+impl BodyId {
+    /// The body's number, from 0 in the order added.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// let mut world = World::try_new(glam::DVec3::ZERO, 0.01)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, glam::DVec3::ONE).try_build()?)?;
+    /// assert_eq!(id.index(), 0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn index(self) -> usize {
+        self.0
+    }
+}
+
+/// One body's state at the world's current time ([`crate::World::state`]).
+///
+/// ```text
+/// free:   energy = ½ L·I⁻¹L + ½ m |v|² − m g·x,    l_world about the centre of mass
+/// pivot:  energy = ½ L·J⁻¹L − m g·(p + R c),     l_world about the pivot p (J about it)
+/// ```
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{Body, World};
+/// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 0.01)?;
+/// let id = world.add(Body::from_principal_moments(2.0, DVec3::ONE).free(DVec3::ZERO, DVec3::new(1.0, 0.0, 0.0)).try_build()?)?;
+/// let s = world.state(id).unwrap();
+/// assert_eq!(s.energy, 1.0);
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BodyState {
+    /// The world time, s.
+    pub time: f64,
+    /// Attitude, body → world.
+    pub world_from_body: DQuat,
+    /// Angular velocity in body axes, rad/s.
+    pub omega_body: DVec3,
+    /// Angular momentum in world axes, kg·m²/s: about the centre of mass,
+    /// or about the pivot for a body with one.
+    pub l_world: DVec3,
+    /// Total energy, J (see above).
+    pub energy: f64,
+    /// Centre of mass, world axes, m.
+    pub position: DVec3,
+    /// Its velocity, world axes, m/s.
+    pub velocity: DVec3,
+}
+
+impl World {
+    /// The state of body `id` now (`None` for an id of another world).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// let mut world = World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, glam::DVec3::new(1.0, 2.0, 3.0)).omega_body(glam::DVec3::Y).try_build()?)?;
+    /// let s = world.state(id).unwrap();
+    /// assert_eq!((s.omega_body, s.l_world, s.energy), (glam::DVec3::Y, 2.0 * glam::DVec3::Y, 1.0));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn state(&self, id: BodyId) -> Option<BodyState> {
+        let entry = self.entries.get(id.0)?;
+        let state = entry.motion.state();
+        let world_from_body = state.world_from_body(&entry.rigid);
+        let (mass, g, time) = (entry.body.mass(), self.gravity, self.time());
+        let (energy, position, velocity) = match (&entry.top, entry.body.support()) {
+            (
+                Some(top),
+                Support::Pivot {
+                    pivot_body,
+                    pivot_world,
+                },
+            ) => {
+                let c = entry.body.mass_properties().center_of_mass - pivot_body;
+                let arm = world_from_body.normalize() * c;
+                let omega_world = state.world_from_principal.normalize()
+                    * (state.l_principal / entry.rigid.principal_moments());
+                let energy = top.energy(&state) - mass * g.dot(pivot_world);
+                (energy, pivot_world + arm, omega_world.cross(arm))
+            }
+            _ => {
+                let (x0, v0, since) = entry.ballistic;
+                let (x, v) = ballistic(x0, v0, g, time - since);
+                let energy =
+                    state.energy(&entry.rigid) + 0.5 * mass * v.length_squared() - mass * g.dot(x);
+                (energy, x, v)
+            }
+        };
+        Some(BodyState {
+            time,
+            world_from_body,
+            omega_body: state.omega_body(&entry.rigid),
+            l_world: state.l_world(),
+            energy,
+            position,
+            velocity,
+        })
+    }
+
+    /// Whether body `id`'s energy and the motion of its centre of mass stay
+    /// finite from now until `until` (s), checked at both ends: `|v|²` is
+    /// convex in `t`, and `−g·x` is concave with its largest value at most
+    /// `|v₀|²/2` per kg above the one now. `false` for an unknown id.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// use glam::DVec3;
+    /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -1e300), 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::ONE).free(DVec3::new(0.0, 0.0, 1.0), DVec3::ZERO).try_build()?)?;
+    /// assert!(world.stays_finite(id, 0.0));
+    /// assert!(!world.stays_finite(id, 10.0));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn stays_finite(&self, id: BodyId, until: f64) -> bool {
+        let Some(entry) = self.entries.get(id.0) else {
+            return false;
+        };
+        let Some(now) = self.state(id) else {
+            return false;
+        };
+        if entry.top.is_some() {
+            return now.energy.is_finite();
+        }
+        let (x0, v0, since) = entry.ballistic;
+        let rotational = entry.motion.state().energy(&entry.rigid);
+        let mass = entry.body.mass();
+        [now.time, until].into_iter().all(|t| {
+            let (x, v) = ballistic(x0, v0, self.gravity, t - since);
+            let energy = rotational + 0.5 * mass * v.length_squared() - mass * self.gravity.dot(x);
+            x.is_finite() && v.is_finite() && energy.is_finite()
+        })
+    }
+}
+
+/// The ballistic flight: position and velocity after `t` seconds.
+///
+/// ```text
+/// x(t) = x₀ + v₀ t + ½ g t²,   v(t) = v₀ + g t
+/// ```
+fn ballistic(x0: DVec3, v0: DVec3, g: DVec3, t: f64) -> (DVec3, DVec3) {
+    (x0 + v0 * t + g * (0.5 * t * t), v0 + g * t)
+}
