@@ -223,3 +223,49 @@ impl ForcedBody {
             - self.mass * self.gravity_world.dot(state.position_world)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Bodies can be stepped on threads: the body, its inputs (laws
+    /// included) and its state are `Send + Sync`.
+    #[test]
+    fn bodies_cross_threads() {
+        fn send_sync<T: Send + Sync>() {}
+        send_sync::<ForcedBody>();
+        send_sync::<Inputs>();
+        send_sync::<ForcedState>();
+    }
+
+    #[test]
+    fn bad_parameters_are_refused() {
+        let body = RigidBody::try_from_principal_moments(DVec3::ONE).unwrap();
+        let e = ForcedBody::try_new(body, f64::NAN, DVec3::ZERO, Inputs::default()).unwrap_err();
+        assert!(matches!(
+            e,
+            DynamicsError::InvalidBodyParameter {
+                parameter: "mass",
+                ..
+            }
+        ));
+        let e = ForcedBody::try_new(
+            body,
+            1.0,
+            DVec3::new(0.0, f64::INFINITY, 0.0),
+            Inputs::default(),
+        )
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "free body: gravity_world = inf: must be finite"
+        );
+        let mut forced = ForcedBody::try_new(body, 1.0, DVec3::ZERO, Inputs::default()).unwrap();
+        assert!(
+            forced
+                .set_inputs(Inputs::default().with_angular_damping(-0.1))
+                .is_err()
+        );
+        assert!(forced.inputs().is_none());
+    }
+}
