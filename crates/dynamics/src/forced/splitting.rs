@@ -50,7 +50,8 @@ const STRANG: CompositionCoefficients = CompositionCoefficients {
 /// gravity (`tests/forced_reference.rs`).
 ///
 /// Every stage keeps `|q|` (rotations only); with a world-constant torque
-/// `L_world(t) = L₀ + τ t` exactly.
+/// `L_world(t) = L₀ + τ t` at every step, for any body and any `h`, to
+/// rounding (each drift keeps `L_world`, the kick durations add up to `h`).
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
