@@ -69,6 +69,32 @@ pub enum DynamicsError {
         /// The most sub-steps a step may take.
         limit: usize,
     },
+    /// An applied input (torque, force, damping) that cannot be used: a
+    /// non-finite component, or a negative damping coefficient.
+    #[error("applied input `{input}`{}: {value}: {reason}", index.map(|i| format!(" #{i}")).unwrap_or_default())]
+    InvalidInput {
+        /// The input's name (e.g. `"torque_world"`, `"angular_damping"`,
+        /// `"point_force.point_body"`).
+        input: &'static str,
+        /// Which one, for inputs given as a list (the point forces).
+        index: Option<usize>,
+        /// The offending value (a component of a vector).
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// A parameter or initial condition of a free body outside its domain
+    /// (a mass that is not positive and finite, a non-finite gravity,
+    /// position or velocity).
+    #[error("free body: {parameter} = {value}: {reason}")]
+    InvalidBodyParameter {
+        /// The parameter's name (e.g. `"mass"`, `"gravity_world"`).
+        parameter: &'static str,
+        /// The value given (a component of a vector).
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
     /// A principal-axis index other than 0, 1 or 2.
     #[error("principal axis {axis} does not exist (0, 1 or 2)")]
     InvalidAxis {

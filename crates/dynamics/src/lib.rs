@@ -60,6 +60,7 @@ mod divergence;
 pub mod elliptic;
 mod error;
 mod exact;
+mod forced;
 mod heavy_top;
 mod integrator;
 mod lagrange_top;
@@ -78,6 +79,9 @@ pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI
 pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
 pub use error::{Divergence, DynamicsError};
 pub use exact::{ExactFlow, ExactPropagator, ExactSolution};
+pub use forced::{
+    ForcedBody, ForcedPropagator, ForcedSplitting, ForcedState, Inputs, Load, LoadFn, PointForce,
+};
 pub use heavy_top::{
     HEAVY_TOP_METHODS, HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
     MAX_SUBSTEPS, heavy_top_method, integrate_heavy_top,

@@ -18,7 +18,7 @@ pub use self::integrator::{
 pub use self::rk4::HeavyTopRk4;
 pub use self::splitting::HeavyTopSplitting;
 
-use self::free_flow::FreeFlow;
+pub(crate) use self::free_flow::FreeFlow;
 use crate::{DynamicsError, PrincipalState, RigidBody};
 
 /// A rigid body on a fixed pivot in uniform gravity.
