@@ -67,50 +67,48 @@ pub struct MeshMassReport {
     pub warnings: Vec<MeshWarning>,
 }
 
-/// Mass properties of a mesh under a model and a material.
-///
-/// ```text
-/// solid / hull:  m = ρ V,  I from the volume moments
-/// shell:         m = ρ t A, I from the surface moments scaled by ρ t
-/// TotalMass(M):  ρ = M / V   (V = t A for a shell)
-/// ```
-///
-/// The mesh is checked and repaired first ([`prepare_solid`] or
-/// [`prepare_shell`]); the repairs are listed in the report's warnings.
-///
-/// Units do not matter: the mesh is checked and integrated in its own
-/// power-of-two unit of length `2^k` (its extent about 1) and the results
-/// scaled back exactly, so scaling a mesh by `2^j` scales the mass by
-/// exactly `2^{3j}`, the centre by `2^j` and the tensor by `2^{5j}`.
-///
-/// # Errors
-/// [`InertiaError::NonPositive`] for a density, mass or thickness that is
-/// not positive and finite; the errors of [`prepare_solid`] (an open mesh:
-/// use [`MassModel::Shell`] or [`MassModel::ConvexHull`]),
-/// [`convex_hull`] and [`MassProperties::try_new`];
-/// [`InertiaError::MeshOutOfRange`] when the volume, area, mass or inertia
-/// tensor overflows f64 or falls below its normal range (a mesh far too
-/// large or too small for its units), naming the quantity and the extent.
-///
-/// ```
-/// use glam::DVec3;
-/// use kreisel_inertia::{mesh_mass_properties, MassModel, Material, TriMesh};
-/// let v = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
-/// let tet = TriMesh::new(v, vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]);
-/// let report = mesh_mass_properties(tet, MassModel::Solid, Material::TotalMass(2.0))?;
-/// assert!((report.density - 12.0).abs() < 1e-13);
-/// assert!((report.properties.mass - 2.0).abs() < 1e-15);
-/// # Ok::<(), kreisel_inertia::InertiaError>(())
-/// ```
-pub fn mesh_mass_properties(
-    mesh: TriMesh,
-    model: MassModel,
-    material: Material,
-) -> Result<MeshMassReport, InertiaError> {
-    match material {
-        Material::Density(d) => check_positive("density", d)?,
-        Material::TotalMass(m) => check_positive("mass", m)?,
-    };
+/// A mesh checked and integrated under a model, in its own power-of-two
+/// unit, with the volume and area of material back in metres (both
+/// checked to be normal f64 numbers).
+pub(crate) struct Integrated {
+    unit: MeshUnit,
+    extent_log10: f64,
+    checked: CheckedMesh,
+    moments: MeshMoments,
+    /// Thickness of a shell, 1 for a solid.
+    scale: f64,
+    /// Powers of length of the region's measure and of its second moments.
+    powers: (i32, i32),
+    /// Volume of material, m³.
+    pub(crate) volume: f64,
+    /// Surface area, m².
+    area: f64,
+}
+
+impl Integrated {
+    fn out_of_range(
+        &self,
+        quantity: &'static str,
+        unit: &'static str,
+        value_log10: f64,
+    ) -> InertiaError {
+        InertiaError::MeshOutOfRange {
+            quantity,
+            unit,
+            extent_log10: self.extent_log10,
+            value_log10,
+        }
+    }
+}
+
+/// A result must be a normal f64: not ∞, not 0 or subnormal (digits lost).
+fn normal(x: f64) -> bool {
+    x.is_finite() && x.abs() >= f64::MIN_POSITIVE
+}
+
+/// The first half of [`mesh_mass_properties`]: check, repair and integrate
+/// the mesh under the model (no material yet).
+pub(crate) fn integrate_model(mesh: TriMesh, model: MassModel) -> Result<Integrated, InertiaError> {
     // Checked and integrated in the mesh's power-of-two unit 2^k, so that
     // nothing depends on the units (exact scaling; k = 0 for every mesh
     // between 2^-64 and 2^64 m across), then scaled back.
@@ -159,8 +157,6 @@ pub fn mesh_mass_properties(
         extent_log10,
         value_log10,
     };
-    // A result must be a normal f64: not ∞, not 0 or subnormal (digits lost).
-    let normal = |x: f64| x.is_finite() && x.abs() >= f64::MIN_POSITIVE;
     // The region's own measure first (the volume of a solid, the area of a
     // shell), as the quantity a reader checks against the mesh's size.
     let area = unit.scale_back(surface.zeroth, 2);
@@ -179,6 +175,71 @@ pub fn mesh_mass_properties(
     if !normal(area) {
         return Err(area_error());
     }
+    Ok(Integrated {
+        unit,
+        extent_log10,
+        checked,
+        moments,
+        scale,
+        powers: (p0, p2),
+        volume,
+        area,
+    })
+}
+
+/// Mass properties of a mesh under a model and a material.
+///
+/// ```text
+/// solid / hull:  m = ρ V,  I from the volume moments
+/// shell:         m = ρ t A, I from the surface moments scaled by ρ t
+/// TotalMass(M):  ρ = M / V   (V = t A for a shell)
+/// ```
+///
+/// The mesh is checked and repaired first ([`prepare_solid`] or
+/// [`prepare_shell`]); the repairs are listed in the report's warnings.
+///
+/// Units do not matter: the mesh is checked and integrated in its own
+/// power-of-two unit of length `2^k` (its extent about 1) and the results
+/// scaled back exactly, so scaling a mesh by `2^j` scales the mass by
+/// exactly `2^{3j}`, the centre by `2^j` and the tensor by `2^{5j}`.
+///
+/// # Errors
+/// [`InertiaError::NonPositive`] for a density, mass or thickness that is
+/// not positive and finite; the errors of [`prepare_solid`] (an open mesh:
+/// use [`MassModel::Shell`] or [`MassModel::ConvexHull`]),
+/// [`convex_hull`] and [`MassProperties::try_new`];
+/// [`InertiaError::MeshOutOfRange`] when the volume, area, mass or inertia
+/// tensor overflows f64 or falls below its normal range (a mesh far too
+/// large or too small for its units), naming the quantity and the extent.
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_inertia::{mesh_mass_properties, MassModel, Material, TriMesh};
+/// let v = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+/// let tet = TriMesh::new(v, vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]);
+/// let report = mesh_mass_properties(tet, MassModel::Solid, Material::TotalMass(2.0))?;
+/// assert!((report.density - 12.0).abs() < 1e-13);
+/// assert!((report.properties.mass - 2.0).abs() < 1e-15);
+/// # Ok::<(), kreisel_inertia::InertiaError>(())
+/// ```
+pub fn mesh_mass_properties(
+    mesh: TriMesh,
+    model: MassModel,
+    material: Material,
+) -> Result<MeshMassReport, InertiaError> {
+    match material {
+        Material::Density(d) => check_positive("density", d)?,
+        Material::TotalMass(m) => check_positive("mass", m)?,
+    };
+    let integrated = integrate_model(mesh, model)?;
+    let Integrated {
+        unit,
+        moments,
+        scale,
+        powers: (p0, p2),
+        volume,
+        ..
+    } = integrated;
     let density = match material {
         Material::Density(d) => d,
         Material::TotalMass(m) => check_positive("density", m / volume)?,
@@ -188,7 +249,7 @@ pub fn mesh_mass_properties(
     let mass = unit.scale_back(rho * moments.zeroth, p0);
     if !normal(mass) {
         let log10 = unit.log10_back(moments.zeroth, p0) + rho.log10();
-        return Err(out_of_range("mass", "kg", log10));
+        return Err(integrated.out_of_range("mass", "kg", log10));
     }
     let (c, inertia) = moments.central(rho);
     let inertia = DMat3::from_cols_array(&inertia.to_cols_array().map(|x| unit.scale_back(x, p2)));
@@ -200,7 +261,7 @@ pub fn mesh_mass_properties(
             .iter()
             .fold(0.0_f64, |a, x| a.max(x.abs()));
         let log10 = unit.log10_back(largest, p2) + rho.log10();
-        return Err(out_of_range("inertia tensor", "kg m^2", log10));
+        return Err(integrated.out_of_range("inertia tensor", "kg m^2", log10));
     }
     let properties = MassProperties::try_new(mass, unit.point_back(moments.origin + c), inertia)?;
     Ok(MeshMassReport {
@@ -208,9 +269,9 @@ pub fn mesh_mass_properties(
         model,
         density,
         volume,
-        area,
-        triangles: checked.mesh.triangles().len(),
-        warnings: checked.warnings,
+        area: integrated.area,
+        triangles: integrated.checked.mesh.triangles().len(),
+        warnings: integrated.checked.warnings,
     })
 }
 

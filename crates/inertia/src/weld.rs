@@ -510,6 +510,47 @@ mod tests {
     }
 
     #[test]
+    fn tiny_and_huge_meshes_weld_as_the_same_mesh_one_across() {
+        // Vertex 4 lies 1e-5 of the size from vertex 0 across the sweep
+        // direction (same projection), vertex 5 within 1e-7 of vertex 1.
+        // At 2^-540 (≈ 3e-163) the squared distances underflowed to 0 and
+        // vertex 4 was merged; at 2^+540 the diagonal overflowed.
+        let d = DVec3::new(0.754_877_666_246_692_7, -1.0, 0.0);
+        let base = vec![
+            DVec3::new(0.25, 0.5, 0.125),
+            DVec3::X,
+            DVec3::Y,
+            DVec3::Z,
+            DVec3::new(0.25, 0.5, 0.125) + d * 1e-5,
+            DVec3::X + DVec3::splat(1e-7),
+        ];
+        let t = vec![[0, 1, 2], [4, 2, 3], [5, 3, 0]];
+        let (one, w1) = TriMesh::new(base.clone(), t.clone())
+            .welded(Weld::default())
+            .unwrap();
+        assert_eq!((one.vertices().len(), w1.merged), (5, 1));
+        for k in [-540_i32, -300, 300, 540] {
+            let f = |x: f64| {
+                (0..k.unsigned_abs()).fold(x, |x, _| if k > 0 { x * 2.0 } else { x * 0.5 })
+            };
+            let v = base.iter().map(|p| p.to_array().map(f).into()).collect();
+            let (m, w) = TriMesh::new(v, t.clone()).welded(Weld::default()).unwrap();
+            assert_eq!(m.triangles(), one.triangles(), "2^{k}");
+            assert_eq!(
+                (w.merged, w.tolerance, w.max_move),
+                (1, f(w1.tolerance), f(w1.max_move)),
+                "2^{k}"
+            );
+            let back: Vec<DVec3> = one
+                .vertices()
+                .iter()
+                .map(|p| p.to_array().map(f).into())
+                .collect();
+            assert_eq!(m.vertices(), back.as_slice(), "2^{k}");
+        }
+    }
+
+    #[test]
     fn bad_tolerances_are_errors() {
         for t in [-1.0, f64::NAN, f64::INFINITY] {
             assert!(Weld::Absolute(t).tolerance(1.0).is_err());

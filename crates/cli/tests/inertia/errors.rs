@@ -149,4 +149,13 @@ fn meshes_whose_mass_properties_leave_f64_say_so_and_name_the_units() {
     let json = inertia(&cube, &["--scale", "1e-60", "--format", "json"]).json();
     let mass = crate::support::num(&json["mass"]);
     assert!((mass / 1e-177 - 1.0).abs() < 1e-12, "{mass:e}");
+    // A total mass on a cube whose moments at unit density would underflow:
+    // I = m a²/6 = 2 · 1e-140 / 6.
+    let json = inertia(
+        &cube,
+        &["--scale", "1e-70", "--mass", "2", "--format", "json"],
+    )
+    .json();
+    let i = crate::support::rows(&json["inertia"]);
+    assert!((i.x_axis.x / (2e-140 / 6.0) - 1.0).abs() < 1e-12, "{i}");
 }
