@@ -107,6 +107,9 @@ impl MeshMoments {
     /// The origin is the vertex mean, so a part far from the coordinate
     /// origin loses no digits (`a − origin` is exact for vertices within a
     /// factor two of it). Orientation and closedness are not checked here.
+    /// The sums are taken in the mesh's units as given; for a mesh far
+    /// beyond `2^±64` m across, [`crate::mesh_mass_properties`] integrates
+    /// in the mesh's own power-of-two unit and says when a result leaves f64.
     ///
     /// ```
     /// use glam::DVec3;
