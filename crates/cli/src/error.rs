@@ -283,6 +283,9 @@ fn solid_hint(error: &InertiaError) -> String {
     const OPEN_ON_PURPOSE: &str = "; if the surface is open on purpose, --shell models a thin-walled part (see --thickness) and --hull a convex one";
     match error {
         InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. } => OPEN_ON_PURPOSE.into(),
+        InertiaError::MeshOutOfRange { .. } => {
+            " (set with --units or --scale S, metres per mesh unit)".into()
+        }
         InertiaError::NonOrientable { .. } => {
             "; it bounds no volume, but --shell models it as a thin wall (see --thickness)".into()
         }

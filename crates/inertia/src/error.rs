@@ -187,6 +187,27 @@ pub enum InertiaError {
         /// Which check failed, and where.
         reason: String,
     },
+    /// A mesh's mass properties leave the range of f64: its volume, area,
+    /// mass or moments overflow (a mesh far too large in metres) or fall
+    /// below the normal numbers (far too small), so no result would be
+    /// right. Usually the mesh's units are wrong.
+    #[error(
+        "mass properties of a mesh {} m across {} f64 ({quantity} ≈ {} {unit}, {}); check the mesh's units",
+        sci(*extent_log10),
+        if *value_log10 > 0.0 { "overflow" } else { "underflow" },
+        sci(*value_log10),
+        if *value_log10 > 0.0 { "the largest f64 is 1.8e308" } else { "the smallest normal f64 is 2.2e-308" }
+    )]
+    MeshOutOfRange {
+        /// What leaves f64 (`"volume"`, `"area"`, `"mass"`, `"inertia tensor"`).
+        quantity: &'static str,
+        /// Its unit (`"m^3"`, `"kg"`, …).
+        unit: &'static str,
+        /// `log10` of the mesh's largest extent, m.
+        extent_log10: f64,
+        /// `log10` of the quantity's magnitude (beyond f64, so as a logarithm).
+        value_log10: f64,
+    },
     /// A result overflows (or underflows to zero) in f64: the inputs are out
     /// of the representable range.
     #[error("{quantity} is not representable in f64 (got {value:e}): inputs out of range")]
@@ -196,4 +217,42 @@ pub enum InertiaError {
         /// The value computed.
         value: f64,
     },
+}
+
+/// `10^x` written as `8e600`: three significant digits, trailing zeros dropped.
+fn sci(log10: f64) -> String {
+    if !log10.is_finite() {
+        return if log10 > 0.0 { "inf" } else { "0" }.to_owned();
+    }
+    let mut e = log10.floor();
+    let mut m = 10f64.powf(log10 - e);
+    if format!("{m:.2}") == "10.00" {
+        m = 1.0;
+        e += 1.0;
+    }
+    let digits = format!("{m:.2}");
+    let digits = digits.trim_end_matches('0').trim_end_matches('.');
+    format!("{digits}e{e}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn out_of_range_names_the_quantity_extent_and_limit() {
+        let e = InertiaError::MeshOutOfRange {
+            quantity: "volume",
+            unit: "m^3",
+            extent_log10: 2f64.log10() + 200.0,
+            value_log10: 8f64.log10() + 600.0,
+        };
+        assert_eq!(
+            e.to_string(),
+            "mass properties of a mesh 2e200 m across overflow f64 (volume ≈ 8e600 m^3, the largest f64 is 1.8e308); check the mesh's units"
+        );
+        assert_eq!(sci(-599.0 - 0.0969), "8e-600");
+        assert_eq!(sci(2.9999999), "1e3");
+        assert_eq!(sci(0.5), "3.16e0");
+    }
 }

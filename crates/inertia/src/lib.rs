@@ -24,6 +24,7 @@ mod mass_properties;
 mod mesh_check;
 mod mesh_integration;
 mod mesh_mass;
+mod mesh_unit;
 mod parry_interop;
 mod primitives;
 mod principal_axes;

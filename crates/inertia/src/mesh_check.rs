@@ -21,6 +21,7 @@ use core::fmt;
 
 use glam::DVec3;
 
+use crate::mesh_unit::MeshUnit;
 use crate::{InertiaError, TriMesh};
 
 /// Something found in a mesh and repaired; the result is still exact.
@@ -292,6 +293,32 @@ fn solid_angle(a: DVec3, b: DVec3, c: DVec3) -> f64 {
 /// # Ok::<(), kreisel_inertia::InertiaError>(())
 /// ```
 pub fn prepare_solid(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
+    in_own_unit(mesh, prepare_solid_as_is)
+}
+
+/// `check` run on the mesh in its power-of-two unit ([`crate::mesh_unit`]),
+/// so that zero-area tests and orientation volumes neither underflow nor
+/// overflow; the result keeps the original vertices (checks only drop and
+/// flip triangles), and the places an error names are scaled back.
+fn in_own_unit(
+    mesh: TriMesh,
+    check: fn(TriMesh) -> Result<CheckedMesh, InertiaError>,
+) -> Result<CheckedMesh, InertiaError> {
+    let unit = MeshUnit::of(mesh.vertices());
+    if unit.is_identity() {
+        return check(mesh);
+    }
+    let original = mesh.vertices().to_vec();
+    let checked = check(mesh.in_unit(&unit)).map_err(|e| unit.error_back(e))?;
+    let (_, triangles) = checked.mesh.into_parts();
+    Ok(CheckedMesh {
+        mesh: TriMesh::from_checked_parts(original, triangles),
+        warnings: checked.warnings,
+    })
+}
+
+/// [`prepare_solid`] in the mesh's units as they are.
+fn prepare_solid_as_is(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
     let (vertices, mut triangles, known) = mesh.into_parts_and_topology();
     let before = triangles.len();
     triangles.retain(|&t| !collapsed(t));
@@ -589,6 +616,11 @@ fn orient_as(
 /// # Ok::<(), kreisel_inertia::InertiaError>(())
 /// ```
 pub fn prepare_shell(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
+    in_own_unit(mesh, prepare_shell_as_is)
+}
+
+/// [`prepare_shell`] in the mesh's units as they are.
+fn prepare_shell_as_is(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
     let (mesh, dropped) = drop_degenerate(mesh);
     if mesh.triangles().is_empty() {
         return Err(InertiaError::EmptyMesh {

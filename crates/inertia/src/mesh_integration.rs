@@ -107,6 +107,9 @@ impl MeshMoments {
     /// The origin is the vertex mean, so a part far from the coordinate
     /// origin loses no digits (`a − origin` is exact for vertices within a
     /// factor two of it). Orientation and closedness are not checked here.
+    /// The sums are taken in the mesh's units as given; for a mesh far
+    /// beyond `2^±64` m across, [`crate::mesh_mass_properties`] integrates
+    /// in the mesh's own power-of-two unit and says when a result leaves f64.
     ///
     /// ```
     /// use glam::DVec3;
@@ -158,7 +161,8 @@ impl MeshMoments {
     /// # Errors
     /// [`InertiaError::NonPositive`] for a density that is not positive and
     /// finite; [`InertiaError::ZeroVolume`] when the region has no positive
-    /// volume (or area), e.g. an inside-out or open mesh; and the checks of
+    /// volume (or area), e.g. an inside-out or open mesh;
+    /// [`InertiaError::NotRepresentable`] for an infinite one; and the checks of
     /// [`MassProperties::try_new`].
     ///
     /// ```
@@ -180,15 +184,28 @@ impl MeshMoments {
         if self.zeroth.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
             return Err(InertiaError::ZeroVolume);
         }
+        if !self.zeroth.is_finite() {
+            return Err(InertiaError::NotRepresentable {
+                quantity: "volume",
+                value: self.zeroth,
+            });
+        }
+        let (c, inertia) = self.central(density);
+        MassProperties::try_new(density * self.zeroth, self.origin + c, inertia)
+    }
+
+    /// The centre of mass relative to the origin, and the inertia tensor
+    /// about it at uniform `density`, of a region with a positive volume.
+    ///
+    /// ```text
+    /// c̃ = ∫r/∫dV,   S = ∫r rᵀ − ∫dV · c̃ c̃ᵀ,   I = ρ (tr S · E − S)
+    /// ```
+    pub(crate) fn central(&self, density: f64) -> (DVec3, DMat3) {
         let c = self.first / self.zeroth;
         let outer = DMat3::from_cols(c * c.x, c * c.y, c * c.z);
         let s = self.second - outer * self.zeroth;
         let trace = s.x_axis.x + s.y_axis.y + s.z_axis.z;
-        MassProperties::try_new(
-            density * self.zeroth,
-            self.origin + c,
-            (DMat3::IDENTITY * trace - s) * density,
-        )
+        (c, (DMat3::IDENTITY * trace - s) * density)
     }
 }
 

@@ -304,6 +304,17 @@ impl TriMesh {
             .unwrap_or_else(|e| panic!("{e}"))
     }
 
+    /// The mesh in the power-of-two unit `unit` (see [`crate::mesh_unit`]):
+    /// exact scaling, so the known topology is kept.
+    pub(crate) fn in_unit(mut self, unit: &crate::mesh_unit::MeshUnit) -> Self {
+        self.exact_unique = false;
+        self.first_use = false;
+        for v in &mut self.vertices {
+            *v = unit.point_in_unit(*v);
+        }
+        self
+    }
+
     /// `self`, or the first vertex with a non-finite coordinate.
     fn check_finite(self) -> Result<Self, InertiaError> {
         match self.vertices.iter().position(|v| !v.is_finite()) {

@@ -25,10 +25,18 @@
 //! apart than `tol`; [`Welded::max_move`] reports the largest distance any
 //! vertex moved, so such a collapse is visible. Each cluster takes the
 //! position of its first vertex (in order of first use by a triangle).
+//!
+//! Units: distances are compared in the mesh's power-of-two unit
+//! ([`crate::mesh_unit`]), so a mesh 1e200 across (whose diagonal and
+//! squared tolerance would overflow) or 1e-200 across (whose squared
+//! distances would underflow to 0) welds exactly as the same mesh 1 across.
+
+use std::borrow::Cow;
 
 use glam::DVec3;
 
 use crate::mesh_check::Topology;
+use crate::mesh_unit::{MeshUnit, bounds, ldexp};
 use crate::{InertiaError, TriMesh};
 
 /// Triangles from which the check's topology is found on a second thread
@@ -219,12 +227,16 @@ fn find(parent: &mut [u32], mut i: u32) -> u32 {
 }
 
 /// Vertices within `tol` merged: the new index of each vertex, the
-/// vertices kept and the report; `None` when nothing is within `tol`.
+/// vertices kept (from `original`) and the report; `None` when nothing is
+/// within `tol`. Distances are measured in `vertices` (the original ones in
+/// the mesh's power-of-two unit `2^k`); the report is in `original` units.
 /// With `repeats`, bit-identical vertices may be among them (the later ones
 /// are merged into the first like any pair within `tol`, but not counted in
 /// [`Welded::merged`]).
 fn weld_near(
     vertices: &[DVec3],
+    original: &[DVec3],
+    unit: &MeshUnit,
     tol: f64,
     repeats: bool,
 ) -> Option<(Vec<u32>, Vec<DVec3>, Welded)> {
@@ -282,14 +294,14 @@ fn weld_near(
     let mut new_index = vec![u32::MAX; vertices.len()];
     let mut kept = Vec::new();
     let mut welded = Welded {
-        tolerance: tol,
+        tolerance: unit.scale_back(tol, 1),
         ..Welded::default()
     };
     for i in 0..vertices.len() as u32 {
         let root = find(&mut parent, i);
         if root == i {
             new_index[i as usize] = kept.len() as u32;
-            kept.push(vertices[i as usize]);
+            kept.push(original[i as usize]);
         } else {
             // Roots come first in index order, so the root is numbered.
             new_index[i as usize] = new_index[root as usize];
@@ -301,20 +313,22 @@ fn weld_near(
             welded.max_move = welded.max_move.max(moved);
         }
     }
+    welded.max_move = unit.scale_back(welded.max_move, 1);
     Some((new_index, kept, welded))
 }
 
-/// The diagonal of the axis-aligned bounding box.
+/// The diagonal of the axis-aligned bounding box in units of `unit`.
+fn diagonal_in(vertices: &[DVec3], unit: &MeshUnit) -> f64 {
+    bounds(vertices).map_or(0.0, |(lo, hi)| {
+        (unit.point_in_unit(hi) - unit.point_in_unit(lo)).length()
+    })
+}
+
+/// The diagonal of the axis-aligned bounding box (∞ beyond `f64::MAX`,
+/// but never ∞ from an intermediate overflow, nor 0 from an underflow).
 pub(crate) fn bounding_diagonal(vertices: &[DVec3]) -> f64 {
-    let (lo, hi) = vertices.iter().fold(
-        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
-        |(lo, hi), &v| (lo.min(v), hi.max(v)),
-    );
-    if vertices.is_empty() {
-        0.0
-    } else {
-        (hi - lo).length()
-    }
+    let unit = MeshUnit::of(vertices);
+    unit.scale_back(diagonal_in(vertices, &unit), 1)
 }
 
 impl TriMesh {
@@ -343,7 +357,13 @@ impl TriMesh {
     /// # Ok::<(), kreisel_inertia::InertiaError>(())
     /// ```
     pub fn welded(self, weld: Weld) -> Result<(TriMesh, Welded), InertiaError> {
-        let tol = weld.tolerance(bounding_diagonal(self.vertices()))?;
+        // Tolerances and distances in the mesh's power-of-two unit (exact
+        // scaling; the unit is 1 for every mesh between 2^-64 and 2^64 across).
+        let unit = MeshUnit::of(self.vertices());
+        let tol = match weld {
+            Weld::Absolute(_) => ldexp(weld.tolerance(0.0)?, -unit.k),
+            _ => weld.tolerance(diagonal_in(self.vertices(), &unit))?,
+        };
         let (exact_unique, first_use) = (self.is_exact_unique(), self.is_first_use());
         let (vertices, mut triangles) = self.into_parts();
         let vertices = if exact_unique || first_use {
@@ -355,7 +375,7 @@ impl TriMesh {
         };
         let repeats = first_use && !exact_unique;
         let unchanged = Welded {
-            tolerance: tol,
+            tolerance: unit.scale_back(tol, 1),
             ..Welded::default()
         };
         if tol == 0.0 && !repeats {
@@ -366,14 +386,20 @@ impl TriMesh {
         // that pass leaves the triangles as they are (the common case; not
         // tried when exact repeats are left to the pass, which then merges
         // them).
+        let scaled: Cow<[DVec3]> = if unit.is_identity() {
+            Cow::Borrowed(&vertices)
+        } else {
+            Cow::Owned(vertices.iter().map(|&v| unit.point_in_unit(v)).collect())
+        };
+        let near = || weld_near(&scaled, &vertices, &unit, tol, repeats);
         let (near, topology) = if triangles.len() >= PARALLEL_MIN && !repeats {
             std::thread::scope(|scope| {
                 let topology = scope.spawn(|| Topology::of_solid(&triangles, vertices.len()));
-                let near = weld_near(&vertices, tol, repeats);
+                let near = near();
                 (near, topology.join().ok().flatten())
             })
         } else {
-            (weld_near(&vertices, tol, repeats), None)
+            (near(), None)
         };
         let Some((new_index, kept, report)) = near else {
             let mesh = TriMesh::from_checked_parts(vertices, triangles);
@@ -481,6 +507,47 @@ mod tests {
             .welded(Weld::default())
             .unwrap();
         assert_eq!(report.merged, 1);
+    }
+
+    #[test]
+    fn tiny_and_huge_meshes_weld_as_the_same_mesh_one_across() {
+        // Vertex 4 lies 1e-5 of the size from vertex 0 across the sweep
+        // direction (same projection), vertex 5 within 1e-7 of vertex 1.
+        // At 2^-540 (≈ 3e-163) the squared distances underflowed to 0 and
+        // vertex 4 was merged; at 2^+540 the diagonal overflowed.
+        let d = DVec3::new(0.754_877_666_246_692_7, -1.0, 0.0);
+        let base = vec![
+            DVec3::new(0.25, 0.5, 0.125),
+            DVec3::X,
+            DVec3::Y,
+            DVec3::Z,
+            DVec3::new(0.25, 0.5, 0.125) + d * 1e-5,
+            DVec3::X + DVec3::splat(1e-7),
+        ];
+        let t = vec![[0, 1, 2], [4, 2, 3], [5, 3, 0]];
+        let (one, w1) = TriMesh::new(base.clone(), t.clone())
+            .welded(Weld::default())
+            .unwrap();
+        assert_eq!((one.vertices().len(), w1.merged), (5, 1));
+        for k in [-540_i32, -300, 300, 540] {
+            let f = |x: f64| {
+                (0..k.unsigned_abs()).fold(x, |x, _| if k > 0 { x * 2.0 } else { x * 0.5 })
+            };
+            let v = base.iter().map(|p| p.to_array().map(f).into()).collect();
+            let (m, w) = TriMesh::new(v, t.clone()).welded(Weld::default()).unwrap();
+            assert_eq!(m.triangles(), one.triangles(), "2^{k}");
+            assert_eq!(
+                (w.merged, w.tolerance, w.max_move),
+                (1, f(w1.tolerance), f(w1.max_move)),
+                "2^{k}"
+            );
+            let back: Vec<DVec3> = one
+                .vertices()
+                .iter()
+                .map(|p| p.to_array().map(f).into())
+                .collect();
+            assert_eq!(m.vertices(), back.as_slice(), "2^{k}");
+        }
     }
 
     #[test]

@@ -101,3 +101,61 @@ fn scaling_that_overflows_is_an_error() {
     let run = inertia(&path, &["--scale", "1e200"]);
     run.error_line(1);
 }
+
+#[test]
+fn meshes_whose_mass_properties_leave_f64_say_so_and_name_the_units() {
+    // Were "mesh is empty (1 vertices, 0 triangles)", "mesh encloses zero
+    // volume", "inertia tensor is not physical" and "mesh is empty (8
+    // vertices, 0 triangles)": a unit cube scaled to sizes f64 cannot integrate.
+    let cube = scratch(
+        "unit_cube_for_scales.obj",
+        cube_obj("cube", 0.0, 1, false, false),
+    );
+    let cases: [(&str, &[&str]); 5] = [
+        (
+            "1e200",
+            &["mesh 1e200 m across overflow f64 (volume ≈ 1e600 m^3"],
+        ),
+        (
+            "1e120",
+            &["mesh 1e120 m across overflow f64 (volume ≈ 1e360 m^3"],
+        ),
+        // I = ρ a⁵/6 = 1000 · 1e350 / 6.
+        (
+            "1e70",
+            &["mesh 1e70 m across overflow f64 (inertia tensor ≈ 1.67e352 kg m^2"],
+        ),
+        (
+            "1e-70",
+            &["mesh 1e-70 m across underflow f64 (inertia tensor ≈ 1.67e-348 kg m^2"],
+        ),
+        (
+            "1e-200",
+            &["mesh 1e-200 m across underflow f64 (volume ≈ 1e-600 m^3"],
+        ),
+    ];
+    for (scale, words) in cases {
+        let run = inertia(&cube, &["--scale", scale]);
+        let line = run.error_line(1);
+        for w in words
+            .iter()
+            .chain(&["unit_cube_for_scales.obj", "--units or --scale"])
+        {
+            assert!(line.contains(w), "{w:?} in {line}");
+        }
+    }
+    // Within range the same cube is exact: m = ρ a³ at a = 1e-60 (3 digits of
+    // the shortest form are enough to tell it from an underflowed 0).
+    let json = inertia(&cube, &["--scale", "1e-60", "--format", "json"]).json();
+    let mass = crate::support::num(&json["mass"]);
+    assert!((mass / 1e-177 - 1.0).abs() < 1e-12, "{mass:e}");
+    // A total mass on a cube whose moments at unit density would underflow:
+    // I = m a²/6 = 2 · 1e-140 / 6.
+    let json = inertia(
+        &cube,
+        &["--scale", "1e-70", "--mass", "2", "--format", "json"],
+    )
+    .json();
+    let i = crate::support::rows(&json["inertia"]);
+    assert!((i.x_axis.x / (2e-140 / 6.0) - 1.0).abs() < 1e-12, "{i}");
+}

@@ -18,6 +18,7 @@ use core::fmt;
 
 use super::{Body, LoadOptions, LoadWarning};
 use crate::mass_properties::check_positive;
+use crate::mesh_mass::integrate_model;
 use crate::{InertiaError, MassModel, MassProperties, Material, MeshWarning, mesh_mass_properties};
 
 /// How a mesh file becomes a solid: loading, units, model and material.
@@ -125,10 +126,11 @@ impl SolidOptions {
                 // One density for the whole file: integrate once for the volumes.
                 let mut volume = 0.0;
                 for body in &bodies {
-                    let unit =
-                        mesh_mass_properties(body.mesh.clone(), self.model, Material::Density(1.0))
-                            .map_err(|e| in_body(&body.name, e))?;
-                    volume += unit.volume;
+                    // Only the volume: at unit density the mass or moments
+                    // could leave f64 where those at the real density do not.
+                    volume += integrate_model(body.mesh.clone(), self.model)
+                        .map_err(|e| in_body(&body.name, e))?
+                        .volume;
                 }
                 let density = mass / volume;
                 if !(density.is_finite() && density > 0.0) {
