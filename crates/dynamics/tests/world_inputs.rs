@@ -300,3 +300,34 @@ fn zero_inputs_keep_the_exact_plan_bit_for_bit() {
     // Torque-free: L_world is conserved.
     assert!((s.l_world - start.l_world()).length() < 1e-14 * s.l_world.length());
 }
+
+#[test]
+fn setters_move_a_forced_body_and_keep_it_forced() {
+    // m = 2, F = (1, 0, 0) N: a = g + F/m; the centre of mass restarts from
+    // what is set, the spin from the impulse, the plan stays forced.
+    let force = DVec3::new(1.0, 0.0, 0.0);
+    let inputs = Inputs::default().with_force_world(force);
+    let mut world = World::try_new(GRAVITY, 0.01).unwrap();
+    let id = world.add(asymmetric(inputs)).unwrap();
+    world.advance_to(1.0).unwrap();
+    let (x0, v0) = (DVec3::new(0.0, 0.0, 10.0), DVec3::new(0.0, 2.0, 0.0));
+    world.set_centre_of_mass(id, x0, v0).unwrap();
+    let l_before = world.state(id).unwrap().l_world;
+    world.apply_angular_impulse(id, DVec3::Z).unwrap();
+    let forced = Some(&Plan::Forced {
+        method: ForcedSplitting::DEFAULT,
+    });
+    assert_eq!(world.plan(id), forced);
+    world.advance_to(3.0).unwrap();
+    let s = world.state(id).unwrap();
+    let a = GRAVITY + force / 2.0;
+    let x = x0 + v0 * 2.0 + a * 2.0;
+    assert!(
+        (s.position - x).length() < 1e-12 * x.length(),
+        "{:?}",
+        s.position
+    );
+    assert!((s.velocity - (v0 + a * 2.0)).length() < 1e-12 * v0.length());
+    // A force through the centre of mass turns nothing: L = L + J.
+    assert!((s.l_world - (l_before + DVec3::Z)).length() < 1e-13);
+}

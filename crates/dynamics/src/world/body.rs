@@ -21,7 +21,8 @@ use crate::{DynamicsError, Inputs, PrincipalState, RigidBody};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Support {
     /// Nothing holds it: the centre of mass flies ballistically under the
-    /// world's gravity and the rotation is torque-free.
+    /// world's gravity and the rotation is torque-free — unless the body
+    /// has [`Inputs`] ([`Body::with_inputs`]), which then push and turn it.
     ///
     /// ```text
     /// x(t) = x₀ + v₀ t + ½ g t²,   v(t) = v₀ + g t

@@ -136,7 +136,9 @@ impl World {
     /// Whether body `id`'s energy and the motion of its centre of mass stay
     /// finite from now until `until` (s), checked at both ends: `|v|²` is
     /// convex in `t`, and `−g·x` is concave with its largest value at most
-    /// `|v₀|²/2` per kg above the one now. `false` for an unknown id.
+    /// `|v₀|²/2` per kg above the one now. For a body on a pivot or with
+    /// applied inputs, whose motion no formula foresees: whether its energy
+    /// now is finite. `false` for an unknown id.
     ///
     /// ```
     /// # use kreisel_dynamics::{Body, World};
