@@ -124,8 +124,8 @@ Output (CSV; standard output unless --output):
   work done by them (damping included).
   --columns LIST writes the columns named in LIST (comma-separated, in that
   order) instead: any of the thirteen above and
-  x,y,z      centre of mass, world axes, m (the pivot body's centre of mass
-             for a heavy top)
+  x,y,z      centre of mass, world axes, m (for a heavy top too: where its
+             centre of mass is, not the pivot)
   vx,vy,vz   its velocity, world axes, m/s
   Rows at t = 0, after every step that ends at a multiple of output_interval
   (every step without it), and at t = duration: one row per body each time,
