@@ -57,8 +57,8 @@ enum Command {
     /// Mass, centre of mass, inertia tensor and principal axes of a mesh file
     /// (STL, OBJ, PLY, glTF), as text, JSON, URDF, SDFormat or MJCF
     Inertia(inertia::InertiaArgs),
-    /// Integrate the torque-free rotation of the bodies of a TOML scene and
-    /// write their states as CSV
+    /// Integrate the rotation of the bodies of a TOML scene (torque-free,
+    /// driven by torques and forces, or on a pivot) and write their states as CSV
     Simulate(simulate::SimulateArgs),
     /// The heavy symmetric top: constants of the motion, roots of f(u), nutation
     /// limits and period, precession, type of motion; --plot draws it

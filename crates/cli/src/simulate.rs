@@ -1,6 +1,7 @@
 //! `kreisel simulate`: integrate the rotation of the bodies of a TOML scene
-//! (torque-free, or heavy tops on a fixed pivot under gravity) and stream
-//! their states as CSV, in constant memory.
+//! (torque-free, driven by applied torques and forces, or heavy tops on a
+//! fixed pivot under gravity) and stream their states as CSV, in constant
+//! memory.
 //!
 //! The scene is read and checked first ([`scene::parse`], every error
 //! naming its line and key) into a [`kreisel_dynamics::World`], which is
@@ -23,7 +24,7 @@ use std::path::PathBuf;
 
 use kreisel_dynamics::DynamicsError;
 
-use self::output::CsvWriter;
+use self::output::{Column, CsvWriter};
 use self::progress::Progress;
 use self::scene::Scene;
 use crate::error::{CliError, Stream};
@@ -72,6 +73,14 @@ Scene (TOML; SI units, radians):
                              For inertia/inertia_tensor bodies measured from
                              the centre of mass; for mesh bodies in the
                              mesh's own coordinates [default: none, free]
+  torque = [0, 0, 0.1]       applied torque, N m, world axes [default: none]
+  torque_body = [0, 0, 0.1]  applied torque, N m, body axes (turns with the
+                             body) [default: none]
+  force = [1, 0, 0]          applied force through the centre of mass, N,
+                             world axes [default: none]
+  angular_damping = 0.01     c >= 0: the torque -c omega, N m s [default: 0]
+                             (torque, torque_body, force, angular_damping:
+                             free bodies only, not with a pivot)
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
@@ -89,6 +98,12 @@ Motion:
   is not stepped: its exact solution is set up once and evaluated at the
   times written (at rest: nothing to compute; a sphere or a spin about a
   principal axis: one uniform rotation; two equal moments: a closed form).
+  A free body with a nonzero torque, torque_body, force or angular_damping
+  is driven: it takes steps of dt by a kick-drift-kick splitting (the free
+  flow alternating with exact kicks of the torques, forces and damping),
+  auto: splitting6 (order 6); strang, splitting4, splitting6, splitting8:
+  the splitting of that order; the other methods cannot move it (an error).
+  Its centre of mass moves under gravity and force: x'' = g + F/m.
   --explain prints each body's plan (what it is, which method, why) and
   exits without running.
 
@@ -104,6 +119,14 @@ Output (CSV; standard output unless --output):
              pivot: rotational about the pivot - m g.x (x the centre of mass)
   lx..lz     angular momentum about the centre of mass, world axes, kg m^2/s
              (about the pivot for a body with one)
+  With torque, torque_body, force or angular_damping, energy is the
+  mechanical energy (the same formula): not conserved, its change is the
+  work done by them (damping included).
+  --columns LIST writes the columns named in LIST (comma-separated, in that
+  order) instead: any of the thirteen above and
+  x,y,z      centre of mass, world axes, m (for a heavy top too: where its
+             centre of mass is, not the pivot)
+  vx,vy,vz   its velocity, world axes, m/s
   Rows at t = 0, after every step that ends at a multiple of output_interval
   (every step without it), and at t = duration: one row per body each time,
   in scene order. Numbers in shortest round-trip form; rows are written as
@@ -121,6 +144,7 @@ Examples:
   kreisel simulate spin.toml --method rk4 | head
   kreisel simulate examples/scenes/heavy_top.toml
   kreisel simulate examples/scenes/heavy_top.toml --explain
+  kreisel simulate examples/scenes/spin_up.toml --columns t,wz,lz,energy
   kreisel simulate --list-methods";
 
 /// Arguments of `kreisel simulate`.
@@ -146,6 +170,10 @@ pub struct SimulateArgs {
     /// Print each body's plan (what it is, which method, why) and exit without running
     #[arg(long)]
     pub explain: bool,
+
+    /// Write only these CSV columns, comma-separated, in this order (see below; adds x,y,z,vx,vy,vz)
+    #[arg(long, value_name = "LIST")]
+    pub columns: Option<String>,
 }
 
 /// Runs `kreisel simulate`.
@@ -164,6 +192,13 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     if let Some(name) = &args.method {
         methods::integrator(name).map_err(|message| CliError::Method { message })?;
     }
+    let columns = match &args.columns {
+        Some(list) => Column::parse_list(list).map_err(|message| CliError::Argument {
+            argument: "--columns".to_owned(),
+            message,
+        })?,
+        None => Column::default_columns(),
+    };
     let text = fs::read_to_string(scene_path).map_err(|source| CliError::ReadScene {
         path: scene_path.clone(),
         source,
@@ -186,7 +221,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         scene.schedule.steps(),
         Progress::wanted(output == Stream::Standard),
     );
-    let mut csv = CsvWriter::new(BufWriter::with_capacity(BUFFER_BYTES, writer))
+    let mut csv = CsvWriter::with_columns(BufWriter::with_capacity(BUFFER_BYTES, writer), columns)
         .map_err(|source| write_error(&output, source))?;
     let simulated = simulate(&mut scene, &mut csv, &mut progress);
     progress.finish();

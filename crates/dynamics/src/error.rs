@@ -143,6 +143,18 @@ pub enum DynamicsError {
         /// Why.
         source: Box<DynamicsError>,
     },
+    /// A free-body method that cannot move a body with applied inputs
+    /// (a [`crate::World`] body with [`crate::Inputs`]): only the
+    /// splittings have a torque kick.
+    #[error(
+        "free-body method `{method}` cannot move a body with applied inputs (methods that can: {known})"
+    )]
+    MethodTakesNoInputs {
+        /// The method's name.
+        method: &'static str,
+        /// The methods that can, comma-separated.
+        known: &'static str,
+    },
     /// A method name that the registry does not know.
     #[error("unknown method `{name}` (known: {known})")]
     UnknownMethod {

@@ -1,6 +1,7 @@
 //! One `[[body]]` of the scene: its inertia (moments, a tensor or a mesh),
-//! initial attitude, spin and support, checked key by key and added to the
-//! scene's [`World`] (which holds the physics).
+//! initial attitude, spin, support and applied inputs (torques, a force,
+//! damping), checked key by key and added to the scene's [`World`] (which
+//! holds the physics).
 
 #![forbid(unsafe_code)]
 
@@ -8,7 +9,7 @@ use std::io::Write;
 use std::path::Path;
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{Body, BodyBuilder, BodyId, DynamicsError, World};
+use kreisel_dynamics::{Body, BodyBuilder, BodyId, DynamicsError, Inputs, World};
 use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
 use kreisel_inertia::{MassProperties, Material};
 use kreisel_kinematics::{EulerSequence, try_normalize_quat};
@@ -17,6 +18,7 @@ use toml::Spanned;
 
 use super::scene::{Keys, SceneFile};
 use crate::error::CliError;
+use crate::numbers::Shortest;
 
 /// A `[[body]]` table as written.
 #[derive(Debug, Deserialize)]
@@ -34,6 +36,10 @@ pub struct RawBody {
     position: Option<Spanned<[f64; 3]>>,
     velocity: Option<Spanned<[f64; 3]>>,
     pivot: Option<Spanned<[f64; 3]>>,
+    torque: Option<Spanned<[f64; 3]>>,
+    torque_body: Option<Spanned<[f64; 3]>>,
+    force: Option<Spanned<[f64; 3]>>,
+    angular_damping: Option<Spanned<f64>>,
 }
 
 /// `euler = { sequence = "ZXZ", angles = [..] }` as written.
@@ -79,12 +85,20 @@ pub fn add_body(
     let omega = keys.vector("angular_velocity", &b.angular_velocity)?;
     let position = optional_vector(&keys, "position", &b.position)?;
     let velocity = optional_vector(&keys, "velocity", &b.velocity)?;
+    let (inputs, first_input) = inputs(&keys, b)?;
     let builder = inertia.builder.world_from_body(attitude).omega_body(omega);
     let builder = match &b.pivot {
         Some(pivot) => {
             if let Some(v) = &b.velocity {
                 let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
                 return Err(keys.fail(v, message));
+            }
+            if let Some((key, span)) = first_input {
+                let message = format!(
+                    "`{key}` cannot be given with `pivot`: torques, forces and damping \
+                     act on free bodies only (for now)"
+                );
+                return Err(keys.fail_at(span, &message));
             }
             builder.pivot(keys.vector("pivot", pivot)?, position)
         }
@@ -95,12 +109,55 @@ pub fn add_body(
         DynamicsError::InvalidState { .. } => state_error(e),
         other => keys.fail_at(inertia.span.clone(), &format!("`{}`: {other}", inertia.key)),
     })?;
+    // Checked above: finite, damping not negative, no pivot.
+    let body = body
+        .with_inputs(inputs)
+        .map_err(|e| keys.fail(raw, &e.to_string()))?;
     let id = world.add(body).map_err(|e| match (e, &b.pivot) {
         (e @ DynamicsError::InvalidState { .. }, _) => state_error(e),
+        (e @ DynamicsError::MethodTakesNoInputs { .. }, None) => match &first_input {
+            Some((key, span)) => keys.fail_at(span.clone(), &format!("`{key}`: {e}")),
+            None => keys.fail(raw, &e.to_string()),
+        },
         (e, Some(pivot)) => keys.fail(pivot, &format!("`pivot`: {e}")),
         (e, None) => keys.fail(raw, &e.to_string()),
     })?;
     Ok((name, id))
+}
+
+/// A key and where it is.
+type KeySpan = (&'static str, std::ops::Range<usize>);
+
+/// The applied inputs from `torque`, `torque_body`, `force` and
+/// `angular_damping` (all zero when absent), and the first of those keys
+/// given with its span.
+fn inputs(keys: &Keys<'_>, b: &RawBody) -> Result<(Inputs, Option<KeySpan>), CliError> {
+    let vectors = [
+        ("torque", &b.torque),
+        ("torque_body", &b.torque_body),
+        ("force", &b.force),
+    ];
+    let mut first = vectors
+        .iter()
+        .find_map(|(key, v)| v.as_ref().map(|v| (*key, v.span())));
+    let [torque, torque_body, force] = vectors.map(|(key, v)| optional_vector(keys, key, v));
+    let mut inputs = Inputs::default()
+        .with_torque_world(torque?)
+        .with_torque_body(torque_body?)
+        .with_force_world(force?);
+    if let Some(c) = &b.angular_damping {
+        let value = *c.get_ref();
+        if !(value.is_finite() && value >= 0.0) {
+            let message = format!(
+                "`angular_damping` must be zero or positive and finite (N m s), got {}",
+                Shortest(value)
+            );
+            return Err(keys.fail(c, &message));
+        }
+        inputs = inputs.with_angular_damping(value);
+        first = first.or(Some(("angular_damping", c.span())));
+    }
+    Ok((inputs, first))
 }
 
 /// The `name`, which must be a plain CSV field.

@@ -8,6 +8,7 @@
 mod divergence;
 mod errors;
 mod heavy_top;
+mod inputs;
 mod output;
 mod physics;
 mod support;

@@ -20,5 +20,6 @@ mod state;
 pub use self::body::ForcedBody;
 pub use self::inputs::{Inputs, Load, LoadFn, PointForce};
 pub use self::propagator::ForcedPropagator;
+pub(crate) use self::propagator::checked_step;
 pub use self::splitting::ForcedSplitting;
 pub use self::state::ForcedState;

@@ -98,32 +98,53 @@ impl<'a> ForcedPropagator<'a> {
         if !(h.is_finite() && h > 0.0) {
             return Err(DynamicsError::InvalidStep { h });
         }
-        let mut next = self.state;
-        self.method.step(self.body, &mut next, self.time, h);
-        let time = self.time + h;
-        let fail = |reason| DynamicsError::Diverged {
-            method: self.method.name(),
-            time,
-            reason,
-        };
-        if !next.is_finite() {
-            return Err(fail(Divergence::NonFinite));
-        }
-        let q_norm = next.rotation.world_from_principal.length();
-        if !(q_norm <= self.q_norm * DIVERGENCE_FACTOR && q_norm >= self.q_norm / DIVERGENCE_FACTOR)
-        {
-            return Err(fail(Divergence::Drift {
-                quantity: "|q|",
-                initial: self.q_norm,
-                current: q_norm,
-            }));
-        }
-        self.state = next;
-        self.time = time;
+        self.state = checked_step(
+            self.method,
+            self.body,
+            &self.state,
+            self.time,
+            h,
+            self.q_norm,
+        )?;
+        self.time += h;
         Ok(())
     }
 }
 
+/// One step of `method` from `(t, state)` by `h`, checked: every number
+/// finite and `|q|` within a factor [`DIVERGENCE_FACTOR`] of `q_norm` (the
+/// checks of [`ForcedPropagator::try_advance`], shared with the world).
+///
+/// # Errors
+/// [`DynamicsError::Diverged`] (at `t + h`) for a state that fails them.
+pub(crate) fn checked_step(
+    method: ForcedSplitting,
+    body: &ForcedBody,
+    state: &ForcedState,
+    t: f64,
+    h: f64,
+    q_norm: f64,
+) -> Result<ForcedState, DynamicsError> {
+    let mut next = *state;
+    method.step(body, &mut next, t, h);
+    let fail = |reason| DynamicsError::Diverged {
+        method: method.name(),
+        time: t + h,
+        reason,
+    };
+    if !next.is_finite() {
+        return Err(fail(Divergence::NonFinite));
+    }
+    let norm = next.rotation.world_from_principal.length();
+    if !(norm <= q_norm * DIVERGENCE_FACTOR && norm >= q_norm / DIVERGENCE_FACTOR) {
+        return Err(fail(Divergence::Drift {
+            quantity: "|q|",
+            initial: q_norm,
+            current: norm,
+        }));
+    }
+    Ok(next)
+}
 impl Propagator for ForcedPropagator<'_> {
     /// One step, unchecked: a step the method cannot take leaves a
     /// non-finite state (see [`ForcedPropagator::try_advance`] for the

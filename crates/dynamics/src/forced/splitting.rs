@@ -76,6 +76,9 @@ pub struct ForcedSplitting {
     coefficients: &'static CompositionCoefficients,
 }
 
+// The coefficients are constants, never NaN: equality is an equivalence.
+impl Eq for ForcedSplitting {}
+
 impl ForcedSplitting {
     /// Strang (`"strang"`), order 2: one drift, two half kicks.
     pub const STRANG: Self = Self {

@@ -4,12 +4,12 @@
 use glam::{DMat3, DQuat, DVec3};
 use kreisel_inertia::MassProperties;
 
-use crate::{DynamicsError, PrincipalState, RigidBody};
+use crate::{DynamicsError, Inputs, PrincipalState, RigidBody};
 
 /// How a body is held.
 ///
-/// Applied torques and forces are not offered yet: they will be a field of
-/// [`Body`] of their own, so that a support stays what holds the body.
+/// Applied torques and forces are not part of the support: they are the
+/// body's [`Inputs`] ([`Body::with_inputs`]), for free bodies only.
 ///
 /// ```
 /// use glam::DVec3;
@@ -21,7 +21,8 @@ use crate::{DynamicsError, PrincipalState, RigidBody};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Support {
     /// Nothing holds it: the centre of mass flies ballistically under the
-    /// world's gravity and the rotation is torque-free.
+    /// world's gravity and the rotation is torque-free — unless the body
+    /// has [`Inputs`] ([`Body::with_inputs`]), which then push and turn it.
     ///
     /// ```text
     /// x(t) = x₀ + v₀ t + ½ g t²,   v(t) = v₀ + g t
@@ -45,7 +46,8 @@ pub enum Support {
 
 /// A rigid body ready to be added to a [`crate::World`]: mass properties
 /// about its centre of mass in body axes, the attitude `world_from_body`,
-/// the angular velocity in body axes, and its [`Support`].
+/// the angular velocity in body axes, its [`Support`] and what is applied
+/// to it ([`Inputs`], none by default).
 ///
 /// Built by [`Body::from_principal_moments`] or
 /// [`Body::from_mass_properties`] (primitives, a tensor, a mesh through
@@ -71,7 +73,15 @@ pub struct Body {
     world_from_body: DQuat,
     omega_body: DVec3,
     support: Support,
+    inputs: Inputs,
 }
+
+/// Inputs on a body with a pivot: the heavy top's splitting has no kick
+/// for them yet.
+pub(super) const PIVOT_INPUTS: DynamicsError = DynamicsError::InvalidBody {
+    field: "inputs",
+    reason: "are not supported on a body with a pivot yet (free bodies only)",
+};
 
 /// Where a body's inertia comes from.
 #[derive(Debug, Clone, Copy)]
@@ -85,7 +95,9 @@ enum Inertia {
 
 /// The settings of a [`Body`] before they are checked
 /// ([`BodyBuilder::try_build`]). Defaults: identity attitude, at rest,
-/// free at the origin.
+/// free at the origin. It is `Copy` (one builder, several bodies); the
+/// inputs, which are not, are given to the built body
+/// ([`Body::with_inputs`]).
 #[derive(Debug, Clone, Copy)]
 #[must_use = "a builder does nothing until try_build"]
 pub struct BodyBuilder {
@@ -206,6 +218,51 @@ impl Body {
     /// ```
     pub fn support(&self) -> Support {
         self.support
+    }
+
+    /// What is applied to the body (torques, forces, damping, a law).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, Inputs};
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).try_build()?.with_inputs(Inputs::default().with_torque_world(glam::DVec3::Z))?;
+    /// assert_eq!(b.inputs().torque_world, glam::DVec3::Z);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn inputs(&self) -> &Inputs {
+        &self.inputs
+    }
+
+    /// This body with torques and forces applied ([`Inputs`]): a
+    /// [`crate::World`] then moves it by a torque splitting
+    /// ([`crate::Plan::Forced`]). Inputs that are all zero change nothing.
+    /// A body on a pivot takes no inputs yet.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidInput`] as [`Inputs::validate`];
+    /// [`DynamicsError::InvalidBody`] (`field: "inputs"`) for nonzero
+    /// inputs on a body with a pivot.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, DynamicsError, Inputs};
+    /// let spun = Inputs::default().with_torque_body(DVec3::Z).with_angular_damping(0.1);
+    /// let b = Body::from_principal_moments(1.0, DVec3::ONE);
+    /// assert_eq!(b.try_build()?.with_inputs(spun.clone())?.inputs().torque_body, DVec3::Z);
+    /// let top = b.pivot(-DVec3::Z, DVec3::ZERO).try_build()?.with_inputs(spun);
+    /// assert!(matches!(top, Err(DynamicsError::InvalidBody { field: "inputs", .. })));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn with_inputs(self, inputs: Inputs) -> Result<Self, DynamicsError> {
+        inputs.validate()?;
+        if !inputs.is_none() && matches!(self.support, Support::Pivot { .. }) {
+            return Err(PIVOT_INPUTS);
+        }
+        Ok(Self { inputs, ..self })
+    }
+
+    /// Replaces the inputs (checked by [`crate::World::set_inputs`]).
+    pub(super) fn set_inputs(&mut self, inputs: Inputs) {
+        self.inputs = inputs;
     }
 }
 
@@ -353,6 +410,7 @@ impl BodyBuilder {
             world_from_body: self.world_from_body,
             omega_body: self.omega_body,
             support: self.support,
+            inputs: Inputs::default(),
         })
     }
 }

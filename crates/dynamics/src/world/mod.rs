@@ -12,7 +12,12 @@
 //! - Bodies under a stepping method (one the user chose, and every heavy
 //!   top) take steps of `dt` on the world's time grid; [`World::step`] takes
 //!   one step of the size asked.
-//! - Every state reached is checked ([`crate::DivergenceCheck`]).
+//! - Free bodies with applied [`crate::Inputs`] take steps of `dt` on the
+//!   same grid by a torque splitting ([`Plan::Forced`]); their centre of
+//!   mass moves with the splitting, and their energy is the mechanical
+//!   energy, whose change is the work of the inputs ([`BodyState`]).
+//! - Every state reached is checked ([`crate::DivergenceCheck`]; for
+//!   forced bodies: finiteness and `|q|`, since energy is not conserved).
 
 mod body;
 mod clock;
@@ -31,8 +36,8 @@ pub use self::state::{BodyId, BodyState};
 use self::clock::Clock;
 use self::plan::Motion;
 use crate::{
-    DivergenceCheck, DynamicsError, FreeBodyMethod, HeavyTop, HeavyTopMethod, PrincipalState,
-    RigidBody,
+    DivergenceCheck, DynamicsError, ForcedBody, ForcedState, FreeBodyMethod, HeavyTop,
+    HeavyTopMethod, PrincipalState, RigidBody,
 };
 
 /// Bodies under gravity, stepped together: the library's engine.
@@ -81,7 +86,8 @@ struct Entry {
     baseline: PrincipalState,
     /// The free body's checks (a heavy top's borrow the top: made per call).
     check: Option<DivergenceCheck<'static>>,
-    /// Centre of mass and velocity at world time `since` (free bodies).
+    /// Centre of mass and velocity at world time `since` (free bodies;
+    /// a forced body's are in its motion, copied here when it is replanned).
     ballistic: (DVec3, DVec3, f64),
 }
 
@@ -137,10 +143,13 @@ impl World {
     }
 
     /// Chooses the free-body method; the bodies' plans are remade from
-    /// their current states.
+    /// their current states. For bodies with applied inputs the method maps
+    /// to a torque splitting ([`Plan::forced_splitting`]).
     ///
     /// # Errors
-    /// The set-up errors of a plan.
+    /// [`DynamicsError::MethodTakesNoInputs`] when a body has inputs and
+    /// the method cannot move it (then nothing changes); the set-up errors
+    /// of a plan.
     ///
     /// ```
     /// use glam::DVec3;
@@ -153,6 +162,13 @@ impl World {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn set_free_body_method(&mut self, method: FreeBodyMethod) -> Result<(), DynamicsError> {
+        if self
+            .entries
+            .iter()
+            .any(|e| e.top.is_none() && !e.body.inputs().is_none())
+        {
+            Plan::forced_splitting(method)?;
+        }
         self.free_method = method;
         self.replan_all()
     }
@@ -257,7 +273,10 @@ impl World {
     /// # Errors
     /// For a body on a pivot, the errors of [`HeavyTop::try_new`] and
     /// [`DynamicsError::InvalidState`] when its spin about the pivot
-    /// overflows; the set-up errors of its plan.
+    /// overflows; for a free body with inputs,
+    /// [`DynamicsError::MethodTakesNoInputs`] when the world's free-body
+    /// method cannot move it and [`DynamicsError::InvalidBodyParameter`]
+    /// for a non-finite gravity term; the set-up errors of its plan.
     ///
     /// ```
     /// use glam::DVec3;
@@ -290,7 +309,7 @@ impl World {
         };
         let state =
             PrincipalState::try_from_omega_body(&rigid, body.world_from_body(), body.omega_body())?;
-        let (plan, motion, check) = self.plan_for(&rigid, top.as_ref(), state)?;
+        let (plan, motion, check) = self.plan_for(&body, &rigid, top.as_ref(), state, ballistic)?;
         self.entries.push(Entry {
             body,
             rigid,
@@ -304,16 +323,33 @@ impl World {
         Ok(BodyId(self.entries.len() - 1))
     }
 
-    /// The plan, the motion and the checks of a body in `state` now.
+    /// The plan, the motion and the checks of a body in `state` now, its
+    /// centre of mass flying from `ballistic`.
     fn plan_for(
         &self,
+        body: &Body,
         rigid: &RigidBody,
         top: Option<&HeavyTop>,
         state: PrincipalState,
+        ballistic: (DVec3, DVec3, f64),
     ) -> Result<(Plan, Motion, Option<DivergenceCheck<'static>>), DynamicsError> {
         Ok(match top {
             Some(_) => {
                 let (plan, motion) = Motion::heavy_top(self.heavy_method, state);
+                (plan, motion, None)
+            }
+            None if !body.inputs().is_none() => {
+                let (x0, v0, since) = ballistic;
+                let (position_world, velocity_world) =
+                    state::ballistic(x0, v0, self.gravity, self.time() - since);
+                let forced =
+                    ForcedBody::try_new(*rigid, body.mass(), self.gravity, body.inputs().clone())?;
+                let start = ForcedState {
+                    rotation: state,
+                    position_world,
+                    velocity_world,
+                };
+                let (plan, motion) = Motion::forced(self.free_method, forced, start)?;
                 (plan, motion, None)
             }
             None => {
@@ -338,15 +374,27 @@ impl World {
 
     /// Gives body `index` the rotational state `state` now and remakes its plan.
     fn replan(&mut self, index: usize, state: PrincipalState) -> Result<(), DynamicsError> {
-        let entry = &self.entries[index];
+        let now = self.time();
+        let entry = &mut self.entries[index];
         state.validate(entry.rigid.principal_moments())?;
-        let (plan, motion, check) = self.plan_for(&entry.rigid, entry.top.as_ref(), state)?;
+        if let Some((_, s)) = entry.motion.forced_state() {
+            entry.ballistic = (s.position_world, s.velocity_world, now);
+        }
+        let entry = &self.entries[index];
+        let (plan, motion, check) = self.plan_for(
+            &entry.body,
+            &entry.rigid,
+            entry.top.as_ref(),
+            state,
+            entry.ballistic,
+        )?;
         let entry = &mut self.entries[index];
         (entry.plan, entry.motion, entry.check, entry.baseline) = (plan, motion, check, state);
         Ok(())
     }
 
-    /// The body `id` as it was added.
+    /// The body `id` as it was added (with the inputs of the last
+    /// [`World::set_inputs`]).
     ///
     /// ```
     /// # use kreisel_dynamics::{Body, World};

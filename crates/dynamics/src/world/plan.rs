@@ -9,6 +9,7 @@
 //! free, three distinct moments        asymmetric:  Jacobi elliptic functions, evaluated where asked
 //! free, a stepping method chosen      stepping:    the method, every dt
 //! pivot                               heavy top:   the heavy-top method, every dt (auto sub-steps)
+//! free, with applied inputs           forced:      a torque splitting, every dt
 //! ```
 
 use std::fmt;
@@ -17,16 +18,16 @@ use super::registry;
 use crate::elliptic::dd::Dd;
 use crate::exact::ExactKind;
 use crate::{
-    DivergenceCheck, DynamicsError, ExactSolution, FreeBodyMethod, HeavyTopMethod, PrincipalState,
-    Propagator,
+    DivergenceCheck, DynamicsError, ExactSolution, ForcedBody, ForcedSplitting, ForcedState,
+    FreeBodyMethod, HeavyTopMethod, PrincipalState, Propagator,
 };
 
 /// What a body of a [`crate::World`] is and how it is moved (see
 /// [`crate::World::plans`]). Its [`Display`](fmt::Display) says what the
 /// body is, which method and why.
 ///
-/// Torques and forces are not offered yet; a plan for them will be a new
-/// variant (the enum is `non_exhaustive`).
+/// A free body with applied [`crate::Inputs`] is [`Plan::Forced`]; the
+/// enum is `non_exhaustive`.
 ///
 /// ```
 /// use glam::DVec3;
@@ -66,6 +67,15 @@ pub enum Plan {
     /// A body on a pivot under gravity, moved by the heavy-top method
     /// every `dt`.
     HeavyTop(HeavyTopMethod),
+    /// A free body with applied inputs (torques, forces, damping, a law),
+    /// moved by the kick–drift–kick splitting `method` every `dt`: the
+    /// free flow alternates with exact kicks of the loads
+    /// ([`ForcedSplitting`]). The free-body method chosen maps to it
+    /// ([`Plan::forced_splitting`]).
+    Forced {
+        /// The splitting.
+        method: ForcedSplitting,
+    },
 }
 
 impl Plan {
@@ -86,6 +96,46 @@ impl Plan {
                 | Plan::Symmetric { .. }
                 | Plan::Asymmetric
         )
+    }
+}
+
+/// The free-body methods that can move a body with applied inputs.
+const TAKES_INPUTS: &str = "auto, strang, splitting4, splitting6, splitting8";
+
+impl Plan {
+    /// The torque splitting that free-body method `method` means for a body
+    /// with applied inputs.
+    ///
+    /// ```text
+    /// auto → splitting6 (ForcedSplitting::DEFAULT),  strang → strang,
+    /// splitting4 → splitting4,  splitting6 → splitting6,  splitting8 → splitting8
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::MethodTakesNoInputs`] for every other method (no
+    /// torque kick: the exact solution, RK4, the axis splittings, the
+    /// Moser–Veselov family).
+    ///
+    /// ```
+    /// use kreisel_dynamics::{ForcedSplitting, FreeBodyMethod, Plan};
+    /// assert_eq!(Plan::forced_splitting(FreeBodyMethod::Auto)?, ForcedSplitting::DEFAULT);
+    /// assert_eq!(Plan::forced_splitting(FreeBodyMethod::Strang)?, ForcedSplitting::STRANG);
+    /// let e = Plan::forced_splitting(FreeBodyMethod::Pdmv6).unwrap_err();
+    /// assert_eq!(e.to_string(), "free-body method `pdmv6` cannot move a body with applied inputs (methods that can: auto, strang, splitting4, splitting6, splitting8)");
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn forced_splitting(method: FreeBodyMethod) -> Result<ForcedSplitting, DynamicsError> {
+        match method {
+            FreeBodyMethod::Auto => Ok(ForcedSplitting::DEFAULT),
+            FreeBodyMethod::Strang => Ok(ForcedSplitting::STRANG),
+            FreeBodyMethod::Splitting4 => Ok(ForcedSplitting::ORDER_4),
+            FreeBodyMethod::Splitting6 => Ok(ForcedSplitting::ORDER_6),
+            FreeBodyMethod::Splitting8 => Ok(ForcedSplitting::ORDER_8),
+            other => Err(DynamicsError::MethodTakesNoInputs {
+                method: registry::free_body(other).name(),
+                known: TAKES_INPUTS,
+            }),
+        }
     }
 }
 
@@ -132,6 +182,12 @@ impl fmt::Display for Plan {
                 }
                 write!(f, ") every dt (gravity exerts a torque about the pivot)")
             }
+            Plan::Forced { method } => write!(
+                f,
+                "forced free body: {} (order {}) every dt, kick-drift-kick splitting of the free flow and exact kicks of the loads (torques, forces or damping are applied)",
+                method.name(),
+                method.order()
+            ),
         }
     }
 }
@@ -155,6 +211,14 @@ pub(crate) enum Motion {
     Stepping(Box<dyn Propagator>),
     /// A heavy top: its state, stepped by the world's heavy-top method.
     HeavyTop(PrincipalState),
+    /// A free body under inputs: the splitting, the body with its loads,
+    /// the state, and `|q|` when the plan was made (the checks' reference).
+    Forced {
+        method: ForcedSplitting,
+        body: Box<ForcedBody>,
+        state: ForcedState,
+        q_norm: f64,
+    },
 }
 
 impl fmt::Debug for Motion {
@@ -217,12 +281,37 @@ impl Motion {
         (Plan::HeavyTop(method), Motion::HeavyTop(state))
     }
 
+    /// The plan and motion of a free body under inputs.
+    pub(crate) fn forced(
+        method: FreeBodyMethod,
+        body: ForcedBody,
+        state: ForcedState,
+    ) -> Result<(Plan, Motion), DynamicsError> {
+        let method = Plan::forced_splitting(method)?;
+        let motion = Motion::Forced {
+            method,
+            body: Box::new(body),
+            q_norm: state.rotation.world_from_principal.length(),
+            state,
+        };
+        Ok((Plan::Forced { method }, motion))
+    }
+
     /// The current state.
     pub(crate) fn state(&self) -> PrincipalState {
         match self {
             Motion::Resting { state, .. } | Motion::HeavyTop(state) => *state,
             Motion::Exact { state, .. } => *state,
             Motion::Stepping(propagator) => propagator.state(),
+            Motion::Forced { state, .. } => state.rotation,
+        }
+    }
+
+    /// A forced body's state and body (`None` for the other motions).
+    pub(crate) fn forced_state(&self) -> Option<(&ForcedBody, &ForcedState)> {
+        match self {
+            Motion::Forced { body, state, .. } => Some((body, state)),
+            _ => None,
         }
     }
 

@@ -3,8 +3,10 @@
 
 use glam::{DQuat, DVec3};
 
+use super::body::PIVOT_INPUTS;
+use super::plan::Motion;
 use super::{BodyId, Entry, World};
-use crate::{DynamicsError, PrincipalState};
+use crate::{DynamicsError, Inputs, PrincipalState};
 
 impl World {
     /// The entry of `id`, or [`DynamicsError::UnknownBody`].
@@ -147,7 +149,58 @@ impl World {
             return Err(DynamicsError::InvalidBody { field, reason });
         }
         let now = self.time();
-        self.entries[id.0].ballistic = (position, velocity, now);
+        let entry = &mut self.entries[id.0];
+        entry.ballistic = (position, velocity, now);
+        if let Motion::Forced { state, .. } = &mut entry.motion {
+            (state.position_world, state.velocity_world) = (position, velocity);
+        }
         Ok(())
+    }
+
+    /// Replaces what is applied to body `id` from now on (a controller's
+    /// new command, a motor switched on or off); its plan is remade from
+    /// its current state: nonzero inputs give [`crate::Plan::Forced`],
+    /// inputs all zero the torque-free plan.
+    ///
+    /// # Errors
+    /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidInput`] as
+    /// [`Inputs::validate`]; [`DynamicsError::InvalidBody`] for inputs on a
+    /// body with a pivot (not supported yet);
+    /// [`DynamicsError::MethodTakesNoInputs`] when the world's free-body
+    /// method cannot move a body with inputs. On an error nothing changes.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, ForcedSplitting, Inputs, Plan, World};
+    /// let mut world = World::try_new(DVec3::ZERO, 0.01)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::ONE).omega_body(DVec3::Z).try_build()?)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Sphere));
+    /// world.set_inputs(id, Inputs::default().with_torque_world(DVec3::Z))?; // a motor on
+    /// assert_eq!(world.plan(id), Some(&Plan::Forced { method: ForcedSplitting::DEFAULT }));
+    /// world.advance_to(1.0)?;
+    /// // L = L₀ + τ t, to the rounding of 900 kicks (2e-14 measured).
+    /// let error = (world.state(id).unwrap().l_world - 2.0 * DVec3::Z).length();
+    /// assert!(error < 1e-13, "{error:e}");
+    /// world.set_inputs(id, Inputs::default())?; // and off
+    /// assert_eq!(world.plan(id), Some(&Plan::Sphere));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_inputs(&mut self, id: BodyId, inputs: Inputs) -> Result<(), DynamicsError> {
+        let entry = self.entry(id)?;
+        inputs.validate()?;
+        if !inputs.is_none() {
+            if entry.top.is_some() {
+                return Err(PIVOT_INPUTS);
+            }
+            super::Plan::forced_splitting(self.free_body_method())?;
+        }
+        let state = entry.motion.state();
+        let previous = entry.body.inputs().clone();
+        self.entries[id.0].body.set_inputs(inputs);
+        let replanned = self.replan(id.0, state);
+        if replanned.is_err() {
+            self.entries[id.0].body.set_inputs(previous);
+        }
+        replanned
     }
 }

@@ -40,7 +40,13 @@ impl BodyId {
 /// ```text
 /// free:   energy = ½ L·I⁻¹L + ½ m |v|² − m g·x,    l_world about the centre of mass
 /// pivot:  energy = ½ L·J⁻¹L − m g·(p + R c),     l_world about the pivot p (J about it)
+/// forced: energy = ½ L·I⁻¹L + ½ m |v|² − m g·x,    x, v from the splitting
 /// ```
+///
+/// For a body with applied inputs ([`crate::Plan::Forced`]) the energy is
+/// the mechanical energy ([`crate::ForcedBody::mechanical_energy`]): not
+/// conserved, its change from `t₀` to `t` is the work of the inputs
+/// (damping included), `∫ (τ·ω + F·v) dt`, to the method's accuracy.
 ///
 /// ```
 /// use glam::DVec3;
@@ -86,13 +92,20 @@ impl World {
         let state = entry.motion.state();
         let world_from_body = state.world_from_body(&entry.rigid);
         let (mass, g, time) = (entry.body.mass(), self.gravity, self.time());
-        let (energy, position, velocity) = match (&entry.top, entry.body.support()) {
+        let forced = entry.motion.forced_state();
+        let (energy, position, velocity) = match (&entry.top, entry.body.support(), forced) {
+            (_, _, Some((body, s))) => (
+                body.mechanical_energy(s),
+                s.position_world,
+                s.velocity_world,
+            ),
             (
                 Some(top),
                 Support::Pivot {
                     pivot_body,
                     pivot_world,
                 },
+                None,
             ) => {
                 let c = entry.body.mass_properties().center_of_mass - pivot_body;
                 let arm = world_from_body.normalize() * c;
@@ -123,7 +136,9 @@ impl World {
     /// Whether body `id`'s energy and the motion of its centre of mass stay
     /// finite from now until `until` (s), checked at both ends: `|v|²` is
     /// convex in `t`, and `−g·x` is concave with its largest value at most
-    /// `|v₀|²/2` per kg above the one now. `false` for an unknown id.
+    /// `|v₀|²/2` per kg above the one now. For a body on a pivot or with
+    /// applied inputs, whose motion no formula foresees: whether its energy
+    /// now is finite. `false` for an unknown id.
     ///
     /// ```
     /// # use kreisel_dynamics::{Body, World};
@@ -141,7 +156,8 @@ impl World {
         let Some(now) = self.state(id) else {
             return false;
         };
-        if entry.top.is_some() {
+        if entry.top.is_some() || entry.motion.forced_state().is_some() {
+            // A pivot, or loads no formula foresees: only now is known.
             return now.energy.is_finite();
         }
         let (x0, v0, since) = entry.ballistic;
@@ -160,6 +176,6 @@ impl World {
 /// ```text
 /// x(t) = x₀ + v₀ t + ½ g t²,   v(t) = v₀ + g t
 /// ```
-fn ballistic(x0: DVec3, v0: DVec3, g: DVec3, t: f64) -> (DVec3, DVec3) {
+pub(super) fn ballistic(x0: DVec3, v0: DVec3, g: DVec3, t: f64) -> (DVec3, DVec3) {
     (x0 + v0 * t + g * (0.5 * t * t), v0 + g * t)
 }

@@ -1,11 +1,14 @@
 //! Moving a [`World`] forward: one step for a game loop, whole steps of
 //! `dt`, or up to a time on the grid of `kreisel simulate`; every state
-//! reached is checked.
+//! reached is checked. Forced bodies ([`crate::Plan::Forced`]) step like
+//! the stepping methods: the step from grid time `t` by `h` is
+//! [`crate::ForcedSplitting::step`] at `t` with the checks of
+//! [`crate::ForcedPropagator::try_advance`].
 
 use super::clock::Route;
 use super::plan::Motion;
 use super::{World, registry};
-use crate::{DivergenceCheck, DynamicsError};
+use crate::{DivergenceCheck, DynamicsError, forced};
 
 /// The first failure of a run: step number, body, error.
 type Failure = (u64, usize, DynamicsError);
@@ -145,6 +148,21 @@ impl World {
                             Some(c) => c.check(&propagator.state(), time_of(k)),
                             None => Ok(()),
                         }
+                    };
+                    walk(&route, dt, &mut step)
+                }
+                Motion::Forced {
+                    method,
+                    body,
+                    state,
+                    q_norm,
+                } => {
+                    // Step k starts at the grid time of step k − 1 (loads
+                    // that read the time see the world's clock).
+                    let mut step = |k: u64, h: f64| {
+                        let t = if k == 1 { clock.time() } else { time_of(k - 1) };
+                        *state = forced::checked_step(*method, body, state, t, h, *q_norm)?;
+                        Ok(())
                     };
                     walk(&route, dt, &mut step)
                 }
