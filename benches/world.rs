@@ -15,7 +15,8 @@
 //!    so 1/throughput is the time per body-step. One kreisel iteration is
 //!    the whole 100 s (100 `advance_to` and 100 reads of every body); one
 //!    rapier iteration is 1 s (60 steps and one read of every body), since
-//!    its 100 s take tens of seconds.
+//!    its 100 s take tens of seconds. `kreisel_advance_to_unread`: the
+//!    same 100 `advance_to` without the reads (the World's own work).
 //! 2. `world_setup_10k`: making the world of 10⁴ asymmetric bodies (one
 //!    exact solution per body, outside the timings of 1), per body.
 //! 3. `world_step_1_60_1k`: the game pattern, `World::step(1/60)` once per
@@ -231,7 +232,8 @@ fn read_all(world: &World, ids: &[BodyId]) -> f64 {
         .sum()
 }
 
-/// `seconds` more seconds, every state read after each one.
+/// `seconds` more seconds, every state read after each one (none when
+/// `ids` is empty).
 fn simulate(world: &mut World, ids: &[BodyId], seconds: usize) -> f64 {
     let t0 = world.time();
     let mut sum = 0.0;
@@ -239,7 +241,7 @@ fn simulate(world: &mut World, ids: &[BodyId], seconds: usize) -> f64 {
         world.advance_to(t0 + s as f64).expect("no divergence");
         sum += read_all(world, ids);
     }
-    sum
+    sum + world.time()
 }
 
 fn rapier_states(specs: &[Spec]) -> Vec<(DVec3, DQuat, DVec3)> {
@@ -381,6 +383,11 @@ fn simulation(c: &mut Criterion) {
         let (mut world, ids) = auto_world(kind, n);
         group.bench_function(BenchmarkId::new("kreisel_advance_to", kind.name()), |b| {
             b.iter(|| black_box(simulate(&mut world, &ids, scale.seconds)))
+        });
+        // The same 100 advance_to without the reads: the World's own work.
+        let id = BenchmarkId::new("kreisel_advance_to_unread", kind.name());
+        group.bench_function(id, |b| {
+            b.iter(|| black_box(simulate(&mut world, &[], scale.seconds)))
         });
     }
     let mut rapier =
