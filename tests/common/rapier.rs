@@ -5,8 +5,8 @@
 //! one thread, and read back as glam `DQuat`/`DVec3`.
 //!
 //! Used by `tests/rapier_cross_check.rs` (`cargo test --test
-//! rapier_cross_check -- --nocapture`), `benches/free_body.rs` and
-//! `examples/free_body_work_precision.rs`, which include it with
+//! rapier_cross_check -- --nocapture`), `benches/free_body.rs`,
+//! `benches/world.rs` and `examples/free_body_work_precision.rs`, which include it with
 //! `#[path = "…/common/rapier.rs"] mod rapier;`.
 //!
 //! What rapier 0.36 does per step of size `dt` (read from its source:
@@ -36,11 +36,12 @@ use rapier3d_f64::prelude::{
     MassProperties, PhysicsWorld, Pose, RigidBodyBuilder, RigidBodyHandle, Rotation, Vector,
 };
 
-/// `n` identical free bodies in one rapier world.
+/// Free bodies in one rapier world.
 pub struct RapierBodies {
     world: PhysicsWorld,
     handles: Vec<RigidBodyHandle>,
-    moments: DVec3,
+    /// Principal moments of each body.
+    moments: Vec<DVec3>,
 }
 
 fn to_rapier_vec(v: DVec3) -> Vector {
@@ -77,35 +78,47 @@ impl RapierBodies {
         n: usize,
     ) -> Self {
         assert!(n > 0, "at least one body");
-        let omega_principal = l_principal / moments;
-        // rapier's per-step clamp (`MAX_ROTATION = π/4` per full step):
-        // |ω|² = Σ Lₖ²/Iₖ² ≤ (Σ Lₖ²/Iₖ)/I_min = 2E/I_min all along the motion.
-        let omega_max =
-            ((l_principal * omega_principal).element_sum() / moments.min_element()).sqrt();
-        assert!(
-            omega_max * dt < std::f64::consts::FRAC_PI_4,
-            "rapier would clamp |ω| at dt = {dt}"
-        );
+        Self::from_states(&vec![(moments, world_from_principal, l_principal); n], dt)
+    }
+
+    /// A world of one body per entry `(moments, world_from_principal,
+    /// l_principal)` (unit mass), stepped with `dt`.
+    ///
+    /// # Panics
+    /// If `|ω| dt ≥ π/4` for a body (rapier would clamp ω).
+    pub fn from_states(bodies: &[(DVec3, DQuat, DVec3)], dt: f64) -> Self {
         let mut world = PhysicsWorld::new();
         world.gravity = Vector::ZERO;
         world.integration_parameters.dt = dt;
         world.integration_parameters.max_ccd_substeps = 0;
-        let mprops = MassProperties::with_principal_inertia_frame(
-            Vector::ZERO,
-            1.0,
-            to_rapier_vec(moments),
-            Rotation::IDENTITY,
-        );
-        let q = to_rapier_rot(world_from_principal);
-        let angvel = to_rapier_vec(world_from_principal * omega_principal);
-        let handles = (0..n)
-            .map(|i| {
+        let handles = bodies
+            .iter()
+            .enumerate()
+            .map(|(i, &(moments, world_from_principal, l_principal))| {
+                let omega_principal = l_principal / moments;
+                // rapier's per-step clamp (`MAX_ROTATION = π/4` per full step):
+                // |ω|² = Σ Lₖ²/Iₖ² ≤ (Σ Lₖ²/Iₖ)/I_min = 2E/I_min all along the motion.
+                let omega_max =
+                    ((l_principal * omega_principal).element_sum() / moments.min_element()).sqrt();
+                assert!(
+                    omega_max * dt < std::f64::consts::FRAC_PI_4,
+                    "rapier would clamp |ω| at dt = {dt}"
+                );
+                let mprops = MassProperties::with_principal_inertia_frame(
+                    Vector::ZERO,
+                    1.0,
+                    to_rapier_vec(moments),
+                    Rotation::IDENTITY,
+                );
                 // Spread the bodies out (no colliders, so nothing interacts).
                 let translation = Vector::new(3.0 * i as f64, 0.0, 0.0);
                 world.insert_body(
                     RigidBodyBuilder::dynamic()
-                        .pose(Pose::from_parts(translation, q))
-                        .angvel(angvel)
+                        .pose(Pose::from_parts(
+                            translation,
+                            to_rapier_rot(world_from_principal),
+                        ))
+                        .angvel(to_rapier_vec(world_from_principal * omega_principal))
                         .additional_mass_properties(mprops)
                         .gravity_scale(0.0)
                         .linear_damping(0.0)
@@ -118,7 +131,7 @@ impl RapierBodies {
         RapierBodies {
             world,
             handles,
-            moments,
+            moments: bodies.iter().map(|b| b.0).collect(),
         }
     }
 
@@ -166,7 +179,7 @@ impl RapierBodies {
 
     /// Body-frame angular momentum `L = I ω` of body `i`.
     pub fn l_principal(&self, i: usize) -> DVec3 {
-        self.moments * self.omega_principal(i)
+        self.moments[i] * self.omega_principal(i)
     }
 
     /// (attitude, body-frame L) of body `i`.
