@@ -318,7 +318,6 @@ fn rendered_frames(duration: f64, width: usize) -> Vec<Vec<u32>> {
     use demo::frame::{FrameRenderer, Overlay, STRIP_SAMPLE_INTERVAL, STRIP_WINDOW};
     use demo::physics::{Handle, Prediction, Simulation, Spin, SpinAxis};
     let handle = Handle::load(Path::new(demo::options::DEFAULT_MESH), 7850.0).unwrap();
-    let method = kreisel::dynamics::method("auto").unwrap();
     let spin = Spin {
         axis: SpinAxis::Intermediate,
         rate: std::f64::consts::TAU,
@@ -326,7 +325,8 @@ fn rendered_frames(duration: f64, width: usize) -> Vec<Vec<u32>> {
     };
     let prediction = Prediction::new(handle.moments(), &spin);
     let dt = 1e-3;
-    let mut sim = Simulation::new(method.as_ref(), handle.body, &spin, dt);
+    let method = kreisel::dynamics::FreeBodyMethod::Auto;
+    let mut sim = Simulation::new(method, &handle, &spin, dt).unwrap();
     let mut renderer = FrameRenderer::new(
         width,
         width / 2,
@@ -339,7 +339,7 @@ fn rendered_frames(duration: f64, width: usize) -> Vec<Vec<u32>> {
     let mut frames = Vec::new();
     for i in 0..=(duration / dt).round() as u64 {
         if i > 0 {
-            sim.step();
+            sim.step().unwrap();
         }
         let t = sim.time();
         if t + 0.5 * dt >= next_sample {

@@ -48,7 +48,7 @@ pub struct Overlay {
 impl Overlay {
     /// Time, flips and flip periods of `sim`, and for the window its speed
     /// and the keys.
-    pub fn of(sim: &Simulation<'_>, prediction: &Prediction, live: Option<LiveStatus>) -> Self {
+    pub fn of(sim: &Simulation, prediction: &Prediction, live: Option<LiveStatus>) -> Self {
         let mut lines = vec![format!("t = {:.2} s", sim.time())];
         let flips = sim.flips.len();
         lines.push(
@@ -139,7 +139,7 @@ impl FrameRenderer {
     pub fn draw(
         &mut self,
         handle: &Handle,
-        sim: &Simulation<'_>,
+        sim: &Simulation,
         strip: &History,
         overlay: &Overlay,
     ) -> Result<&Image, PlotError> {
@@ -204,9 +204,9 @@ impl FrameRenderer {
 
     /// The shaded handle, its principal axes (labelled 1, 2, 3), the fixed
     /// L along world z and the instantaneous ω, with their labels in `fig`.
-    fn draw_body(&mut self, handle: &Handle, sim: &Simulation<'_>, fig: &mut Figure, scale: f64) {
+    fn draw_body(&mut self, handle: &Handle, sim: &Simulation, fig: &mut Figure, scale: f64) {
         let state = sim.state();
-        let world_from_body = state.world_from_body(&handle.body);
+        let world_from_body = state.world_from_body;
         let vertices: Vec<DVec3> = handle
             .vertices_body
             .iter()
@@ -232,7 +232,7 @@ impl FrameRenderer {
         );
         let mut labels = Vec::new();
         for (k, color) in AXIS_COLORS.iter().enumerate() {
-            let axis = state.world_from_principal * DVec3::AXES[k];
+            let axis = world_from_body * handle.principal_axis_body(k);
             let tip = 1.15 * r * axis;
             self.renderer.draw_line(
                 &mut self.image,
@@ -255,7 +255,7 @@ impl FrameRenderer {
             to_u32(L_COLOR),
         );
         labels.push((1.48 * r * DVec3::Z, "L", L_COLOR));
-        let omega_world = state.world_from_principal * sim.omega_principal();
+        let omega_world = world_from_body * state.omega_body;
         let omega_tip = 1.1 * r * omega_world / self.omega_reference;
         self.renderer.draw_arrow(
             &mut self.image,

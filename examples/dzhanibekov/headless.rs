@@ -5,7 +5,7 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-use kreisel::dynamics::FreeBodyIntegrator;
+use kreisel::dynamics::FreeBodyMethod;
 use kreisel_plot::ImageFormat;
 
 use super::chart::{History, OmegaData, omega_figure};
@@ -27,7 +27,7 @@ const PLOT_SAMPLES: u64 = 20_000;
 pub fn run(
     options: &Options,
     handle: &Handle,
-    method: &dyn FreeBodyIntegrator,
+    method: FreeBodyMethod,
     out: &mut dyn Write,
 ) -> Result<(), DemoError> {
     // Refuse an unknown plot format before spending the run on it.
@@ -46,7 +46,7 @@ pub fn run(
     let duration = options.duration.unwrap_or(HEADLESS_DURATION);
     let spin = options.spin();
     let prediction = Prediction::new(handle.moments(), &spin);
-    let mut sim = Simulation::new(method, handle.body, &spin, options.dt);
+    let mut sim = Simulation::new(method, handle, &spin, options.dt)?;
     let steps = (duration / options.dt).round().max(1.0) as u64;
     let record_every = (steps / PLOT_SAMPLES).max(1);
     let mut full = History::new(None);
@@ -62,10 +62,16 @@ pub fn run(
             g.observe(&sim, handle, &prediction)?;
         }
         if i < steps {
-            sim.step();
+            sim.step()?;
         }
     }
-    for line in result_lines(&sim, &prediction, &spin, method.name(), options.dt) {
+    for line in result_lines(
+        &sim,
+        &prediction,
+        &spin,
+        method.resolve().name(),
+        options.dt,
+    ) {
         writeln!(out, "{line}")?;
     }
     if let (Some(path), Some(g)) = (&options.gif, gif) {
@@ -179,7 +185,7 @@ impl GifRecorder {
     /// Samples the strip chart and renders a frame when one is due.
     fn observe(
         &mut self,
-        sim: &Simulation<'_>,
+        sim: &Simulation,
         handle: &Handle,
         prediction: &Prediction,
     ) -> Result<(), DemoError> {

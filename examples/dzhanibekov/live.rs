@@ -11,7 +11,7 @@ use std::net::{TcpStream, ToSocketAddrs};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use kreisel::dynamics::FreeBodyIntegrator;
+use kreisel::dynamics::FreeBodyMethod;
 use minifb::{Key, KeyRepeat, Window, WindowOptions};
 
 use super::DemoError;
@@ -140,39 +140,45 @@ impl Controls {
 }
 
 /// One run of the simulation, from a (re)start to the next.
-struct Run<'a> {
+struct Run {
     spin: Spin,
     prediction: Prediction,
-    sim: Simulation<'a>,
+    sim: Simulation,
     strip: History,
     next_sample: f64,
 }
 
-impl<'a> Run<'a> {
-    fn new(method: &'a dyn FreeBodyIntegrator, handle: &Handle, spin: Spin, dt: f64) -> Self {
-        let sim = Simulation::new(method, handle.body, &spin, dt);
+impl Run {
+    fn new(
+        method: FreeBodyMethod,
+        handle: &Handle,
+        spin: Spin,
+        dt: f64,
+    ) -> Result<Self, DemoError> {
+        let sim = Simulation::new(method, handle, &spin, dt)?;
         let mut strip = History::new(Some(STRIP_WINDOW));
         strip.push(0.0, sim.omega_principal());
-        Self {
+        Ok(Self {
             spin,
             prediction: Prediction::new(handle.moments(), &spin),
             sim,
             strip,
             next_sample: STRIP_SAMPLE_INTERVAL,
-        }
+        })
     }
 
     /// Steps while at least one step of simulated time is owed.
-    fn advance(&mut self, owed: &mut f64) {
+    fn advance(&mut self, owed: &mut f64) -> Result<(), DemoError> {
         let dt = self.sim.dt();
         while *owed >= dt {
-            self.sim.step();
+            self.sim.step()?;
             *owed -= dt;
             if self.sim.time() >= self.next_sample {
                 self.strip.push(self.sim.time(), self.sim.omega_principal());
                 self.next_sample += STRIP_SAMPLE_INTERVAL;
             }
         }
+        Ok(())
     }
 
     /// Prints what this run measured.
@@ -202,7 +208,7 @@ impl<'a> Run<'a> {
 pub fn run(
     options: &Options,
     handle: &Handle,
-    method: &dyn FreeBodyIntegrator,
+    method: FreeBodyMethod,
     out: &mut dyn Write,
 ) -> Result<Outcome, DemoError> {
     let mut window = match open_window() {
@@ -224,7 +230,7 @@ pub fn run(
         controls.spin.rate,
         bound(&controls.spin),
     );
-    let mut run = Run::new(method, handle, controls.spin, options.dt);
+    let mut run = Run::new(method, handle, controls.spin, options.dt)?;
     let mut owed = 0.0;
     let mut last = Instant::now();
     while window.is_open() {
@@ -241,7 +247,7 @@ pub fn run(
             break;
         }
         if restart {
-            run.report(method.name(), out)?;
+            run.report(method.resolve().name(), out)?;
             writeln!(out, "restart")?;
             for line in setup_lines(handle, &options.mesh, options.density, &controls.spin)
                 .into_iter()
@@ -249,7 +255,7 @@ pub fn run(
             {
                 writeln!(out, "{line}")?;
             }
-            run = Run::new(method, handle, controls.spin, options.dt);
+            run = Run::new(method, handle, controls.spin, options.dt)?;
             renderer.set_scales(controls.spin.rate, bound(&controls.spin));
             owed = 0.0;
         }
@@ -258,7 +264,7 @@ pub fn run(
         last = now;
         if !controls.paused {
             owed += wall * controls.speed;
-            run.advance(&mut owed);
+            run.advance(&mut owed)?;
         }
         if options.duration.is_some_and(|d| run.sim.time() >= d) {
             break;
@@ -274,7 +280,7 @@ pub fn run(
             break;
         }
     }
-    run.report(method.name(), out)?;
+    run.report(method.resolve().name(), out)?;
     Ok(Outcome::Closed)
 }
 

@@ -27,9 +27,10 @@
 //! `flip period: predicted X s, simulated Y s` — X from
 //! [`kreisel::dynamics::elliptic_motion`], Y the mean interval between the
 //! simulated sign changes of ω along the spin axis — and the drift of the
-//! energy and of |L|. The simulation is the library's free-body method
-//! (`--method`, default `auto`: the exact solution), stepped by `--dt`,
-//! exactly as `kreisel simulate` steps it.
+//! energy and of |L|. The simulation is the library's
+//! [`kreisel::dynamics::World`] holding the handle as one body, moved by
+//! the free-body method `--method` (default `auto`: the exact solution) in
+//! steps of `--dt`; the demo only observes the states it reports.
 
 use std::ffi::OsString;
 use std::io::Write;
@@ -150,14 +151,14 @@ where
     };
     options.validate()?;
     let handle = Handle::load(&options.mesh, options.density)?;
-    let method = kreisel::dynamics::method(&options.method)?;
+    let method: kreisel::dynamics::FreeBodyMethod = options.method.parse()?;
     for line in report::setup_lines(&handle, &options.mesh, options.density, &options.spin()) {
         writeln!(out, "{line}")?;
     }
     let files = options.gif.is_some() || options.plot.is_some();
     if !options.headless && !files {
         match live::display_available(display.as_deref()) {
-            Ok(()) => match live::run(&options, &handle, method.as_ref(), out)? {
+            Ok(()) => match live::run(&options, &handle, method, out)? {
                 live::Outcome::Closed => return Ok(()),
                 live::Outcome::NoWindow(reason) => {
                     writeln!(out, "no window ({reason}): running headless")?;
@@ -166,7 +167,7 @@ where
             Err(reason) => writeln!(out, "no display ({reason}): running headless")?,
         }
     }
-    headless::run(&options, &handle, method.as_ref(), out)
+    headless::run(&options, &handle, method, out)
 }
 
 fn main() -> ExitCode {

@@ -1,7 +1,7 @@
 //! The physics of the demo: the handle's mass properties from its mesh, the
-//! initial spin, the simulation (any registered free-body method, stepped
-//! like `kreisel simulate` steps it), the flips it shows and what theory
-//! predicts for them.
+//! initial spin, the simulation (the handle as one body of a library
+//! [`World`], moved by any free-body method the world knows; the demo only
+//! observes it), the flips it shows and what theory predicts for them.
 //!
 //! Axes are numbered by size of moment, as in notes §3.7: 1 the minor,
 //! 2 the intermediate, 3 the major principal axis (`I₁ < I₂ < I₃`).
@@ -10,8 +10,8 @@ use std::path::Path;
 
 use glam::{DQuat, DVec3};
 use kreisel::dynamics::{
-    AxisStability, EllipticMotion, FreeBodyIntegrator, PrincipalState, Propagator, RigidBody,
-    axis_stability, elliptic_motion,
+    AxisStability, Body, BodyId, BodyState, EllipticMotion, FreeBodyMethod, PrincipalState,
+    RigidBody, World, axis_stability, elliptic_motion,
 };
 use kreisel::inertia::io::SolidOptions;
 use kreisel::inertia::{MassProperties, Material};
@@ -199,17 +199,19 @@ impl Prediction {
     }
 }
 
-/// A running simulation: the state advanced by fixed steps of one
-/// registered method, the flips seen so far, and the drift of the
-/// invariants.
-pub struct Simulation<'a> {
-    method: &'a dyn FreeBodyIntegrator,
+/// A running simulation: the handle as one body of a [`World`] (its mass
+/// properties, the thrown spin, the free-body method chosen), advanced by
+/// the world's `step(dt)`; the flips seen so far and the drift of the
+/// invariants are observed from the world's state after each step.
+pub struct Simulation {
+    world: World,
+    id: BodyId,
+    body: Body,
+    method: FreeBodyMethod,
     rigid: RigidBody,
     axis: usize,
     dt: f64,
-    body: Box<dyn Propagator + 'a>,
-    previous: PrincipalState,
-    steps: u64,
+    previous: BodyState,
     energy0: f64,
     l0: f64,
     l_world0: DVec3,
@@ -223,32 +225,48 @@ pub struct Simulation<'a> {
     pub l_world_drift: f64,
 }
 
-impl<'a> Simulation<'a> {
-    /// Starts at t = 0 from `spin`.
-    pub fn new(method: &'a dyn FreeBodyIntegrator, rigid: RigidBody, spin: &Spin, dt: f64) -> Self {
-        let moments = rigid.principal_moments();
-        let state = spin.initial_state(moments);
-        Self {
+impl Simulation {
+    /// Starts at t = 0 from `spin`: a world without gravity holding the
+    /// handle, moved by `method` in steps of `dt`.
+    ///
+    /// # Errors
+    /// [`DemoError::Dynamics`]: a step or state the world refuses.
+    pub fn new(
+        method: FreeBodyMethod,
+        handle: &Handle,
+        spin: &Spin,
+        dt: f64,
+    ) -> Result<Self, DemoError> {
+        let rigid = handle.body;
+        let state = spin.initial_state(rigid.principal_moments());
+        let body = Body::from_mass_properties(handle.properties)
+            .world_from_body(state.world_from_body(&rigid))
+            .omega_body(state.omega_body(&rigid))
+            .try_build()?;
+        let (world, id) = world_of(&body, method, dt)?;
+        let now = world.state(id).expect("the body just added");
+        Ok(Self {
+            world,
+            id,
+            body,
             method,
             rigid,
             axis: spin.axis.index(),
             dt,
-            body: method.propagator(moments, state),
-            previous: state,
-            steps: 0,
-            energy0: state.energy(&rigid),
-            l0: state.l_principal.length(),
-            l_world0: state.l_world(),
+            previous: now,
+            energy0: now.energy,
+            l0: (state_l(&rigid, &now)).length(),
+            l_world0: now.l_world,
             flips: Vec::new(),
             energy_drift: 0.0,
             l_drift: 0.0,
             l_world_drift: 0.0,
-        }
+        })
     }
 
     /// Simulated time, s.
     pub fn time(&self) -> f64 {
-        self.steps as f64 * self.dt
+        self.world.time()
     }
 
     /// Index of the spin axis (whose sign changes are the flips).
@@ -261,66 +279,81 @@ impl<'a> Simulation<'a> {
         self.dt
     }
 
-    /// The current state.
-    pub fn state(&self) -> PrincipalState {
-        self.body.state()
+    /// The current state, as the world reports it.
+    pub fn state(&self) -> BodyState {
+        self.previous
     }
 
     /// ω in principal axes now, rad/s.
     pub fn omega_principal(&self) -> DVec3 {
-        self.state().l_principal / self.rigid.principal_moments()
+        self.principal(&self.previous)
     }
 
-    /// Advances one step; records a flip when ω along the spin axis
-    /// changed sign during it.
-    pub fn step(&mut self) {
+    /// ω of `state` in principal axes, rad/s.
+    fn principal(&self, state: &BodyState) -> DVec3 {
+        self.rigid.body_from_principal().conjugate() * state.omega_body
+    }
+
+    /// Advances the world one step; records a flip when ω along the spin
+    /// axis changed sign during it.
+    ///
+    /// # Errors
+    /// [`DemoError::Dynamics`] when the world's step fails or diverges.
+    pub fn step(&mut self) -> Result<(), DemoError> {
         let t0 = self.time();
-        self.body.advance(self.dt);
-        self.steps += 1;
-        let now = self.body.state();
+        self.world.step(self.dt)?;
+        let now = self.world.state(self.id).expect("the body of this world");
         let (a, b) = (
-            self.previous.l_principal[self.axis],
-            now.l_principal[self.axis],
+            self.principal(&self.previous)[self.axis],
+            self.principal(&now)[self.axis],
         );
         if (a < 0.0) != (b < 0.0) && a != 0.0 {
-            self.flips
-                .push(t0 + self.crossing(&self.previous, a / (a - b)));
+            let tau = self.crossing(&self.previous, a / (a - b))?;
+            self.flips.push(t0 + tau);
         }
         self.previous = now;
-        let l = now.l_principal.length();
         self.energy_drift = self
             .energy_drift
-            .max((now.energy(&self.rigid) - self.energy0).abs() / self.energy0);
-        self.l_drift = self.l_drift.max((l - self.l0).abs() / self.l0);
+            .max((now.energy - self.energy0).abs() / self.energy0);
+        self.l_drift = self
+            .l_drift
+            .max((state_l(&self.rigid, &now).length() - self.l0).abs() / self.l0);
         self.l_world_drift = self
             .l_world_drift
-            .max((now.l_world() - self.l_world0).length() / self.l0);
+            .max((now.l_world - self.l_world0).length() / self.l0);
+        Ok(())
     }
 
-    /// The time within the step from `start` at which L along the spin
+    /// The time within the step from `start` at which ω along the spin
     /// axis vanishes (`fraction` of the step by linear interpolation of its
-    /// ends): Newton's method on `Lₖ(τ)`, each evaluation one step
-    /// of the same method of length τ from `start`, with `L̇ = L × ω`
-    /// (Euler's equations) as the derivative, safeguarded by bisection.
-    fn crossing(&self, start: &PrincipalState, fraction: f64) -> f64 {
+    /// ends): Newton's method on `Lₖ(τ)`, each evaluation a world of the
+    /// same body and method taken from `start` by one step of length τ,
+    /// with `L̇ = L × ω` (Euler's equations) as the derivative, safeguarded
+    /// by bisection.
+    fn crossing(&self, start: &BodyState, fraction: f64) -> Result<f64, DemoError> {
         let k = self.axis;
         let moments = self.rigid.principal_moments();
-        let at = |tau: f64| {
-            let mut s = *start;
+        let from = Body::from_mass_properties(*self.body.mass_properties())
+            .world_from_body(start.world_from_body)
+            .omega_body(start.omega_body)
+            .try_build()?;
+        let at = |tau: f64| -> Result<(f64, f64), DemoError> {
+            let (mut world, id) = world_of(&from, self.method, self.dt)?;
             if tau > 0.0 {
-                self.method.step(moments, &mut s, tau);
+                world.step(tau)?;
             }
-            let l = s.l_principal;
-            (l[k], l.cross(l / moments)[k])
+            let omega = self.principal(&world.state(id).expect("the body of this world"));
+            let l = omega * moments;
+            Ok((l[k], l.cross(omega)[k]))
         };
-        let f_start = start.l_principal[k];
+        let f_start = self.principal(start)[k];
         let (mut lo, mut hi) = (0.0, self.dt);
         // Start from the linear interpolation between the step's ends.
         let mut tau = self.dt * fraction;
         for _ in 0..60 {
-            let (f, df) = at(tau);
+            let (f, df) = at(tau)?;
             if f == 0.0 {
-                return tau;
+                return Ok(tau);
             }
             if (f < 0.0) == (f_start < 0.0) {
                 lo = tau;
@@ -334,11 +367,11 @@ impl<'a> Simulation<'a> {
                 0.5 * (lo + hi)
             };
             if (next - tau).abs() <= 1e-15 * self.dt.max(tau) || hi - lo <= 1e-15 * self.dt {
-                return next;
+                return Ok(next);
             }
             tau = next;
         }
-        tau
+        Ok(tau)
     }
 
     /// The flip period measured so far: the mean time between successive
@@ -353,10 +386,22 @@ impl<'a> Simulation<'a> {
     }
 }
 
+/// L in principal axes, kg·m²/s.
+fn state_l(rigid: &RigidBody, state: &BodyState) -> DVec3 {
+    rigid.principal_moments() * (rigid.body_from_principal().conjugate() * state.omega_body)
+}
+
+/// A world without gravity, stepping by `dt`, moving `body` by `method`.
+fn world_of(body: &Body, method: FreeBodyMethod, dt: f64) -> Result<(World, BodyId), DemoError> {
+    let mut world = World::try_new(DVec3::ZERO, dt)?;
+    world.set_free_body_method(method)?;
+    let id = world.add(body.clone())?;
+    Ok((world, id))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use kreisel::dynamics::method;
 
     fn handle() -> Handle {
         Handle::load(Path::new(super::super::options::DEFAULT_MESH), 7850.0).unwrap()
@@ -466,13 +511,12 @@ mod tests {
             perturbation: 0.05,
         };
         let bound = spin.omega_bound(h.moments());
-        let exact = method("exact").unwrap();
-        let mut sim = Simulation::new(exact.as_ref(), h.body, &spin, 1e-2);
+        let mut sim = Simulation::new(FreeBodyMethod::Exact, &h, &spin, 1e-2).unwrap();
         let mut largest: f64 = 0.0;
         let mut sign = sim.omega_principal().y.signum();
         let mut changes = 0;
         while sim.time() < 10.0 {
-            sim.step();
+            sim.step().unwrap();
             let omega = sim.omega_principal();
             largest = largest.max(omega.abs().max_element());
             if omega.y.signum() != sign {

@@ -79,7 +79,7 @@ pub fn setup_lines(handle: &Handle, mesh: &Path, density: f64, spin: &Spin) -> V
 /// The lines measured by a run: the flip period (predicted and simulated)
 /// and the drift of the invariants.
 pub fn result_lines(
-    sim: &Simulation<'_>,
+    sim: &Simulation,
     prediction: &Prediction,
     spin: &Spin,
     method: &str,
