@@ -30,8 +30,8 @@
 //!    spheres and resting bodies.
 //! 5. `world_heavy_tops_1k_step_1_60`: 10³ heavy tops (the Brüls top and the
 //!    asymmetric fast top of `tests/data/heavy_top/`) through the World
-//!    (auto), one frame per iteration: the one-thread baseline for thread
-//!    scaling.
+//!    (auto), one frame per iteration, on one thread (`world_step`, the
+//!    baseline) and on two (`world_step_2_threads`, `World::set_threads`).
 //!
 //! The bodies (shared by kreisel and rapier): body k of N has the moments
 //! of rapier's Dzhanibekov scenario scaled, I = (1, 2, 3)·(1 + 0.1 k/N),
@@ -56,6 +56,7 @@
 //! 10 s so the run takes seconds.
 
 use std::hint::black_box;
+use std::num::NonZeroUsize;
 use std::time::Duration;
 
 use criterion::{
@@ -492,8 +493,15 @@ fn tops(c: &mut Criterion) {
     configure(&mut group, false);
     group.throughput(Throughput::Elements(n as u64));
     for name in ["bruls", "asymmetric_fast"] {
-        let (mut world, _, _) = heavy_tops(name, n);
-        bench_frames(&mut group, BenchmarkId::new("world_step", name), &mut world);
+        for threads in [1, 2] {
+            let (mut world, _, _) = heavy_tops(name, n);
+            world.set_threads(NonZeroUsize::new(threads).expect("at least 1"));
+            let id = match threads {
+                1 => "world_step".to_owned(),
+                _ => format!("world_step_{threads}_threads"),
+            };
+            bench_frames(&mut group, BenchmarkId::new(id, name), &mut world);
+        }
     }
     group.finish();
 }

@@ -12,3 +12,4 @@ mod inputs;
 mod output;
 mod physics;
 mod support;
+mod threads;

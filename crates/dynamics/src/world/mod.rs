@@ -27,6 +27,8 @@ mod setters;
 mod state;
 mod stepping;
 
+use std::num::NonZeroUsize;
+
 use glam::DVec3;
 
 pub use self::body::{Body, BodyBuilder, Support};
@@ -71,6 +73,7 @@ pub struct World {
     clock: Clock,
     entries: Vec<Entry>,
     failed: Option<DynamicsError>,
+    threads: NonZeroUsize,
 }
 
 /// One body as the world moves it.
@@ -100,6 +103,7 @@ impl std::fmt::Debug for World {
             .field("clock", &self.clock)
             .field("bodies", &self.entries)
             .field("failed", &self.failed)
+            .field("threads", &self.threads)
             .finish()
     }
 }
@@ -139,6 +143,7 @@ impl World {
             clock: Clock::new(dt),
             entries: Vec::new(),
             failed: None,
+            threads: NonZeroUsize::MIN,
         })
     }
 
@@ -210,6 +215,59 @@ impl World {
     /// ```
     pub fn heavy_top_method(&self) -> HeavyTopMethod {
         self.heavy_method
+    }
+
+    /// Sets how many threads may move the bodies that step every `dt`
+    /// (heavy tops and bodies with inputs); 1 (the default) moves every
+    /// body on the calling thread. The world splits those bodies into
+    /// contiguous chunks, one per scoped thread (the calling thread takes
+    /// the first), and only when the work is worth a thread:
+    ///
+    /// ```text
+    /// threads used = min(n, bodies / 2, bodies · steps / 64), at least 1
+    /// ```
+    ///
+    /// Bodies do not interact and each one's arithmetic is the same on any
+    /// thread, so the states are bit-identical whatever `n`, and so is the
+    /// error of a failed run (the earliest step, then the lowest index).
+    /// Free bodies under a stepping method the user chose and exact
+    /// solutions stay on the calling thread. Loads given as closures run on
+    /// the worker threads (they are `Send + Sync`).
+    ///
+    /// ```
+    /// use std::num::NonZeroUsize;
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, World};
+    /// let top = Body::from_principal_moments(1.0, DVec3::new(0.02, 0.02, 0.01))
+    ///     .omega_body(DVec3::new(0.0, 1.0, 50.0))
+    ///     .pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO)
+    ///     .try_build()?;
+    /// let mut states = Vec::new();
+    /// for n in [1, 3] {
+    ///     let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1e-3)?;
+    ///     world.set_threads(NonZeroUsize::new(n).unwrap());
+    ///     assert_eq!(world.threads().get(), n);
+    ///     let ids: Vec<_> = (0..8).map(|_| world.add(top.clone())).collect::<Result<_, _>>()?;
+    ///     world.advance_to(0.1)?;
+    ///     states.push(ids.iter().map(|&id| world.state(id).unwrap().world_from_body).collect::<Vec<_>>());
+    /// }
+    /// assert_eq!(states[0], states[1]);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_threads(&mut self, n: NonZeroUsize) {
+        self.threads = n;
+    }
+
+    /// How many threads may move the bodies (1 by default; see
+    /// [`World::set_threads`]).
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.1)?;
+    /// assert_eq!(world.threads().get(), 1);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn threads(&self) -> NonZeroUsize {
+        self.threads
     }
 
     /// The time step of the stepping methods, s.

@@ -5,10 +5,13 @@
 //! [`crate::ForcedSplitting::step`] at `t` with the checks of
 //! [`crate::ForcedPropagator::try_advance`].
 
-use super::clock::Route;
+use super::clock::{Clock, Route};
 use super::plan::Motion;
-use super::{World, registry};
-use crate::{DivergenceCheck, DynamicsError, forced};
+use super::{Entry, World, registry};
+use crate::{
+    DivergenceCheck, DynamicsError, ForcedBody, ForcedSplitting, ForcedState, HeavyTop,
+    HeavyTopMethod, PrincipalState, forced,
+};
 
 /// The first failure of a run: step number, body, error.
 type Failure = (u64, usize, DynamicsError);
@@ -105,7 +108,9 @@ impl World {
         self.run(route)
     }
 
-    /// Moves every body along `route`, checking every state reached.
+    /// Moves every body along `route`, checking every state reached: the
+    /// bodies that step every `dt` (heavy tops, forced bodies) on up to
+    /// [`World::threads`] scoped threads, the others on the calling thread.
     fn run(&mut self, route: Route) -> Result<(), DynamicsError> {
         if let Some(error) = &self.failed {
             return Err(error.clone());
@@ -114,19 +119,22 @@ impl World {
             return Ok(());
         }
         let end = self.clock.end_of(&route);
-        let (clock, dt) = (self.clock, self.clock.dt());
-        let heavy = registry::heavy_top(self.heavy_method);
-        // The time of step k of the route (1-based; the last one ends at route.end).
-        let time_of = |k: u64| {
-            if k <= route.whole {
-                clock.after_whole(k)
-            } else {
-                route.end
-            }
+        let walker = Walker {
+            route,
+            clock: self.clock,
+            heavy: self.heavy_method,
         };
         let mut first: Option<Failure> = None;
+        let mut jobs = Vec::new();
         for (index, entry) in self.entries.iter_mut().enumerate() {
-            let failure = match &mut entry.motion {
+            let Entry {
+                motion,
+                top,
+                baseline,
+                check,
+                ..
+            } = entry;
+            let failure = match motion {
                 // At rest the state is the exact solution's value at its
                 // start, finite and checked when the plan was made.
                 Motion::Resting { state, settled } => {
@@ -135,21 +143,22 @@ impl World {
                 }
                 motion @ Motion::Exact { .. } => {
                     motion.evaluate_at(end);
-                    let check = entry.check.as_ref();
                     check
+                        .as_ref()
                         .and_then(|c| c.check(&motion.state(), route.end).err())
                         .map(|e| (route.whole + 1, e))
                 }
+                // Free-body propagators are not `Send`: stepped here.
                 Motion::Stepping(propagator) => {
-                    let check = entry.check.as_ref();
+                    let check = check.as_ref();
                     let mut step = |k: u64, h: f64| {
                         propagator.try_advance(h)?;
                         match check {
-                            Some(c) => c.check(&propagator.state(), time_of(k)),
+                            Some(c) => c.check(&propagator.state(), walker.time_of(k)),
                             None => Ok(()),
                         }
                     };
-                    walk(&route, dt, &mut step)
+                    walker.walk(&mut step)
                 }
                 Motion::Forced {
                     method,
@@ -157,36 +166,34 @@ impl World {
                     state,
                     q_norm,
                 } => {
-                    // Step k starts at the grid time of step k − 1 (loads
-                    // that read the time see the world's clock).
-                    let mut step = |k: u64, h: f64| {
-                        let t = if k == 1 { clock.time() } else { time_of(k - 1) };
-                        *state = forced::checked_step(*method, body, state, t, h, *q_norm)?;
-                        Ok(())
-                    };
-                    walk(&route, dt, &mut step)
+                    jobs.push((
+                        index,
+                        Job::Forced {
+                            method: *method,
+                            body,
+                            state,
+                            q_norm: *q_norm,
+                        },
+                    ));
+                    None
                 }
-                Motion::HeavyTop(state) => match &entry.top {
-                    Some(top) => {
-                        let check = DivergenceCheck::heavy_top(heavy.name(), top, &entry.baseline);
-                        let mut step = |k: u64, h: f64| {
-                            let mut next = *state;
-                            heavy.try_step(top, &mut next, h)?;
-                            check.check(&next, time_of(k))?;
-                            *state = next;
-                            Ok(())
-                        };
-                        walk(&route, dt, &mut step)
+                Motion::HeavyTop(state) => {
+                    if let Some(top) = top.as_ref() {
+                        jobs.push((
+                            index,
+                            Job::HeavyTop {
+                                top,
+                                baseline,
+                                state,
+                            },
+                        ));
                     }
-                    None => None,
-                },
+                    None
+                }
             };
-            if let Some((k, error)) = failure
-                && first.as_ref().is_none_or(|(k0, _, _)| k < *k0)
-            {
-                first = Some((k, index, error));
-            }
+            first = earlier(first, failure.map(|(k, e)| (k, index, e)));
         }
+        let first = earlier(first, walker.run_jobs(&mut jobs, self.threads.get()));
         match first {
             None => {
                 self.clock.follow(&route);
@@ -195,7 +202,7 @@ impl World {
             Some((k, body, source)) => {
                 let error = DynamicsError::BodyFailed {
                     body,
-                    time: time_of(k),
+                    time: walker.time_of(k),
                     source: Box::new(source),
                 };
                 self.failed = Some(error.clone());
@@ -205,18 +212,194 @@ impl World {
     }
 }
 
-/// Takes the route's whole steps of `dt` and its last step through
-/// `step(k, h)` (k from 1); the first failure and its step number.
-fn walk(
-    route: &Route,
-    dt: f64,
-    step: &mut dyn FnMut(u64, f64) -> Result<(), DynamicsError>,
-) -> Option<(u64, DynamicsError)> {
-    for k in 1..=route.whole {
-        if let Err(e) = step(k, dt) {
-            return Some((k, e));
+/// The fewest stepping bodies a thread is given: fewer are not worth a
+/// thread (a spawn costs about as much as a few heavy-top steps).
+pub(crate) const MIN_BODIES_PER_THREAD: usize = 2;
+
+/// The fewest body-steps a thread is given (a single `step` of a small
+/// world stays on the calling thread).
+pub(crate) const MIN_BODY_STEPS_PER_THREAD: u64 = 64;
+
+/// The number of threads for `bodies` stepping bodies taking `steps` steps
+/// each, at most `threads`:
+///
+/// ```text
+/// min(threads, bodies / MIN_BODIES_PER_THREAD, bodies·steps / MIN_BODY_STEPS_PER_THREAD), at least 1
+/// ```
+pub(crate) fn threads_for(threads: usize, bodies: usize, steps: u64) -> usize {
+    let by_work = (bodies as u64).saturating_mul(steps) / MIN_BODY_STEPS_PER_THREAD;
+    let by_work = usize::try_from(by_work).unwrap_or(usize::MAX);
+    threads
+        .min(bodies / MIN_BODIES_PER_THREAD)
+        .min(by_work)
+        .max(1)
+}
+
+/// The earlier of two failures: the smaller step number, then the smaller
+/// body index (the failure a single thread reports first).
+fn earlier(a: Option<Failure>, b: Option<Failure>) -> Option<Failure> {
+    match (a, b) {
+        (Some(a), Some(b)) => Some(if (b.0, b.1) < (a.0, a.1) { b } else { a }),
+        (a, b) => a.or(b),
+    }
+}
+
+/// A body that steps every `dt`, borrowed from its entry so that it can be
+/// sent to another thread (every field is `Send`).
+enum Job<'a> {
+    /// A heavy top: stepped by the world's heavy-top method.
+    HeavyTop {
+        top: &'a HeavyTop,
+        baseline: &'a PrincipalState,
+        state: &'a mut PrincipalState,
+    },
+    /// A free body under inputs: stepped by its splitting.
+    Forced {
+        method: ForcedSplitting,
+        body: &'a ForcedBody,
+        state: &'a mut ForcedState,
+        q_norm: f64,
+    },
+}
+
+/// What every body's walk along a route needs (`Copy`, `Send`).
+#[derive(Clone, Copy)]
+struct Walker {
+    route: Route,
+    clock: Clock,
+    heavy: HeavyTopMethod,
+}
+
+impl Walker {
+    /// The time of step `k` of the route (1-based; the last one ends at `route.end`).
+    fn time_of(&self, k: u64) -> f64 {
+        if k <= self.route.whole {
+            self.clock.after_whole(k)
+        } else {
+            self.route.end
         }
     }
-    let h = route.last?;
-    step(route.whole + 1, h).err().map(|e| (route.whole + 1, e))
+
+    /// Takes the route's whole steps of `dt` and its last step through
+    /// `step(k, h)` (k from 1); the first failure and its step number.
+    fn walk(
+        &self,
+        step: &mut dyn FnMut(u64, f64) -> Result<(), DynamicsError>,
+    ) -> Option<(u64, DynamicsError)> {
+        let route = &self.route;
+        for k in 1..=route.whole {
+            if let Err(e) = step(k, self.clock.dt()) {
+                return Some((k, e));
+            }
+        }
+        let h = route.last?;
+        step(route.whole + 1, h).err().map(|e| (route.whole + 1, e))
+    }
+
+    /// Moves one stepping body along the route.
+    fn job(&self, job: &mut Job<'_>) -> Option<(u64, DynamicsError)> {
+        match job {
+            Job::HeavyTop {
+                top,
+                baseline,
+                state,
+            } => {
+                let heavy = registry::heavy_top(self.heavy);
+                let check = DivergenceCheck::heavy_top(heavy.name(), top, baseline);
+                let mut step = |k: u64, h: f64| {
+                    let mut next = **state;
+                    heavy.try_step(top, &mut next, h)?;
+                    check.check(&next, self.time_of(k))?;
+                    **state = next;
+                    Ok(())
+                };
+                self.walk(&mut step)
+            }
+            Job::Forced {
+                method,
+                body,
+                state,
+                q_norm,
+            } => {
+                // Step k starts at the grid time of step k − 1 (loads
+                // that read the time see the world's clock).
+                let mut step = |k: u64, h: f64| {
+                    let t = if k == 1 {
+                        self.clock.time()
+                    } else {
+                        self.time_of(k - 1)
+                    };
+                    **state = forced::checked_step(*method, body, state, t, h, *q_norm)?;
+                    Ok(())
+                };
+                self.walk(&mut step)
+            }
+        }
+    }
+
+    /// Moves the bodies `(index, job)` along the route one after the
+    /// other; the earliest failure.
+    fn chunk(&self, jobs: &mut [(usize, Job<'_>)]) -> Option<Failure> {
+        jobs.iter_mut().fold(None, |first, (index, job)| {
+            earlier(first, self.job(job).map(|(k, e)| (k, *index, e)))
+        })
+    }
+
+    /// Moves the stepping bodies `(index, job)` along the route in
+    /// contiguous chunks on up to `threads` scoped threads
+    /// ([`threads_for`]); the earliest failure. Each body's arithmetic is
+    /// the same on any thread, so the states and the failure reported do
+    /// not depend on `threads`. A panic in a user load is resumed here.
+    fn run_jobs(&self, jobs: &mut [(usize, Job<'_>)], threads: usize) -> Option<Failure> {
+        let steps = self.route.whole + u64::from(self.route.last.is_some());
+        let threads = threads_for(threads, jobs.len(), steps);
+        if threads <= 1 {
+            return self.chunk(jobs);
+        }
+        let size = jobs.len().div_ceil(threads);
+        std::thread::scope(|scope| {
+            let mut chunks = jobs.chunks_mut(size);
+            // The calling thread takes the first chunk itself.
+            let own = chunks.next();
+            let handles: Vec<_> = chunks.map(|c| scope.spawn(move || self.chunk(c))).collect();
+            let mut first = own.and_then(|c| self.chunk(c));
+            for handle in handles {
+                match handle.join() {
+                    Ok(failure) => first = earlier(first, failure),
+                    Err(panic) => std::panic::resume_unwind(panic),
+                }
+            }
+            first
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn threads_only_where_the_work_is_worth_them() {
+        // One body or one thread: the calling thread.
+        assert_eq!(threads_for(8, 1, 1000), 1);
+        assert_eq!(threads_for(1, 1000, 1000), 1);
+        // Two bodies per thread at least.
+        assert_eq!(threads_for(8, 5, 1000), 2);
+        // A single step of a small world is not worth a thread.
+        assert_eq!(threads_for(2, 100, 1), 1);
+        assert_eq!(threads_for(2, 1000, 1), 2);
+        assert_eq!(threads_for(2, 1000, u64::MAX), 2);
+    }
+
+    #[test]
+    fn the_earlier_failure_is_the_earlier_step_then_the_lower_index() {
+        let e = || DynamicsError::InvalidStep { h: 0.0 };
+        let pick = |a: (u64, usize), b: (u64, usize)| {
+            earlier(Some((a.0, a.1, e())), Some((b.0, b.1, e()))).map(|(k, i, _)| (k, i))
+        };
+        assert_eq!(pick((3, 9), (2, 40)), Some((2, 40)));
+        assert_eq!(pick((2, 9), (2, 4)), Some((2, 4)));
+        assert_eq!(pick((2, 4), (2, 9)), Some((2, 4)));
+        assert_eq!(earlier(None, None).map(|f| f.0), None);
+    }
 }
