@@ -21,6 +21,27 @@ pub struct CompositionCoefficients {
     pub middle: f64,
 }
 
+impl CompositionCoefficients {
+    /// The number of stages: `2 s + 1`.
+    ///
+    /// ```
+    /// assert_eq!(kreisel_dynamics::KAHAN_LI_6.stages(), 9);
+    /// ```
+    pub fn stages(&self) -> usize {
+        2 * self.half.len() + 1
+    }
+
+    /// The stage coefficients in order: the first half, the middle, the
+    /// first half reversed.
+    pub(crate) fn gammas(&self) -> impl Iterator<Item = f64> + '_ {
+        self.half
+            .iter()
+            .chain(std::iter::once(&self.middle))
+            .chain(self.half.iter().rev())
+            .copied()
+    }
+}
+
 /// Suzuki (Phys. Lett. A 146:319, 1990), order 4, 5 stages:
 /// γ = 1/(4 − 4^{1/3}) four times, middle 1 − 4γ.
 pub const SUZUKI_4: CompositionCoefficients = CompositionCoefficients {

@@ -141,13 +141,7 @@ impl Inputs {
         self,
         law: impl Fn(f64, &ForcedState) -> (DVec3, DVec3) + Send + Sync + 'static,
     ) -> Self {
-        Self {
-            load: Some(Load {
-                law: Arc::new(law),
-                reads_velocity: false,
-            }),
-            ..self
-        }
+        self.with_law(Arc::new(law), false)
     }
 
     /// These inputs with a user law that may read the whole state (a
@@ -158,10 +152,15 @@ impl Inputs {
         self,
         law: impl Fn(f64, &ForcedState) -> (DVec3, DVec3) + Send + Sync + 'static,
     ) -> Self {
+        self.with_law(Arc::new(law), true)
+    }
+
+    /// These inputs with `law`, marked as reading the velocity or not.
+    fn with_law(self, law: Arc<LoadFn>, reads_velocity: bool) -> Self {
         Self {
             load: Some(Load {
-                law: Arc::new(law),
-                reads_velocity: true,
+                law,
+                reads_velocity,
             }),
             ..self
         }

@@ -129,18 +129,7 @@ impl ForcedSplitting {
 
     /// The number of drifts (free flows) per step.
     pub fn stages(&self) -> usize {
-        2 * self.coefficients.half.len() + 1
-    }
-
-    /// The stage coefficients in order: the first half, the middle, the
-    /// first half reversed.
-    fn gammas(&self) -> impl Iterator<Item = f64> + '_ {
-        let c = self.coefficients;
-        c.half
-            .iter()
-            .chain(std::iter::once(&c.middle))
-            .chain(c.half.iter().rev())
-            .copied()
+        self.coefficients.stages()
     }
 
     /// Advances `state` from time `t` by `h` seconds.
@@ -163,7 +152,7 @@ impl ForcedSplitting {
         let mut elapsed = 0.0;
         if merged {
             let mut pending = 0.0;
-            for g in self.gammas() {
+            for g in self.coefficients.gammas() {
                 body.kick(state, t + elapsed * h, (pending + 0.5 * g) * h);
                 body.drift(state, g * h);
                 elapsed += g;
@@ -171,7 +160,7 @@ impl ForcedSplitting {
             }
             body.kick(state, t + elapsed * h, pending * h);
         } else {
-            for g in self.gammas() {
+            for g in self.coefficients.gammas() {
                 body.kick(state, t + elapsed * h, 0.5 * g * h);
                 body.drift(state, g * h);
                 elapsed += g;

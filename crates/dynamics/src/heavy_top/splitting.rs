@@ -113,7 +113,7 @@ impl HeavyTopSplitting {
 
     /// The number of free flows per step.
     pub fn stages(&self) -> usize {
-        2 * self.coefficients.half.len() + 1
+        self.coefficients.stages()
     }
 
     /// The largest stable `h Ω_g` for small gravity swings (see the type's
@@ -128,18 +128,7 @@ impl HeavyTopSplitting {
 
     /// The largest `|γᵢ|`: a stage's free flow spans at most this times `h`.
     pub fn largest_stage(&self) -> f64 {
-        self.gammas().fold(0.0, |m, g| m.max(g.abs()))
-    }
-
-    /// The stage coefficients in order: the first half, the middle, the
-    /// first half reversed.
-    fn gammas(&self) -> impl Iterator<Item = f64> + '_ {
-        let c = self.coefficients;
-        c.half
-            .iter()
-            .chain(std::iter::once(&c.middle))
-            .chain(c.half.iter().rev())
-            .copied()
+        self.coefficients.gammas().fold(0.0, |m, g| m.max(g.abs()))
     }
 }
 
@@ -154,7 +143,7 @@ impl HeavyTopIntegrator for HeavyTopSplitting {
 
     fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64) {
         let mut pending = 0.0;
-        for g in self.gammas() {
+        for g in self.coefficients.gammas() {
             top.kick(state, (pending + 0.5 * g) * h);
             top.free_flow(state, g * h);
             pending = 0.5 * g;
