@@ -220,30 +220,11 @@ fn parse_from(
                     break Some(format!("line {n}: {reason}"));
                 }
             }
-            Some(b"f") => {
-                corners.clear();
-                let mut bad = None;
-                while let Some((word, plain)) = words.next_index() {
-                    match r.face_index(word, plain, n) {
-                        Ok(index) => corners.push(index),
-                        Err(reason) => {
-                            bad = Some(reason);
-                            break;
-                        }
-                    }
-                }
-                if let Some(reason) = bad {
-                    break Some(format!("line {n}: {reason}"));
-                }
-                if corners.len() < 3 {
-                    r.skipped.push((r.name.clone(), n));
-                    continue;
-                }
-                let first = corners[0];
-                for pair in corners[1..].windows(2) {
-                    r.triangles.push([first, pair[0], pair[1]]);
-                }
-            }
+            Some(b"f") => match r.face(&mut words, n, &mut corners) {
+                Err(reason) => break Some(format!("line {n}: {reason}")),
+                Ok(false) => r.skipped.push((r.name.clone(), n)),
+                Ok(true) => {}
+            },
             Some(word @ (b"o" | b"g")) => {
                 if !r.triangles.is_empty() {
                     r.finish_model();
@@ -336,26 +317,7 @@ impl Ahead {
                     }
                     None => false,
                 },
-                Some(b"f") => {
-                    corners.clear();
-                    let mut ok = true;
-                    while let Some((word, plain)) = words.next_index() {
-                        match reader.face_index(word, plain, n) {
-                            Ok(index) => corners.push(index),
-                            Err(_) => {
-                                ok = false;
-                                break;
-                            }
-                        }
-                    }
-                    if ok && corners.len() >= 3 {
-                        let first = corners[0];
-                        for pair in corners[1..].windows(2) {
-                            reader.triangles.push([first, pair[0], pair[1]]);
-                        }
-                    }
-                    ok && corners.len() >= 3
-                }
+                Some(b"f") => reader.face(&mut words, n, &mut corners) == Ok(true),
                 Some(b"o" | b"g") => false,
                 _ => true,
             };
@@ -496,6 +458,30 @@ impl Reader {
     /// Records the first error of the structure.
     fn defer(&mut self, reason: &'static str) {
         self.deferred.get_or_insert(reason);
+    }
+
+    /// Reads the corners of the face on line `n` (into `corners`) and, when
+    /// there are at least three, appends its fan of triangles: `Ok(true)`;
+    /// `Ok(false)` for a face of fewer than three corners (nothing added);
+    /// the first bad corner's reason otherwise.
+    fn face(
+        &mut self,
+        words: &mut Words<'_>,
+        n: usize,
+        corners: &mut Vec<u32>,
+    ) -> Result<bool, String> {
+        corners.clear();
+        while let Some((word, plain)) = words.next_index() {
+            corners.push(self.face_index(word, plain, n)?);
+        }
+        if corners.len() < 3 {
+            return Ok(false);
+        }
+        let first = corners[0];
+        for pair in corners[1..].windows(2) {
+            self.triangles.push([first, pair[0], pair[1]]);
+        }
+        Ok(true)
     }
 
     /// The 0-based position index of one face corner `v[/vt][/vn]` on line
