@@ -45,6 +45,10 @@ Scene (TOML; SI units, radians):
   output_interval = 0.1      s between rows, a whole multiple of dt
                              [default: every step]
   gravity = [0, 0, -9.81]    m/s^2 [default: none]
+  tolerance = 1e-6           attitude error allowed over the run, rad: the
+                             cheapest method predicted to meet it (not with
+                             a method other than auto) [default: none,
+                             rounding level]
 
   [[body]]                   one table per body (at least one)
   name = \"handle\"            [default: body1, body2, ...]; unique, without
@@ -105,8 +109,14 @@ Motion:
   auto: splitting6 (order 6); strang, splitting4, splitting6, splitting8:
   the splitting of that order; the other methods cannot move it (an error).
   Its centre of mass moves under gravity and force: x'' = g + F/m.
-  --explain prints each body's plan (what it is, which method, why) and
-  exits without running.
+  With tolerance, a driven body takes the cheapest splitting and sub-steps
+  per dt predicted to meet it, and a free asymmetric body rk4 or pdmv6 every
+  dt where that is predicted to meet it for less work than evaluating the
+  exact solution at every row; the prediction is 4 x (steps) x (the largest
+  local error of one step, measured when the plan is made). Below 1e-10 rad,
+  and for heavy tops, the default plans (rounding level) stay.
+  --explain prints each body's plan (what it is, which method, why; with
+  tolerance, what it chose and the predicted error) and exits without running.
   --threads N moves the bodies that step every dt (heavy tops, driven
   bodies) on N threads (default: all cores); the output is byte-identical
   for every N.
@@ -280,7 +290,10 @@ fn explain(scene: &Scene) -> Result<(), CliError> {
 fn write_plans<W: Write + ?Sized>(scene: &Scene, out: &mut W) -> io::Result<()> {
     for (name, id) in &scene.bodies {
         if let Some(plan) = scene.world.plan(*id) {
-            writeln!(out, "{name}: {plan}")?;
+            match scene.world.choice(*id) {
+                Some(choice) => writeln!(out, "{name}: {plan}; {choice}")?,
+                None => writeln!(out, "{name}: {plan}")?,
+            }
         }
     }
     Ok(())

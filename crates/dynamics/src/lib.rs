@@ -101,4 +101,4 @@ pub use stability::{
     AxisStability, EllipticMotion, axis_stability, elliptic_motion, try_axis_stability,
 };
 pub use state::PrincipalState;
-pub use world::{Body, BodyBuilder, BodyId, BodyState, Plan, Support, World};
+pub use world::{Body, BodyBuilder, BodyId, BodyState, Choice, Plan, Support, Tolerance, World};

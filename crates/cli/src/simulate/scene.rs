@@ -13,7 +13,7 @@ use std::ops::Range;
 use std::path::Path;
 
 use glam::DVec3;
-use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, World};
+use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, Tolerance, World};
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -41,6 +41,7 @@ struct RawSimulation {
     method: Option<Spanned<String>>,
     output_interval: Option<Spanned<f64>>,
     gravity: Option<Spanned<[f64; 3]>>,
+    tolerance: Option<Spanned<f64>>,
 }
 
 /// A checked scene, ready to run.
@@ -222,6 +223,22 @@ pub fn parse_with_method(
         .set_free_body_method(free)
         .and_then(|()| world.set_heavy_top_method(heavy));
     configured.map_err(|e| file.error(None, &e.to_string()))?;
+    if let Some(value) = &sim.tolerance {
+        let attitude = keys.positive("tolerance", value)?;
+        if free != FreeBodyMethod::Auto {
+            let message = format!(
+                "`tolerance` chooses the method itself, but the method is `{free}`: \
+                 remove `method` (or --method) or `tolerance`"
+            );
+            return Err(keys.fail(value, &message));
+        }
+        // The states are read at the rows written: the exact solution is
+        // evaluated only there.
+        let tolerance = Tolerance::try_new(attitude, duration)
+            .and_then(|t| t.try_reading_every(interval.unwrap_or(dt)))
+            .and_then(|t| world.set_tolerance(Some(t)));
+        tolerance.map_err(|e| keys.fail(value, &format!("`tolerance`: {e}")))?;
+    }
     let mut bodies: Vec<(String, BodyId)> = Vec::with_capacity(raw.body.len());
     // A set, not a search of the bodies so far: 10⁵ bodies took 31 s that way.
     let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());

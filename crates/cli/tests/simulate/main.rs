@@ -13,3 +13,4 @@ mod output;
 mod physics;
 mod support;
 mod threads;
+mod tolerance;

@@ -26,6 +26,7 @@ mod registry;
 mod setters;
 mod state;
 mod stepping;
+mod tolerance;
 
 use std::num::NonZeroUsize;
 
@@ -34,6 +35,7 @@ use glam::DVec3;
 pub use self::body::{Body, BodyBuilder, Support};
 pub use self::plan::Plan;
 pub use self::state::{BodyId, BodyState};
+pub use self::tolerance::{Choice, Tolerance};
 
 use self::clock::Clock;
 use self::plan::Motion;
@@ -74,6 +76,7 @@ pub struct World {
     entries: Vec<Entry>,
     failed: Option<DynamicsError>,
     threads: NonZeroUsize,
+    tolerance: Option<Tolerance>,
 }
 
 /// One body as the world moves it.
@@ -92,6 +95,16 @@ struct Entry {
     /// Centre of mass and velocity at world time `since` (free bodies;
     /// a forced body's are in its motion, copied here when it is replanned).
     ballistic: (DVec3, DVec3, f64),
+    /// What the world's tolerance chose for the body, if one is set.
+    choice: Option<Choice>,
+}
+
+/// A body's plan as [`World::plan_for`] makes it.
+struct Planned {
+    plan: Plan,
+    motion: Motion,
+    check: Option<DivergenceCheck<'static>>,
+    choice: Option<Choice>,
 }
 
 impl std::fmt::Debug for World {
@@ -104,6 +117,7 @@ impl std::fmt::Debug for World {
             .field("bodies", &self.entries)
             .field("failed", &self.failed)
             .field("threads", &self.threads)
+            .field("tolerance", &self.tolerance)
             .finish()
     }
 }
@@ -144,6 +158,7 @@ impl World {
             entries: Vec::new(),
             failed: None,
             threads: NonZeroUsize::MIN,
+            tolerance: None,
         })
     }
 
@@ -367,7 +382,12 @@ impl World {
         };
         let state =
             PrincipalState::try_from_omega_body(&rigid, body.world_from_body(), body.omega_body())?;
-        let (plan, motion, check) = self.plan_for(&body, &rigid, top.as_ref(), state, ballistic)?;
+        let Planned {
+            plan,
+            motion,
+            check,
+            choice,
+        } = self.plan_for(&body, &rigid, top.as_ref(), state, ballistic)?;
         self.entries.push(Entry {
             body,
             rigid,
@@ -377,12 +397,13 @@ impl World {
             baseline: state,
             check,
             ballistic,
+            choice,
         });
         Ok(BodyId(self.entries.len() - 1))
     }
 
-    /// The plan, the motion and the checks of a body in `state` now, its
-    /// centre of mass flying from `ballistic`.
+    /// The plan, the motion, the checks and the tolerance's choice of a
+    /// body in `state` now, its centre of mass flying from `ballistic`.
     fn plan_for(
         &self,
         body: &Body,
@@ -390,11 +411,15 @@ impl World {
         top: Option<&HeavyTop>,
         state: PrincipalState,
         ballistic: (DVec3, DVec3, f64),
-    ) -> Result<(Plan, Motion, Option<DivergenceCheck<'static>>), DynamicsError> {
-        Ok(match top {
+    ) -> Result<Planned, DynamicsError> {
+        // A tolerance chooses only where the method is left to the world.
+        let tolerance = self
+            .tolerance
+            .filter(|_| self.free_method == FreeBodyMethod::Auto);
+        let (plan, motion, check, choice) = match top {
             Some(_) => {
                 let (plan, motion) = Motion::heavy_top(self.heavy_method, state);
-                (plan, motion, None)
+                (plan, motion, None, None)
             }
             None if !body.inputs().is_none() => {
                 let (x0, v0, since) = ballistic;
@@ -407,17 +432,43 @@ impl World {
                     position_world,
                     velocity_world,
                 };
-                let (plan, motion) = Motion::forced(self.free_method, forced, start)?;
-                (plan, motion, None)
+                let chosen = tolerance.and_then(|tol| {
+                    tolerance::choose_forced(&tol, &forced, &start, self.time(), self.dt())
+                });
+                let (method, substeps, choice) = match chosen {
+                    Some((method, choice)) => (method, choice.substeps, Some(choice)),
+                    None => (Plan::forced_splitting(self.free_method)?, 1, None),
+                };
+                let (plan, motion) = Motion::forced(method, substeps, forced, start);
+                (plan, motion, None, choice)
             }
             None => {
                 let moments = rigid.principal_moments();
-                let (plan, motion) =
-                    Motion::free(self.free_method, moments, state, self.clock.now())?;
-                let name = registry::free_body(self.free_method).name();
+                let now = self.clock.now();
+                let (mut plan, mut motion) = Motion::free(self.free_method, moments, state, now)?;
+                let mut method = self.free_method;
+                let mut choice = None;
+                if let (Some(tol), Plan::Asymmetric, Motion::Exact { solution, .. }) =
+                    (tolerance, plan, &motion)
+                    && let Some((chosen, c)) =
+                        tolerance::choose_free(&tol, solution, moments, self.dt())
+                {
+                    choice = Some(c);
+                    if chosen != FreeBodyMethod::Exact {
+                        method = chosen;
+                        (plan, motion) = Motion::free(method, moments, state, now)?;
+                    }
+                }
+                let name = registry::free_body(method).name();
                 let check = DivergenceCheck::free_body(name, moments, &state);
-                (plan, motion, Some(check))
+                (plan, motion, Some(check), choice)
             }
+        };
+        Ok(Planned {
+            plan,
+            motion,
+            check,
+            choice,
         })
     }
 
@@ -439,7 +490,7 @@ impl World {
             entry.ballistic = (s.position_world, s.velocity_world, now);
         }
         let entry = &self.entries[index];
-        let (plan, motion, check) = self.plan_for(
+        let planned = self.plan_for(
             &entry.body,
             &entry.rigid,
             entry.top.as_ref(),
@@ -447,7 +498,9 @@ impl World {
             entry.ballistic,
         )?;
         let entry = &mut self.entries[index];
-        (entry.plan, entry.motion, entry.check, entry.baseline) = (plan, motion, check, state);
+        (entry.plan, entry.motion, entry.check, entry.choice) =
+            (planned.plan, planned.motion, planned.check, planned.choice);
+        entry.baseline = state;
         Ok(())
     }
 
@@ -477,6 +530,71 @@ impl World {
     /// ```
     pub fn plan(&self, id: BodyId) -> Option<&Plan> {
         self.entries.get(id.0).map(|e| &e.plan)
+    }
+
+    /// What the world's [`Tolerance`] chose for body `id` (`None` without
+    /// a tolerance, for a method the user chose, for a body whose plan is
+    /// exact and cheapest anyway — a sphere, a symmetric body, a body at
+    /// rest — and for a heavy top).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, Inputs, Tolerance, World};
+    /// let mut world = World::try_new(DVec3::ZERO, 0.1)?;
+    /// world.set_tolerance(Some(Tolerance::new(1e-6, 10.0)))?;
+    /// let wheel = Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0))
+    ///     .omega_body(DVec3::new(0.2, 1.0, 0.1))
+    ///     .try_build()?
+    ///     .with_inputs(Inputs::default().with_torque_body(DVec3::new(0.5, 0.0, 0.0)))?;
+    /// let id = world.add(wheel)?;
+    /// let choice = world.choice(id).unwrap();
+    /// assert!(choice.predicted <= 1e-6);
+    /// world.set_tolerance(None)?;
+    /// assert!(world.choice(id).is_none());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn choice(&self, id: BodyId) -> Option<&Choice> {
+        self.entries.get(id.0).and_then(|e| e.choice.as_ref())
+    }
+
+    /// Sets the accuracy asked of every body (`None`: the default plans, at
+    /// rounding level); the plans are remade from the current states. With
+    /// a tolerance and the `auto` free-body method, an asymmetric free
+    /// body is stepped by RK4 or PDMV6 where that is predicted to meet it
+    /// for less work than the exact solution (a game loop that reads every
+    /// frame), and a body with inputs by the cheapest splitting and
+    /// sub-steps that meet it ([`Choice`]; the model is in [`Tolerance`]'s
+    /// module docs).
+    ///
+    /// # Errors
+    /// The set-up errors of a plan.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, Plan, Tolerance, World};
+    /// let mut world = World::try_new(DVec3::ZERO, 0.01)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0)).omega_body(DVec3::new(0.3, 1.0, 0.2)).try_build()?)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Asymmetric));
+    /// // Read once per simulated second, the exact solution stays cheapest.
+    /// world.set_tolerance(Some(Tolerance::new(1e-3, 100.0).try_reading_every(1.0)?))?;
+    /// assert_eq!(world.plan(id), Some(&Plan::Asymmetric));
+    /// assert_eq!(world.choice(id).unwrap().method, "exact");
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_tolerance(&mut self, tolerance: Option<Tolerance>) -> Result<(), DynamicsError> {
+        self.tolerance = tolerance;
+        self.replan_all()
+    }
+
+    /// The accuracy asked of the bodies (`None` by default).
+    ///
+    /// ```
+    /// # let world = kreisel_dynamics::World::try_new(glam::DVec3::ZERO, 0.01)?;
+    /// assert_eq!(world.tolerance(), None);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn tolerance(&self) -> Option<Tolerance> {
+        self.tolerance
     }
 
     /// Every body's plan, in the order added (what `kreisel simulate

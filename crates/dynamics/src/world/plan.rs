@@ -215,6 +215,7 @@ pub(crate) enum Motion {
     /// the state, and `|q|` when the plan was made (the checks' reference).
     Forced {
         method: ForcedSplitting,
+        substeps: u32,
         body: Box<ForcedBody>,
         state: ForcedState,
         q_norm: f64,
@@ -281,20 +282,22 @@ impl Motion {
         (Plan::HeavyTop(method), Motion::HeavyTop(state))
     }
 
-    /// The plan and motion of a free body under inputs.
+    /// The plan and motion of a free body under inputs, moved by
+    /// `substeps` steps of `method` per step of the world.
     pub(crate) fn forced(
-        method: FreeBodyMethod,
+        method: ForcedSplitting,
+        substeps: u32,
         body: ForcedBody,
         state: ForcedState,
-    ) -> Result<(Plan, Motion), DynamicsError> {
-        let method = Plan::forced_splitting(method)?;
+    ) -> (Plan, Motion) {
         let motion = Motion::Forced {
             method,
+            substeps,
             body: Box::new(body),
             q_norm: state.rotation.world_from_principal.length(),
             state,
         };
-        Ok((Plan::Forced { method }, motion))
+        (Plan::Forced { method }, motion)
     }
 
     /// The current state.

@@ -162,6 +162,7 @@ impl World {
                 }
                 Motion::Forced {
                     method,
+                    substeps,
                     body,
                     state,
                     q_norm,
@@ -170,6 +171,7 @@ impl World {
                         index,
                         Job::Forced {
                             method: *method,
+                            substeps: *substeps,
                             body,
                             state,
                             q_norm: *q_norm,
@@ -256,6 +258,7 @@ enum Job<'a> {
     /// A free body under inputs: stepped by its splitting.
     Forced {
         method: ForcedSplitting,
+        substeps: u32,
         body: &'a ForcedBody,
         state: &'a mut ForcedState,
         q_norm: f64,
@@ -317,19 +320,25 @@ impl Walker {
             }
             Job::Forced {
                 method,
+                substeps,
                 body,
                 state,
                 q_norm,
             } => {
                 // Step k starts at the grid time of step k − 1 (loads
-                // that read the time see the world's clock).
+                // that read the time see the world's clock); a tolerance
+                // may split it into equal sub-steps.
                 let mut step = |k: u64, h: f64| {
                     let t = if k == 1 {
                         self.clock.time()
                     } else {
                         self.time_of(k - 1)
                     };
-                    **state = forced::checked_step(*method, body, state, t, h, *q_norm)?;
+                    let sub = h / f64::from(*substeps);
+                    for j in 0..*substeps {
+                        let t = t + f64::from(j) * sub;
+                        **state = forced::checked_step(*method, body, state, t, sub, *q_norm)?;
+                    }
                     Ok(())
                 };
                 self.walk(&mut step)
