@@ -84,8 +84,8 @@ Scene (TOML; SI units, radians):
   force = [1, 0, 0]          applied force through the centre of mass, N,
                              world axes [default: none]
   angular_damping = 0.01     c >= 0: the torque -c omega, N m s [default: 0]
-                             (torque, torque_body, force, angular_damping:
-                             free bodies only, not with a pivot)
+                             (torque, torque_body, force, angular_damping
+                             with a pivot: a driven heavy top)
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
@@ -109,6 +109,9 @@ Motion:
   auto: splitting6 (order 6); strang, splitting4, splitting6, splitting8:
   the splitting of that order; the other methods cannot move it (an error).
   Its centre of mass moves under gravity and force: x'' = g + F/m.
+  A heavy top with them is driven: the same splitting about the pivot, with
+  gravity kicked exactly alongside the loads (a force turns the top about
+  the pivot); auto: splitting8 sub-stepped within its stability limit.
   With tolerance, a driven body takes the cheapest splitting and sub-steps
   per dt predicted to meet it, and a free asymmetric body rk4 or pdmv6 every
   dt where that is predicted to meet it for less work than evaluating the

@@ -143,13 +143,15 @@ pub enum DynamicsError {
         /// Why.
         source: Box<DynamicsError>,
     },
-    /// A free-body method that cannot move a body with applied inputs
-    /// (a [`crate::World`] body with [`crate::Inputs`]): only the
-    /// splittings have a torque kick.
+    /// A free-body or heavy-top method that cannot move a body with
+    /// applied inputs (a [`crate::World`] body with [`crate::Inputs`]):
+    /// only the splittings have a torque kick.
     #[error(
-        "free-body method `{method}` cannot move a body with applied inputs (methods that can: {known})"
+        "{kind} method `{method}` cannot move a body with applied inputs (methods that can: {known})"
     )]
     MethodTakesNoInputs {
+        /// `"free-body"` or `"heavy-top"`.
+        kind: &'static str,
         /// The method's name.
         method: &'static str,
         /// The methods that can, comma-separated.

@@ -245,36 +245,40 @@ fn set_inputs_remakes_the_plan() {
 }
 
 #[test]
-fn a_pivot_takes_no_inputs_yet() {
+fn a_pivot_takes_inputs_as_a_driven_top() {
     let top = Body::from_principal_moments(1.0, DVec3::new(0.02, 0.02, 0.01))
         .omega_body(DVec3::new(0.0, 0.0, 50.0))
         .pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO);
-    let e = top
-        .try_build()
-        .unwrap()
-        .with_inputs(Inputs::default().with_torque_world(DVec3::X))
-        .unwrap_err();
-    assert!(matches!(
-        e,
-        DynamicsError::InvalidBody {
-            field: "inputs",
-            ..
-        }
-    ));
+    let motor = Inputs::default().with_torque_body(DVec3::new(0.0, 0.0, 0.01));
+    let driven = top.try_build().unwrap().with_inputs(motor.clone()).unwrap();
     let mut world = World::try_new(GRAVITY, 1e-3).unwrap();
-    let id = world.add(top.try_build().unwrap()).unwrap();
+    let id = world.add(driven).unwrap();
+    assert_eq!(
+        world.plan(id),
+        Some(&Plan::DrivenTop {
+            method: ForcedSplitting::ORDER_8
+        })
+    );
+    // RK4 has no kick for the loads: refused, nothing changes.
     let e = world
-        .set_inputs(id, Inputs::default().with_angular_damping(0.1))
+        .set_heavy_top_method(kreisel_dynamics::HeavyTopMethod::Rk4)
         .unwrap_err();
-    assert!(matches!(
-        e,
-        DynamicsError::InvalidBody {
-            field: "inputs",
-            ..
-        }
-    ));
-    // Zero inputs on a top: nothing to refuse.
+    assert!(
+        matches!(e, DynamicsError::MethodTakesNoInputs { .. }),
+        "{e}"
+    );
+    assert_eq!(
+        world.heavy_top_method(),
+        kreisel_dynamics::HeavyTopMethod::Auto
+    );
+    // Inputs off: the heavy top's own plan again.
     world.set_inputs(id, Inputs::default()).unwrap();
+    assert_eq!(
+        world.plan(id),
+        Some(&Plan::HeavyTop(kreisel_dynamics::HeavyTopMethod::Auto))
+    );
+    world.set_inputs(id, motor).unwrap();
+    assert!(matches!(world.plan(id), Some(Plan::DrivenTop { .. })));
 }
 
 #[test]

@@ -93,13 +93,6 @@ pub fn add_body(
                 let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
                 return Err(keys.fail(v, message));
             }
-            if let Some((key, span)) = first_input {
-                let message = format!(
-                    "`{key}` cannot be given with `pivot`: torques, forces and damping \
-                     act on free bodies only (for now)"
-                );
-                return Err(keys.fail_at(span, &message));
-            }
             builder.pivot(keys.vector("pivot", pivot)?, position)
         }
         None => builder.free(position, velocity),
@@ -109,13 +102,13 @@ pub fn add_body(
         DynamicsError::InvalidState { .. } => state_error(e),
         other => keys.fail_at(inertia.span.clone(), &format!("`{}`: {other}", inertia.key)),
     })?;
-    // Checked above: finite, damping not negative, no pivot.
+    // Checked above: finite, damping not negative.
     let body = body
         .with_inputs(inputs)
         .map_err(|e| keys.fail(raw, &e.to_string()))?;
     let id = world.add(body).map_err(|e| match (e, &b.pivot) {
         (e @ DynamicsError::InvalidState { .. }, _) => state_error(e),
-        (e @ DynamicsError::MethodTakesNoInputs { .. }, None) => match &first_input {
+        (e @ DynamicsError::MethodTakesNoInputs { .. }, _) => match &first_input {
             Some((key, span)) => keys.fail_at(span.clone(), &format!("`{key}`: {e}")),
             None => keys.fail(raw, &e.to_string()),
         },

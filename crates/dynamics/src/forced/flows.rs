@@ -29,7 +29,11 @@ impl ForcedBody {
     pub(super) fn drift(&self, state: &mut ForcedState, h: f64) {
         self.free
             .apply(self.body().principal_moments(), &mut state.rotation, h);
-        state.position_world += state.velocity_world * h;
+        if self.is_anchored() {
+            self.follow_pivot(state);
+        } else {
+            state.position_world += state.velocity_world * h;
+        }
     }
 
     /// The exact kick `B` for time `h` of every load that reads no velocity
@@ -43,7 +47,7 @@ impl ForcedBody {
     /// ```
     #[inline]
     pub(super) fn exact_kick(&self, state: &mut ForcedState, t: f64, h: f64) {
-        if self.inputs().has_rotational_part() {
+        if self.is_anchored() || self.inputs().has_rotational_part() {
             let tau = self.configuration_torque_principal(t, state);
             let z = -self.decay() * h;
             let l = &mut state.rotation.l_principal;
@@ -55,8 +59,12 @@ impl ForcedBody {
                 *l = *l * decay + tau * weight * h;
             }
         }
-        let force = self.configuration_force_world(t, state);
-        state.velocity_world += (force / self.mass() + self.gravity_world()) * h;
+        if self.is_anchored() {
+            self.follow_pivot(state);
+        } else {
+            let force = self.configuration_force_world(t, state);
+            state.velocity_world += (force / self.mass() + self.gravity_world()) * h;
+        }
     }
 
     /// The kick for time `h` at time `t`: [`ForcedBody::exact_kick`], or,
@@ -82,14 +90,15 @@ impl ForcedBody {
                     state.rotation.world_from_principal.normalize().conjugate();
                 let f = |s: &ForcedState| {
                     let (tau, force) = load.eval(t, s);
-                    (principal_from_world * tau, force / self.mass())
+                    let arm = self.pivot_torque_principal(principal_from_world * force);
+                    (principal_from_world * tau + arm, force / self.mass())
                 };
                 let (dl, dv) = f(state);
                 let (mut l1, mut v1) = (l0 + dl * h, v0 + dv * h);
                 let mut converged = false;
                 let mut previous = f64::INFINITY;
                 for _ in 0..MAX_ITERATIONS {
-                    let mid = ForcedState {
+                    let mut mid = ForcedState {
                         rotation: crate::PrincipalState {
                             l_principal: 0.5 * (l0 + l1),
                             ..state.rotation
@@ -97,6 +106,8 @@ impl ForcedBody {
                         velocity_world: 0.5 * (v0 + v1),
                         ..*state
                     };
+                    // On a pivot the velocity is the midpoint L's.
+                    self.follow_pivot(&mut mid);
                     let (dl, dv) = f(&mid);
                     let (l2, v2) = (l0 + dl * h, v0 + dv * h);
                     let change = relative(l2 - l1, l0, l2).max(relative(v2 - v1, v0, v2));
@@ -115,6 +126,7 @@ impl ForcedBody {
                 }
                 state.rotation.l_principal = l1;
                 state.velocity_world = v1;
+                self.follow_pivot(state);
                 self.exact_kick(state, t, 0.5 * h);
             }
         }

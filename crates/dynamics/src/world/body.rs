@@ -76,13 +76,6 @@ pub struct Body {
     inputs: Inputs,
 }
 
-/// Inputs on a body with a pivot: the heavy top's splitting has no kick
-/// for them yet.
-pub(super) const PIVOT_INPUTS: DynamicsError = DynamicsError::InvalidBody {
-    field: "inputs",
-    reason: "are not supported on a body with a pivot yet (free bodies only)",
-};
-
 /// Where a body's inertia comes from.
 #[derive(Debug, Clone, Copy)]
 enum Inertia {
@@ -234,13 +227,11 @@ impl Body {
 
     /// This body with torques and forces applied ([`Inputs`]): a
     /// [`crate::World`] then moves it by a torque splitting
-    /// ([`crate::Plan::Forced`]). Inputs that are all zero change nothing.
-    /// A body on a pivot takes no inputs yet.
+    /// ([`crate::Plan::Forced`]; on a pivot [`crate::Plan::DrivenTop`]).
+    /// Inputs that are all zero change nothing.
     ///
     /// # Errors
-    /// [`DynamicsError::InvalidInput`] as [`Inputs::validate`];
-    /// [`DynamicsError::InvalidBody`] (`field: "inputs"`) for nonzero
-    /// inputs on a body with a pivot.
+    /// [`DynamicsError::InvalidInput`] as [`Inputs::validate`].
     ///
     /// ```
     /// use glam::DVec3;
@@ -248,15 +239,14 @@ impl Body {
     /// let spun = Inputs::default().with_torque_body(DVec3::Z).with_angular_damping(0.1);
     /// let b = Body::from_principal_moments(1.0, DVec3::ONE);
     /// assert_eq!(b.try_build()?.with_inputs(spun.clone())?.inputs().torque_body, DVec3::Z);
-    /// let top = b.pivot(-DVec3::Z, DVec3::ZERO).try_build()?.with_inputs(spun);
-    /// assert!(matches!(top, Err(DynamicsError::InvalidBody { field: "inputs", .. })));
+    /// let top = b.pivot(-DVec3::Z, DVec3::ZERO).try_build()?.with_inputs(spun.clone())?;
+    /// assert_eq!(top.inputs().torque_body, DVec3::Z);
+    /// let bad = Inputs::default().with_angular_damping(-1.0);
+    /// assert!(matches!(top.with_inputs(bad), Err(DynamicsError::InvalidInput { .. })));
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn with_inputs(self, inputs: Inputs) -> Result<Self, DynamicsError> {
         inputs.validate()?;
-        if !inputs.is_none() && matches!(self.support, Support::Pivot { .. }) {
-            return Err(PIVOT_INPUTS);
-        }
         Ok(Self { inputs, ..self })
     }
 

@@ -206,6 +206,13 @@ impl World {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn set_heavy_top_method(&mut self, method: HeavyTopMethod) -> Result<(), DynamicsError> {
+        if self
+            .entries
+            .iter()
+            .any(|e| e.top.is_some() && !e.body.inputs().is_none())
+        {
+            Plan::driven_top_splitting(method)?;
+        }
         self.heavy_method = method;
         self.replan_all()
     }
@@ -418,8 +425,8 @@ impl World {
             .filter(|_| self.free_method == FreeBodyMethod::Auto);
         let (plan, motion, check, choice) = match top {
             Some(_) => {
-                let (plan, motion) = Motion::heavy_top(self.heavy_method, state);
-                (plan, motion, None, None)
+                let (plan, motion, choice) = self.plan_on_pivot(body, state)?;
+                (plan, motion, None, choice)
             }
             None if !body.inputs().is_none() => {
                 let (x0, v0, since) = ballistic;
@@ -432,15 +439,17 @@ impl World {
                     position_world,
                     velocity_world,
                 };
+                let default = Plan::forced_splitting(self.free_method)?;
                 let chosen = tolerance.and_then(|tol| {
-                    tolerance::choose_forced(&tol, &forced, &start, self.time(), self.dt())
+                    let at = (self.time(), self.dt());
+                    tolerance::choose_forced(&tol, &forced, &start, at, (default, 1))
                 });
                 let (method, substeps, choice) = match chosen {
                     Some((method, choice)) => (method, choice.substeps, Some(choice)),
-                    None => (Plan::forced_splitting(self.free_method)?, 1, None),
+                    None => (default, 1, None),
                 };
-                let (plan, motion) = Motion::forced(method, substeps, forced, start);
-                (plan, motion, None, choice)
+                let motion = Motion::forced(method, substeps, false, forced, start);
+                (Plan::Forced { method }, motion, None, choice)
             }
             None => {
                 let moments = rigid.principal_moments();
@@ -472,6 +481,69 @@ impl World {
         })
     }
 
+    /// The plan, motion and tolerance's choice of a body on a pivot in
+    /// `state` now: the heavy-top method's; with inputs, or with a
+    /// tolerance under the `auto` heavy-top method, the torque splitting
+    /// about the pivot (gravity kicked with the loads), sub-stepped within
+    /// its stability limit under `auto`.
+    fn plan_on_pivot(
+        &self,
+        body: &Body,
+        state: PrincipalState,
+    ) -> Result<(Plan, Motion, Option<Choice>), DynamicsError> {
+        let auto = self.heavy_method == HeavyTopMethod::Auto;
+        let tolerance = self.tolerance.filter(|_| auto);
+        let driven = !body.inputs().is_none();
+        let Support::Pivot {
+            pivot_body,
+            pivot_world,
+        } = body.support()
+        else {
+            return Err(DynamicsError::InvalidBody {
+                field: "support",
+                reason: "has no pivot",
+            });
+        };
+        if !driven && tolerance.is_none() {
+            let (plan, motion) = Motion::heavy_top(self.heavy_method, state);
+            return Ok((plan, motion, None));
+        }
+        let inputs = body.inputs().clone();
+        let forced = ForcedBody::try_on_pivot(
+            body.mass_properties(),
+            pivot_body,
+            pivot_world,
+            self.gravity,
+            inputs,
+        )?;
+        let start = forced.state_on_pivot(state);
+        let default = Plan::driven_top_splitting(self.heavy_method)?;
+        // A top too fast for the sub-step limit fails at its first step.
+        let stable = forced
+            .stable_substeps(&start, self.dt())
+            .unwrap_or(tolerance::MAX_SUBSTEPS);
+        let chosen = tolerance.and_then(|tol| {
+            let at = (self.time(), self.dt());
+            tolerance::choose_forced(&tol, &forced, &start, at, (default, stable))
+        });
+        let (method, substeps, choice) = match chosen {
+            Some((method, choice)) => (method, choice.substeps, Some(choice)),
+            // Nothing chosen (at rounding level): the heavy top's own plan.
+            None if !driven => {
+                let (plan, motion) = Motion::heavy_top(self.heavy_method, state);
+                return Ok((plan, motion, None));
+            }
+            None => (default, 1, None),
+        };
+        let plan = if driven {
+            Plan::DrivenTop { method }
+        } else {
+            Plan::HeavyTop(Plan::heavy_top_method_of(method))
+        };
+        let motion = Motion::forced(method, substeps, auto, forced, start);
+        Ok((plan, motion, choice))
+    }
+
     /// Remakes every plan from the current states.
     fn replan_all(&mut self) -> Result<(), DynamicsError> {
         for index in 0..self.entries.len() {
@@ -486,7 +558,9 @@ impl World {
         let now = self.time();
         let entry = &mut self.entries[index];
         state.validate(entry.rigid.principal_moments())?;
-        if let Some((_, s)) = entry.motion.forced_state() {
+        // A free body's centre of mass flies on from where its splitting
+        // left it (a top's pivot stays where it is).
+        if let (None, Some((_, s))) = (&entry.top, entry.motion.forced_state()) {
             entry.ballistic = (s.position_world, s.velocity_world, now);
         }
         let entry = &self.entries[index];

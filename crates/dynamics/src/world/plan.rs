@@ -10,6 +10,7 @@
 //! free, a stepping method chosen      stepping:    the method, every dt
 //! pivot                               heavy top:   the heavy-top method, every dt (auto sub-steps)
 //! free, with applied inputs           forced:      a torque splitting, every dt
+//! pivot, with applied inputs          driven top:  the splitting with gravity kicked too, every dt
 //! ```
 
 use std::fmt;
@@ -76,6 +77,16 @@ pub enum Plan {
         /// The splitting.
         method: ForcedSplitting,
     },
+    /// A body on a pivot with applied inputs (a heavy top driven by a
+    /// motor, pushed, damped): the kick–drift–kick splitting `method`
+    /// every `dt`, gravity kicked exactly with the loads and the free flow
+    /// about the pivot ([`crate::ForcedBody::try_on_pivot`]); under the
+    /// `auto` heavy-top method order 8, sub-stepped as
+    /// [`crate::HeavyTopAuto`] ([`Plan::driven_top_splitting`]).
+    DrivenTop {
+        /// The splitting.
+        method: ForcedSplitting,
+    },
 }
 
 impl Plan {
@@ -132,9 +143,57 @@ impl Plan {
             FreeBodyMethod::Splitting6 => Ok(ForcedSplitting::ORDER_6),
             FreeBodyMethod::Splitting8 => Ok(ForcedSplitting::ORDER_8),
             other => Err(DynamicsError::MethodTakesNoInputs {
+                kind: "free-body",
                 method: registry::free_body(other).name(),
                 known: TAKES_INPUTS,
             }),
+        }
+    }
+}
+
+/// The heavy-top methods that can move a body on a pivot with inputs.
+const TOP_TAKES_INPUTS: &str = "auto, strang, splitting4, splitting6, splitting8";
+
+impl Plan {
+    /// The torque splitting that heavy-top method `method` means for a body
+    /// on a pivot with applied inputs.
+    ///
+    /// ```text
+    /// auto → splitting8 (sub-stepped within its stability limit),  strang → strang,
+    /// splitting4 → splitting4,  splitting6 → splitting6,  splitting8 → splitting8
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::MethodTakesNoInputs`] for `rk4`.
+    ///
+    /// ```
+    /// use kreisel_dynamics::{ForcedSplitting, HeavyTopMethod, Plan};
+    /// assert_eq!(Plan::driven_top_splitting(HeavyTopMethod::Auto)?, ForcedSplitting::ORDER_8);
+    /// assert!(Plan::driven_top_splitting(HeavyTopMethod::Rk4).is_err());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn driven_top_splitting(method: HeavyTopMethod) -> Result<ForcedSplitting, DynamicsError> {
+        match method {
+            HeavyTopMethod::Auto | HeavyTopMethod::Splitting8 => Ok(ForcedSplitting::ORDER_8),
+            HeavyTopMethod::Strang => Ok(ForcedSplitting::STRANG),
+            HeavyTopMethod::Splitting4 => Ok(ForcedSplitting::ORDER_4),
+            HeavyTopMethod::Splitting6 => Ok(ForcedSplitting::ORDER_6),
+            other => Err(DynamicsError::MethodTakesNoInputs {
+                kind: "heavy-top",
+                method: registry::heavy_top(other).name(),
+                known: TOP_TAKES_INPUTS,
+            }),
+        }
+    }
+
+    /// The heavy-top method that runs the splitting of order `order`
+    /// (a tolerance's choice for a heavy top).
+    pub(crate) fn heavy_top_method_of(method: ForcedSplitting) -> HeavyTopMethod {
+        match method.order() {
+            2 => HeavyTopMethod::Strang,
+            4 => HeavyTopMethod::Splitting4,
+            6 => HeavyTopMethod::Splitting6,
+            _ => HeavyTopMethod::Splitting8,
         }
     }
 }
@@ -188,6 +247,12 @@ impl fmt::Display for Plan {
                 method.name(),
                 method.order()
             ),
+            Plan::DrivenTop { method } => write!(
+                f,
+                "driven heavy top on a pivot: {} (order {}) every dt, kick-drift-kick splitting of the free flow about the pivot and exact kicks of gravity and the loads (torques, forces or damping are applied)",
+                method.name(),
+                method.order()
+            ),
         }
     }
 }
@@ -216,6 +281,9 @@ pub(crate) enum Motion {
     Forced {
         method: ForcedSplitting,
         substeps: u32,
+        /// Whether each step takes at least the sub-steps its stability
+        /// needs ([`ForcedBody::stable_substeps`]: heavy tops under `auto`).
+        stabilise: bool,
         body: Box<ForcedBody>,
         state: ForcedState,
         q_norm: f64,
@@ -282,22 +350,24 @@ impl Motion {
         (Plan::HeavyTop(method), Motion::HeavyTop(state))
     }
 
-    /// The plan and motion of a free body under inputs, moved by
-    /// `substeps` steps of `method` per step of the world.
+    /// The motion of a body under inputs (or a heavy top under a
+    /// tolerance), moved by `substeps` steps of `method` per step of the
+    /// world (at least the stable number if `stabilise`).
     pub(crate) fn forced(
         method: ForcedSplitting,
         substeps: u32,
+        stabilise: bool,
         body: ForcedBody,
         state: ForcedState,
-    ) -> (Plan, Motion) {
-        let motion = Motion::Forced {
+    ) -> Motion {
+        Motion::Forced {
             method,
             substeps,
+            stabilise,
             body: Box::new(body),
             q_norm: state.rotation.world_from_principal.length(),
             state,
-        };
-        (Plan::Forced { method }, motion)
+        }
     }
 
     /// The current state.

@@ -3,7 +3,6 @@
 
 use glam::{DQuat, DVec3};
 
-use super::body::PIVOT_INPUTS;
 use super::plan::Motion;
 use super::{BodyId, Entry, World};
 use crate::{DynamicsError, Inputs, PrincipalState};
@@ -159,15 +158,15 @@ impl World {
 
     /// Replaces what is applied to body `id` from now on (a controller's
     /// new command, a motor switched on or off); its plan is remade from
-    /// its current state: nonzero inputs give [`crate::Plan::Forced`],
-    /// inputs all zero the torque-free plan.
+    /// its current state: nonzero inputs give [`crate::Plan::Forced`] (on a
+    /// pivot [`crate::Plan::DrivenTop`]), inputs all zero the torque-free
+    /// plan (on a pivot the heavy top's).
     ///
     /// # Errors
     /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidInput`] as
-    /// [`Inputs::validate`]; [`DynamicsError::InvalidBody`] for inputs on a
-    /// body with a pivot (not supported yet);
-    /// [`DynamicsError::MethodTakesNoInputs`] when the world's free-body
-    /// method cannot move a body with inputs. On an error nothing changes.
+    /// [`Inputs::validate`]; [`DynamicsError::MethodTakesNoInputs`] when
+    /// the world's free-body method (heavy-top method, on a pivot) cannot
+    /// move a body with inputs. On an error nothing changes.
     ///
     /// ```
     /// use glam::DVec3;
@@ -190,9 +189,10 @@ impl World {
         inputs.validate()?;
         if !inputs.is_none() {
             if entry.top.is_some() {
-                return Err(PIVOT_INPUTS);
+                super::Plan::driven_top_splitting(self.heavy_top_method())?;
+            } else {
+                super::Plan::forced_splitting(self.free_body_method())?;
             }
-            super::Plan::forced_splitting(self.free_body_method())?;
         }
         let state = entry.motion.state();
         let previous = entry.body.inputs().clone();

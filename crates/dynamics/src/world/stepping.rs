@@ -163,6 +163,7 @@ impl World {
                 Motion::Forced {
                     method,
                     substeps,
+                    stabilise,
                     body,
                     state,
                     q_norm,
@@ -172,6 +173,7 @@ impl World {
                         Job::Forced {
                             method: *method,
                             substeps: *substeps,
+                            stabilise: *stabilise,
                             body,
                             state,
                             q_norm: *q_norm,
@@ -259,6 +261,7 @@ enum Job<'a> {
     Forced {
         method: ForcedSplitting,
         substeps: u32,
+        stabilise: bool,
         body: &'a ForcedBody,
         state: &'a mut ForcedState,
         q_norm: f64,
@@ -321,6 +324,7 @@ impl Walker {
             Job::Forced {
                 method,
                 substeps,
+                stabilise,
                 body,
                 state,
                 q_norm,
@@ -334,8 +338,13 @@ impl Walker {
                     } else {
                         self.time_of(k - 1)
                     };
-                    let sub = h / f64::from(*substeps);
-                    for j in 0..*substeps {
+                    let n = if *stabilise {
+                        (*substeps).max(body.stable_substeps(state, h)?)
+                    } else {
+                        *substeps
+                    };
+                    let sub = h / f64::from(n);
+                    for j in 0..n {
                         let t = t + f64::from(j) * sub;
                         **state = forced::checked_step(*method, body, state, t, sub, *q_norm)?;
                     }

@@ -7,7 +7,8 @@
 //!     e(h) = SAFETY · (T / h) · ℓ(h),     SAFETY = 4
 //! ℓ(h): the largest local attitude error of one step of h, measured at plan time
 //!     free body:  |Φ_h(s_k) − exact(t_k + h)|   at s_k = exact(t_k), t_k = k T/4, k = 0..3
-//!     forced:     |Φ_h(s) − Φ_{h/2}∘Φ_{h/2}(s)| · 2ᵖ/(2ᵖ − 1)   at the first 4 states of the run
+//!     forced:     |Φ_h(s) − Φ_{h/2}∘Φ_{h/2}(s)| · 2ᵖ/(2ᵖ − 1)   at 8 states spread over a
+//!                 pilot run of the default plan (up to 64 steps of dt)
 //! work per simulated second (measured costs, benches/work_precision.csv and
 //! the forced stages):  steps/s × ns per step, exact: reads/s × ns per evaluation
 //! ```
@@ -305,25 +306,34 @@ pub(crate) fn choose_free(
 }
 
 /// The cheapest forced splitting and sub-steps per `dt` predicted to meet
-/// `tol` for `body` from `start` at world time `t0`. `None` when the
-/// tolerance is at the rounding level, or when no splitting meets it
-/// within [`MAX_SUBSTEPS`] (the default stays).
+/// `tol` for `body` from `start` at world time and step `(t0, dt)`, with at
+/// least the `default` plan's sub-steps (a heavy top's stability limit).
+/// `None` when the tolerance is at the rounding level, or when no splitting
+/// meets it within [`MAX_SUBSTEPS`] (the default stays).
 pub(crate) fn choose_forced(
     tol: &Tolerance,
     body: &ForcedBody,
     start: &ForcedState,
-    t0: f64,
-    dt: f64,
+    (t0, dt): (f64, f64),
+    default: (ForcedSplitting, u32),
 ) -> Option<(ForcedSplitting, Choice)> {
     if !tol.above_rounding() {
         return None;
     }
     let stage_ns = STAGE_NS[usize::from(body.free_flow_is_exact())];
     let work = |m: ForcedSplitting, n: u32| f64::from(n) * m.stages() as f64 * stage_ns / dt;
-    let default_work = work(ForcedSplitting::DEFAULT, 1);
+    let default_work = work(default.0, default.1);
+    let pilot = pilot(tol, body, start, (t0, dt), default);
     let mut best: Option<(ForcedSplitting, Choice)> = None;
     for method in ForcedSplitting::ALL {
-        let Some((n, predicted)) = substeps_for(tol, method, body, start, t0, dt) else {
+        let probe = Probe {
+            tol,
+            method,
+            body,
+            pilot: &pilot,
+            dt,
+        };
+        let Some((n, predicted)) = probe.substeps(default.1.max(1)) else {
             continue;
         };
         let work = work(method, n);
@@ -345,74 +355,113 @@ pub(crate) fn choose_forced(
     best
 }
 
-/// The fewest sub-steps per `dt` with which `method` is predicted to meet
-/// `tol`, and the prediction: a first guess from the local error at one
-/// step per `dt` and the order, then doubled until the measured prediction
-/// meets the tolerance.
-fn substeps_for(
+/// How many steps of `dt` the pilot run takes at most.
+const PILOT_STEPS: usize = 64;
+
+/// How many of the pilot's states are probed.
+const PROBES: usize = 8;
+
+/// The states the local errors are measured at: [`PROBES`] states, evenly
+/// spaced over a pilot run of the default plan of up to [`PILOT_STEPS`]
+/// steps of `dt` (within the horizon) from `start` at `t0`, with their
+/// times. A pilot that stops being finite ends there.
+fn pilot(
     tol: &Tolerance,
-    method: ForcedSplitting,
     body: &ForcedBody,
     start: &ForcedState,
-    t0: f64,
-    dt: f64,
-) -> Option<(u32, f64)> {
-    let predicted = |n: u32| {
-        let h = dt / f64::from(n);
-        tol.predicted(local_forced(method, body, start, t0, h), h)
-    };
-    let first = predicted(1);
-    if !first.is_finite() {
-        return None;
-    }
-    if first <= tol.attitude {
-        return Some((1, first));
-    }
-    // e(h) ∝ hᵖ in the asymptotic range: the guess, then doublings.
-    let guess = (first / tol.attitude).powf(1.0 / f64::from(method.order()));
-    let mut n = guess.ceil().clamp(2.0, f64::from(MAX_SUBSTEPS)) as u32;
-    loop {
-        let e = predicted(n);
-        if e <= tol.attitude {
-            return Some((n, e));
+    (t0, dt): (f64, f64),
+    (method, n): (ForcedSplitting, u32),
+) -> Vec<(f64, ForcedState)> {
+    let steps = ((tol.horizon / dt).ceil() as usize).clamp(1, PILOT_STEPS);
+    let stride = (steps / PROBES).max(1);
+    let h = dt / f64::from(n.max(1));
+    let mut states = vec![(t0, *start)];
+    let mut state = *start;
+    for k in 1..steps {
+        let t = t0 + (k - 1) as f64 * dt;
+        for j in 0..n.max(1) {
+            method.step(body, &mut state, t + f64::from(j) * h, h);
         }
-        if n >= MAX_SUBSTEPS {
-            return None;
+        if !state.is_finite() {
+            break;
         }
-        n = n.saturating_mul(2).min(MAX_SUBSTEPS);
+        if k % stride == 0 && states.len() < PROBES {
+            states.push((t0 + k as f64 * dt, state));
+        }
     }
+    states
 }
 
-/// The largest local attitude error of one step of `h` by `method` over the
-/// first four steps from `start`, by step doubling.
-fn local_forced(
+/// One splitting's error measured on one body at plan time.
+struct Probe<'a> {
+    tol: &'a Tolerance,
     method: ForcedSplitting,
-    body: &ForcedBody,
-    start: &ForcedState,
-    t0: f64,
-    h: f64,
-) -> f64 {
-    let richardson = {
-        let p = 2f64.powi(method.order() as i32);
-        p / (p - 1.0)
-    };
-    let mut state = *start;
-    let mut worst: f64 = 0.0;
-    for k in 0..4 {
-        let t = t0 + f64::from(k) * h;
-        let mut whole = state;
-        method.step(body, &mut whole, t, h);
-        let mut halves = state;
-        method.step(body, &mut halves, t, 0.5 * h);
-        method.step(body, &mut halves, t + 0.5 * h, 0.5 * h);
-        let gap = attitude_gap(&whole.rotation, &halves.rotation) * richardson;
-        if !gap.is_finite() {
-            return f64::INFINITY;
+    body: &'a ForcedBody,
+    pilot: &'a [(f64, ForcedState)],
+    dt: f64,
+}
+
+impl Probe<'_> {
+    /// The fewest sub-steps per `dt`, at least `min`, with which the
+    /// method is predicted to meet the tolerance, and the prediction: a
+    /// first guess from the local error at `min` sub-steps and the order,
+    /// then doubled until the measured prediction meets the tolerance.
+    fn substeps(&self, min: u32) -> Option<(u32, f64)> {
+        let min = min.min(MAX_SUBSTEPS);
+        let first = self.predicted(min);
+        if !first.is_finite() {
+            return None;
         }
-        worst = worst.max(gap);
-        state = whole;
+        if first <= self.tol.attitude {
+            return Some((min, first));
+        }
+        // e(h) ∝ hᵖ in the asymptotic range: the guess, then doublings.
+        let guess =
+            f64::from(min) * (first / self.tol.attitude).powf(1.0 / f64::from(self.method.order()));
+        let mut n = guess
+            .ceil()
+            .clamp(f64::from(min) + 1.0, f64::from(MAX_SUBSTEPS)) as u32;
+        loop {
+            let e = self.predicted(n);
+            if e <= self.tol.attitude {
+                return Some((n, e));
+            }
+            if n >= MAX_SUBSTEPS {
+                return None;
+            }
+            n = n.saturating_mul(2).min(MAX_SUBSTEPS);
+        }
     }
-    worst
+
+    /// The predicted error over the horizon at `n` sub-steps per `dt`.
+    fn predicted(&self, n: u32) -> f64 {
+        let h = self.dt / f64::from(n);
+        self.tol.predicted(self.local(h), h)
+    }
+
+    /// The largest local attitude error of one step of `h` at the pilot's
+    /// states, by step doubling.
+    fn local(&self, h: f64) -> f64 {
+        let (method, body) = (self.method, self.body);
+        let richardson = {
+            let p = 2f64.powi(method.order() as i32);
+            p / (p - 1.0)
+        };
+        let mut worst: f64 = 0.0;
+        for &(t, state) in self.pilot {
+            let mut whole = state;
+            method.step(body, &mut whole, t, h);
+            let mut halves = state;
+            method.step(body, &mut halves, t, 0.5 * h);
+            method.step(body, &mut halves, t + 0.5 * h, 0.5 * h);
+            let gap = attitude_gap(&whole.rotation, &halves.rotation) * richardson;
+            if !gap.is_finite() {
+                return f64::INFINITY;
+            }
+            worst = worst.max(gap);
+        }
+        worst
+    }
 }
 
 /// The angle between two states' attitudes, rad.
@@ -462,7 +511,8 @@ mod tests {
         let mut last = 0.0;
         for tol in [1e-2, 1e-4, 1e-6, 1e-8] {
             let tol = Tolerance::new(tol, 10.0);
-            let (_, choice) = choose_forced(&tol, &forced, &start, 0.0, 0.1).unwrap();
+            let default = (ForcedSplitting::DEFAULT, 1);
+            let (_, choice) = choose_forced(&tol, &forced, &start, (0.0, 0.1), default).unwrap();
             assert!(choice.predicted <= tol.attitude(), "{choice}");
             assert!(choice.work >= last, "{choice}");
             last = choice.work;

@@ -7,8 +7,12 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{ForcedBody, ForcedState, Inputs, PointForce, RigidBody};
+use kreisel_dynamics::{ForcedBody, ForcedState, Inputs, PointForce, PrincipalState, RigidBody};
+use kreisel_inertia::MassProperties;
 use kreisel_kinematics::{rotation_angle_between, rotation_vector_from_quat};
+
+/// The heavy tops with inputs (a pivot held fixed).
+pub const TOP_NAMES: [&str; 2] = ["top_motor", "top_pushed"];
 
 pub const NAMES: [&str; 8] = [
     "sphere_world_torque",
@@ -26,6 +30,9 @@ pub struct Reference {
     pub body: ForcedBody,
     /// The inertia tensor about the centre of mass, body axes.
     pub inertia: DMat3,
+    /// On a pivot: the pivot in body coordinates from the centre of mass
+    /// and where it is held (world).
+    pub pivot: Option<(DVec3, DVec3)>,
     pub start: ForcedState,
     pub samples: Vec<[f64; 15]>,
 }
@@ -112,20 +119,42 @@ pub fn load(name: &str) -> Reference {
         }
         law => panic!("unknown law {law}"),
     };
-    let forced =
-        ForcedBody::try_new(body, numbers("mass")[0], vec3(&numbers("gravity")), inputs).unwrap();
+    let (mass, gravity) = (numbers("mass")[0], vec3(&numbers("gravity")));
     let s0: &[f64; 15] = &samples[0];
-    let start = ForcedState::try_new(
-        &body,
-        Reference::attitude(s0),
-        vec3(&s0[5..8]),
-        vec3(&s0[8..11]),
-        vec3(&s0[11..14]),
-    )
-    .unwrap();
+    let pivot = meta
+        .contains_key("pivot_body")
+        .then(|| (vec3(&numbers("pivot_body")), vec3(&numbers("pivot_world"))));
+    let (forced, start) = match pivot {
+        None => {
+            let forced = ForcedBody::try_new(body, mass, gravity, inputs).unwrap();
+            let start = ForcedState::try_new(
+                &body,
+                Reference::attitude(s0),
+                vec3(&s0[5..8]),
+                vec3(&s0[8..11]),
+                vec3(&s0[11..14]),
+            )
+            .unwrap();
+            (forced, start)
+        }
+        Some((pivot_body, pivot_world)) => {
+            let props = MassProperties::new(mass, DVec3::ZERO, tensor);
+            let forced =
+                ForcedBody::try_on_pivot(&props, pivot_body, pivot_world, gravity, inputs).unwrap();
+            let about_pivot = *forced.body();
+            let rotation = PrincipalState::try_from_omega_body(
+                &about_pivot,
+                Reference::attitude(s0),
+                vec3(&s0[5..8]),
+            )
+            .unwrap();
+            (forced.clone(), forced.state_on_pivot(rotation))
+        }
+    };
     Reference {
         body: forced,
         inertia: tensor,
+        pivot,
         start,
         samples,
     }
