@@ -112,12 +112,13 @@ Motion:
   A heavy top with them is driven: the same splitting about the pivot, with
   gravity kicked exactly alongside the loads (a force turns the top about
   the pivot); auto: splitting8 sub-stepped within its stability limit.
-  With tolerance, a driven body takes the cheapest splitting and sub-steps
-  per dt predicted to meet it, and a free asymmetric body rk4 or pdmv6 every
-  dt where that is predicted to meet it for less work than evaluating the
-  exact solution at every row; the prediction is 4 x (steps) x (the largest
-  local error of one step, measured when the plan is made). Below 1e-10 rad,
-  and for heavy tops, the default plans (rounding level) stay.
+  With tolerance, a driven body or heavy top takes the cheapest splitting
+  and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
+  or pdmv6 every dt where that is predicted to meet it for less work than
+  evaluating the exact solution at every row; the prediction is
+  4 x (steps) x (the largest local error of one step, measured by step
+  doubling along a short pilot run when the plan is made). Below 1e-10 rad
+  the default plans (rounding level) stay.
   --explain prints each body's plan (what it is, which method, why; with
   tolerance, what it chose and the predicted error) and exits without running.
   --threads N moves the bodies that step every dt (heavy tops, driven
