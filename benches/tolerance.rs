@@ -145,12 +145,7 @@ fn tops(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(10));
     for name in ["bruls", "asymmetric_fast"] {
         let r = heavy_top::load(name);
-        let top = Body::from_mass_properties(r.mass_properties)
-            .world_from_body(r.q0)
-            .omega_body(r.omega0)
-            .pivot(DVec3::ZERO, DVec3::ZERO)
-            .try_build()
-            .unwrap();
+        let top = r.world_body();
         let reads = if quick() { 20 } else { r.samples.len() - 1 };
         let dt = r.samples[1].0 - r.samples[0].0;
         let reference: Vec<DQuat> = r.samples[1..=reads].iter().map(|s| s.1).collect();

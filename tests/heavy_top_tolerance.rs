@@ -9,8 +9,7 @@
 mod common;
 
 use common::heavy_top::{NAMES, load};
-use kreisel::dynamics::{Body, Plan, Tolerance, World};
-use kreisel::kinematics::glam::DVec3;
+use kreisel::dynamics::{Plan, Tolerance, World};
 use kreisel::kinematics::rotation_angle_between;
 
 #[test]
@@ -18,12 +17,7 @@ fn heavy_tops_meet_the_tolerance_on_every_reference() {
     for name in NAMES {
         let r = load(name);
         let horizon = r.samples.last().unwrap().0;
-        let top = Body::from_mass_properties(r.mass_properties)
-            .world_from_body(r.q0)
-            .omega_body(r.omega0)
-            .pivot(DVec3::ZERO, DVec3::ZERO)
-            .try_build()
-            .unwrap();
+        let top = r.world_body();
         for tol in [1e-3, 1e-6, 1e-9] {
             let mut world = World::try_new(r.gravity, 0.01).unwrap();
             world

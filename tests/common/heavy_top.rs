@@ -100,6 +100,17 @@ pub fn load(name: &str) -> HeavyTopReference {
 }
 
 impl HeavyTopReference {
+    /// The top as a World body: its start, on a pivot at the body origin
+    /// held at the world origin.
+    pub fn world_body(&self) -> kreisel::dynamics::Body {
+        kreisel::dynamics::Body::from_mass_properties(self.mass_properties)
+            .world_from_body(self.q0)
+            .omega_body(self.omega0)
+            .pivot(DVec3::ZERO, DVec3::ZERO)
+            .try_build()
+            .unwrap()
+    }
+
     /// The attitude error (rad) of `state` against sample `k`.
     pub fn attitude_error(&self, state: &PrincipalState, k: usize) -> f64 {
         kreisel::kinematics::rotation_angle_between(

@@ -20,16 +20,7 @@ use common::forced_refs::{NAMES, Reference, load, vec3};
 /// Runs `method` with `substeps` steps per sample interval; the largest
 /// attitude error over the samples and the final state.
 fn run(r: &Reference, method: ForcedSplitting, substeps: usize) -> (f64, ForcedState) {
-    let h = r.sample_dt() / substeps as f64;
-    let mut p = ForcedPropagator::try_new(method, &r.body, 0.0, r.start).unwrap();
-    let mut worst: f64 = 0.0;
-    for k in 1..r.samples.len() {
-        for _ in 0..substeps {
-            p.try_advance(h).unwrap();
-        }
-        worst = worst.max(r.attitude_error(&p.forced_state(), k));
-    }
-    (worst, p.forced_state())
+    r.run(method, substeps)
 }
 
 /// The Done-when: the default method reaches ≤ 1e-10 rad at every

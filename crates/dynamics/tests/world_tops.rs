@@ -10,9 +10,7 @@
 //! prints the measured errors and orders.
 
 use glam::DVec3;
-use kreisel_dynamics::{
-    Body, ForcedPropagator, ForcedSplitting, HeavyTopMethod, Plan, Tolerance, World,
-};
+use kreisel_dynamics::{Body, ForcedSplitting, HeavyTopMethod, Plan, Tolerance, World};
 use kreisel_inertia::MassProperties;
 
 mod common;
@@ -21,16 +19,7 @@ use common::forced_refs::{Reference, TOP_NAMES, load};
 /// The worst attitude error over the samples with `n` steps per sample
 /// interval.
 fn splitting_error(r: &Reference, method: ForcedSplitting, n: usize) -> f64 {
-    let h = r.sample_dt() / n as f64;
-    let mut p = ForcedPropagator::try_new(method, &r.body, 0.0, r.start).unwrap();
-    let mut worst: f64 = 0.0;
-    for k in 1..r.samples.len() {
-        for _ in 0..n {
-            p.try_advance(h).unwrap();
-        }
-        worst = worst.max(r.attitude_error(&p.forced_state(), k));
-    }
-    worst
+    r.run(method, n).0
 }
 
 /// The reference's body on its pivot with its inputs, as a World body.

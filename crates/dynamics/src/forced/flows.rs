@@ -29,9 +29,9 @@ impl ForcedBody {
     pub(super) fn drift(&self, state: &mut ForcedState, h: f64) {
         self.free
             .apply(self.body().principal_moments(), &mut state.rotation, h);
-        if self.is_anchored() {
-            self.follow_pivot(state);
-        } else {
+        // On a pivot the centre of mass follows the attitude: brought up
+        // to date where it is read (a load's kick, the end of a step).
+        if !self.is_anchored() {
             state.position_world += state.velocity_world * h;
         }
     }
@@ -47,6 +47,10 @@ impl ForcedBody {
     /// ```
     #[inline]
     pub(super) fn exact_kick(&self, state: &mut ForcedState, t: f64, h: f64) {
+        if self.is_anchored() && self.inputs().load.is_some() {
+            // A law may read where the centre of mass is.
+            self.follow_pivot(state);
+        }
         if self.is_anchored() || self.inputs().has_rotational_part() {
             let tau = self.configuration_torque_principal(t, state);
             let z = -self.decay() * h;
@@ -59,9 +63,7 @@ impl ForcedBody {
                 *l = *l * decay + tau * weight * h;
             }
         }
-        if self.is_anchored() {
-            self.follow_pivot(state);
-        } else {
+        if !self.is_anchored() {
             let force = self.configuration_force_world(t, state);
             state.velocity_world += (force / self.mass() + self.gravity_world()) * h;
         }

@@ -167,6 +167,8 @@ impl ForcedSplitting {
                 body.kick(state, t + elapsed * h, 0.5 * g * h);
             }
         }
+        // On a pivot: the centre of mass where the attitude puts it.
+        body.follow_pivot(state);
     }
 }
 

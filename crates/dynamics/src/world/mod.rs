@@ -16,6 +16,12 @@
 //!   same grid by a torque splitting ([`Plan::Forced`]); their centre of
 //!   mass moves with the splitting, and their energy is the mechanical
 //!   energy, whose change is the work of the inputs ([`BodyState`]).
+//! - Bodies on a pivot with inputs (driven heavy tops, [`Plan::DrivenTop`])
+//!   step by the same splitting about the pivot, gravity kicked with the
+//!   loads.
+//! - With a [`Tolerance`] ([`World::set_tolerance`]) each body that steps
+//!   takes the cheapest method and sub-steps predicted to meet it
+//!   ([`World::choice`]).
 //! - Every state reached is checked ([`crate::DivergenceCheck`]; for
 //!   forced bodies: finiteness and `|q|`, since energy is not conserved).
 

@@ -41,6 +41,7 @@ impl BodyId {
 /// free:   energy = ½ L·I⁻¹L + ½ m |v|² − m g·x,    l_world about the centre of mass
 /// pivot:  energy = ½ L·J⁻¹L − m g·(p + R c),     l_world about the pivot p (J about it)
 /// forced: energy = ½ L·I⁻¹L + ½ m |v|² − m g·x,    x, v from the splitting
+/// driven top (pivot with inputs): energy = ½ L·J⁻¹L − m g·x,  x = p + R c
 /// ```
 ///
 /// For a body with applied inputs ([`crate::Plan::Forced`]) the energy is

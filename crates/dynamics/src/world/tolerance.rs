@@ -320,39 +320,94 @@ pub(crate) fn choose_forced(
     if !tol.above_rounding() {
         return None;
     }
-    let stage_ns = STAGE_NS[usize::from(body.free_flow_is_exact())];
-    let work = |m: ForcedSplitting, n: u32| f64::from(n) * m.stages() as f64 * stage_ns / dt;
-    let default_work = work(default.0, default.1);
-    let pilot = pilot(tol, body, start, (t0, dt), default);
+    let min = default.1.clamp(1, MAX_SUBSTEPS);
+    let pilot = pilot(tol, body, start, (t0, dt), min);
+    let chooser = Chooser {
+        tol,
+        body,
+        pilot: &pilot,
+        dt,
+        min,
+        stage_ns: STAGE_NS[usize::from(body.free_flow_is_exact())],
+    };
+    let default_work = chooser.work(default.0, default.1);
+    // Two passes over the splittings. First in order of cost per step, each
+    // only up to the sub-steps that cost less than the default plan (a
+    // loose tolerance is met cheaply). If none did, nothing cheaper than
+    // the default meets the tolerance: the default's splitting first, with
+    // as many sub-steps as it takes, then the others up to its cost. Each
+    // is probed only up to the sub-steps that would cost less than the best
+    // so far.
     let mut best: Option<(ForcedSplitting, Choice)> = None;
-    for method in ForcedSplitting::ALL {
-        let probe = Probe {
-            tol,
-            method,
-            body,
-            pilot: &pilot,
-            dt,
-        };
-        let Some((n, predicted)) = probe.substeps(default.1.max(1)) else {
-            continue;
-        };
-        let work = work(method, n);
-        if best.as_ref().is_none_or(|(_, c)| work < c.work) {
-            best = Some((
-                method,
-                Choice {
-                    tolerance: tol.attitude,
-                    horizon: tol.horizon,
-                    method: method.name(),
-                    substeps: n,
-                    predicted,
-                    work,
-                    default_work,
-                },
-            ));
+    let others = ForcedSplitting::ALL.into_iter().filter(|&m| m != default.0);
+    let passes = [
+        (Some(default_work), ForcedSplitting::ALL.to_vec()),
+        (None, std::iter::once(default.0).chain(others).collect()),
+    ];
+    for (bound, methods) in passes {
+        for method in methods {
+            let limit = best.as_ref().map(|(_, c)| c.work).or(bound);
+            if let Some((n, predicted)) = chooser.substeps(method, limit) {
+                let work = chooser.work(method, n);
+                if best.as_ref().is_none_or(|(_, c)| work < c.work) {
+                    let choice = Choice {
+                        tolerance: tol.attitude,
+                        horizon: tol.horizon,
+                        method: method.name(),
+                        substeps: n,
+                        predicted,
+                        work,
+                        default_work,
+                    };
+                    best = Some((method, choice));
+                }
+            }
+        }
+        if best.is_some() {
+            break;
         }
     }
     best
+}
+
+/// What [`choose_forced`] measures and weighs for one body.
+struct Chooser<'a> {
+    tol: &'a Tolerance,
+    body: &'a ForcedBody,
+    pilot: &'a [(f64, ForcedState)],
+    dt: f64,
+    /// The fewest sub-steps per `dt` (a heavy top's stability limit).
+    min: u32,
+    /// Measured cost of one stage, ns.
+    stage_ns: f64,
+}
+
+impl Chooser<'_> {
+    /// The work of `n` sub-steps of `method` per `dt`, ns per simulated s.
+    fn work(&self, method: ForcedSplitting, n: u32) -> f64 {
+        f64::from(n) * method.stages() as f64 * self.stage_ns / self.dt
+    }
+
+    /// The sub-steps with which `method` is predicted to meet the tolerance
+    /// for less work than `limit` (`None`: any up to [`MAX_SUBSTEPS`]),
+    /// and the prediction.
+    fn substeps(&self, method: ForcedSplitting, limit: Option<f64>) -> Option<(u32, f64)> {
+        let cap = limit.map_or(MAX_SUBSTEPS, |limit| {
+            let n = (limit / self.work(method, 1)).ceil() - 1.0;
+            n.clamp(0.0, f64::from(MAX_SUBSTEPS)) as u32
+        });
+        if cap < self.min {
+            return None;
+        }
+        let probe = Probe {
+            tol: self.tol,
+            method,
+            body: self.body,
+            pilot: self.pilot,
+            dt: self.dt,
+        };
+        probe.substeps(self.min, cap)
+    }
 }
 
 /// How many steps of `dt` the pilot run takes at most.
@@ -362,16 +417,19 @@ const PILOT_STEPS: usize = 64;
 const PROBES: usize = 8;
 
 /// The states the local errors are measured at: [`PROBES`] states, evenly
-/// spaced over a pilot run of the default plan of up to [`PILOT_STEPS`]
-/// steps of `dt` (within the horizon) from `start` at `t0`, with their
-/// times. A pilot that stops being finite ends there.
+/// spaced over a pilot run of up to [`PILOT_STEPS`] steps of `dt` (within
+/// the horizon) from `start` at `t0`, with their times. The pilot is
+/// Strang's splitting at `n` sub-steps per `dt` (the stable number): the
+/// states only need to lie near the motion, and it is the cheapest. A
+/// pilot that stops being finite ends there.
 fn pilot(
     tol: &Tolerance,
     body: &ForcedBody,
     start: &ForcedState,
     (t0, dt): (f64, f64),
-    (method, n): (ForcedSplitting, u32),
+    n: u32,
 ) -> Vec<(f64, ForcedState)> {
+    let method = ForcedSplitting::STRANG;
     let steps = ((tol.horizon / dt).ceil() as usize).clamp(1, PILOT_STEPS);
     let stride = (steps / PROBES).max(1);
     let h = dt / f64::from(n.max(1));
@@ -402,12 +460,11 @@ struct Probe<'a> {
 }
 
 impl Probe<'_> {
-    /// The fewest sub-steps per `dt`, at least `min`, with which the
+    /// The fewest sub-steps per `dt`, from `min` to `cap`, with which the
     /// method is predicted to meet the tolerance, and the prediction: a
     /// first guess from the local error at `min` sub-steps and the order,
     /// then doubled until the measured prediction meets the tolerance.
-    fn substeps(&self, min: u32) -> Option<(u32, f64)> {
-        let min = min.min(MAX_SUBSTEPS);
+    fn substeps(&self, min: u32, cap: u32) -> Option<(u32, f64)> {
         let first = self.predicted(min);
         if !first.is_finite() {
             return None;
@@ -421,16 +478,17 @@ impl Probe<'_> {
         let mut n = guess
             .ceil()
             .clamp(f64::from(min) + 1.0, f64::from(MAX_SUBSTEPS)) as u32;
-        loop {
+        while n <= cap {
             let e = self.predicted(n);
             if e <= self.tol.attitude {
                 return Some((n, e));
             }
             if n >= MAX_SUBSTEPS {
-                return None;
+                break;
             }
             n = n.saturating_mul(2).min(MAX_SUBSTEPS);
         }
+        None
     }
 
     /// The predicted error over the horizon at `n` sub-steps per `dt`.

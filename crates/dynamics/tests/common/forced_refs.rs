@@ -7,7 +7,10 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{ForcedBody, ForcedState, Inputs, PointForce, PrincipalState, RigidBody};
+use kreisel_dynamics::{
+    ForcedBody, ForcedPropagator, ForcedSplitting, ForcedState, Inputs, PointForce, PrincipalState,
+    RigidBody,
+};
 use kreisel_inertia::MassProperties;
 use kreisel_kinematics::{rotation_angle_between, rotation_vector_from_quat};
 
@@ -44,6 +47,21 @@ impl Reference {
 
     pub fn attitude(k: &[f64; 15]) -> DQuat {
         DQuat::from_xyzw(k[2], k[3], k[4], k[1]).normalize()
+    }
+
+    /// Runs `method` with `substeps` steps per sample interval; the largest
+    /// attitude error over the samples and the final state.
+    pub fn run(&self, method: ForcedSplitting, substeps: usize) -> (f64, ForcedState) {
+        let h = self.sample_dt() / substeps as f64;
+        let mut p = ForcedPropagator::try_new(method, &self.body, 0.0, self.start).unwrap();
+        let mut worst: f64 = 0.0;
+        for k in 1..self.samples.len() {
+            for _ in 0..substeps {
+                p.try_advance(h).unwrap();
+            }
+            worst = worst.max(self.attitude_error(&p.forced_state(), k));
+        }
+        (worst, p.forced_state())
     }
 
     pub fn attitude_error(&self, s: &ForcedState, k: usize) -> f64 {
