@@ -88,8 +88,8 @@ pub use heavy_top::{
 };
 pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};
 pub use lagrange_top::{
-    EulerAnglesAndRates, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, SteadyPrecession,
-    TopMotionKind,
+    EulerAnglesAndRates, HeavyTopClosedForm, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion,
+    SteadyPrecession, TopMotionKind,
 };
 pub use method::{FreeBodyMethod, HeavyTopMethod};
 pub use moser_veselov::MoserVeselov;
