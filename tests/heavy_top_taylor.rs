@@ -27,8 +27,8 @@ fn run(r: &HeavyTopReference, method: &HeavyTopTaylor, substeps: usize) -> (f64,
 }
 
 /// The default series, one step per sample interval (0.01 s; 0.05 s on
-/// `tumbling`) and 10 and 50 steps per interval (where the adaptive series
-/// stops early): the issue's ≤ 1e-12 rad on the two fast tops over 2 s,
+/// `tumbling`) and 10 and 50 steps per interval (where the default lowers
+/// its order, `HeavyTopTaylor::order_for`: 12 and 9 on the fast tops): the issue's ≤ 1e-12 rad on the two fast tops over 2 s,
 /// and near rounding on the 10 s slow top and the 5 s tumbling top.
 #[test]
 fn default_reaches_the_references() {

@@ -41,8 +41,10 @@ pub const TAYLOR_MAX_ORDER: usize = 28;
 /// splittings keep them.
 ///
 /// Order: fixed ([`HeavyTopTaylor::new`]) or, for
-/// [`HeavyTopTaylor::DEFAULT`], up to 18 and stopped as soon as two
-/// successive terms are below 2⁻⁵⁶ of their components.
+/// [`HeavyTopTaylor::DEFAULT`], 18 at `h ω_max = 0.8` and lower for
+/// shorter sub-steps ([`HeavyTopTaylor::order_for`], chosen before the
+/// series from the same bound as the sub-steps; a test of the terms
+/// inside the loop cost 20 % of the series' time).
 ///
 /// Sub-steps: `n = ⌈h ω_max / reach⌉` with `ω_max` the bound of
 /// [`HeavyTop::angular_speed_bound`] over the whole motion
@@ -69,12 +71,14 @@ pub const TAYLOR_MAX_ORDER: usize = 28;
 pub struct HeavyTopTaylor {
     order: usize,
     reach: f64,
-    /// Stop a series early once two successive terms are below rounding.
+    /// Lower the order for sub-steps shorter than `reach` (see
+    /// [`HeavyTopTaylor::order_for`]).
     adaptive: bool,
 }
 
-/// The size of a term, relative to its component, below which an adaptive
-/// series stops (two in a row): 2⁻⁵⁶, an eighth of the rounding unit.
+/// The relative size of the first term left out, for which
+/// [`HeavyTopTaylor::order_for`] picks the order: 2⁻⁵⁶, an eighth of the
+/// rounding unit.
 const NEGLIGIBLE: f64 = 1.0 / (1u64 << 56) as f64;
 
 /// The Taylor coefficients of one step, one array per component: `L`,
@@ -96,11 +100,11 @@ thread_local! {
 const M: usize = TAYLOR_MAX_ORDER + 1;
 
 impl HeavyTopTaylor {
-    /// The default series: order up to 18, sub-steps of `h ω_max ≤ 0.8`
-    /// (on the 150 rad/s reference tops: 2 series per 0.01 s, ≤ 1e-13 rad
-    /// over 2 s; `tests/heavy_top_taylor.rs`), each series stopped as soon
-    /// as two successive terms are below 2⁻⁵⁶ of their components (order
-    /// ~10 at `h |ω| = 0.15`), so that short steps cost less.
+    /// The default series: order 18 at sub-steps of `h ω_max = 0.8` (on
+    /// the 150 rad/s reference tops: 2 series per 0.01 s, ≤ 1e-13 rad over
+    /// 2 s; `tests/heavy_top_taylor.rs`), lower for shorter sub-steps
+    /// ([`HeavyTopTaylor::order_for`]: 12 at `h ω_max = 0.16`), so that
+    /// short steps cost less.
     pub const DEFAULT: Self = Self {
         adaptive: true,
         ..Self::new(18, 0.8)
@@ -168,101 +172,117 @@ impl HeavyTopTaylor {
         }
     }
 
-    /// One series step of `h` (no sub-steps).
-    fn series_step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64) {
-        SCRATCH.with_borrow_mut(|s| self.series_in(s, top, state, h));
+    /// The order of one series over a sub-step with `h ω_max = x`: the
+    /// fixed order, or for an adaptive series (the default) two more than
+    /// the least order at which the first term left out falls below 2⁻⁵⁶,
+    /// assuming the terms fall geometrically with a ratio proportional to
+    /// `x` and that the full order is just enough at `x = reach`.
+    ///
+    /// ```text
+    /// p(x) = min(p, ⌈ln ε / ln(x / ρ)⌉ + 1),   ρ = reach · ε^(−1/(p+1)),   ε = 2⁻⁵⁶
+    /// ```
+    /// (order 12 at `x = 0.16`, 9 at `x = 0.03` for the default).
+    ///
+    /// ```
+    /// use kreisel_dynamics::HeavyTopTaylor;
+    /// assert_eq!(HeavyTopTaylor::DEFAULT.order_for(0.8), 18);
+    /// assert_eq!(HeavyTopTaylor::DEFAULT.order_for(0.156), 12);
+    /// assert_eq!(HeavyTopTaylor::DEFAULT.order_for(0.03), 9);
+    /// assert_eq!(HeavyTopTaylor::new(18, 0.8).order_for(0.156), 18);
+    /// ```
+    pub fn order_for(&self, x: f64) -> usize {
+        if !self.adaptive || x.is_nan() {
+            return self.order;
+        }
+        if x <= 0.0 {
+            // No motion over the step (a top at rest at the bottom).
+            return 1;
+        }
+        let p = self.order as f64;
+        let ln_eps = NEGLIGIBLE.ln();
+        let ln_rho = self.reach.ln() - ln_eps / (p + 1.0);
+        let ratio = x.ln() - ln_rho;
+        if ratio >= 0.0 {
+            return self.order;
+        }
+        // Two orders above the estimate: measured on the four reference
+        // tops at `x` ≈ 0.03, the estimate alone is one order short of
+        // rounding level, and one more is 2× the rounding floor on the
+        // asymmetric top (`tests/heavy_top_taylor.rs`).
+        let needed = (ln_eps / ratio).ceil() + 1.0;
+        needed.clamp(1.0, p) as usize
     }
 
-    /// [`HeavyTopTaylor::series_step`] in the scratch space `s`.
-    fn series_in(&self, s: &mut Series, top: &HeavyTop, state: &mut PrincipalState, h: f64) {
-        let inverse = 1.0 / top.body().principal_moments();
-        let d = DVec3::new(
-            inverse.z - inverse.y,
-            inverse.x - inverse.z,
-            inverse.y - inverse.x,
-        );
-        let c = top.com_principal();
-        let q0 = state.world_from_principal;
-        let gamma0 = q0.normalize().conjugate() * top.weight_world();
-        let x0 = [
-            state.l_principal.x,
-            state.l_principal.y,
-            state.l_principal.z,
-            gamma0.x,
-            gamma0.y,
-            gamma0.z,
-            0.0,
-            0.0,
-            0.0,
-            q0.w,
-            q0.x,
-            q0.y,
-            q0.z,
-        ];
-        for (v, x) in s.x.iter_mut().zip(x0) {
-            v[0] = x;
-        }
-        let inv = inverse.to_array();
-        s.set_momentum(0, state.l_principal.to_array(), inv);
-        // Sizes for the adaptive stop: |L| (or the largest torque impulse
-        // of the step, for a top at rest), |γ| = |W| and |q| = 1.
-        let l_scale =
-            state.l_principal.length() + h.abs() * c.length() * top.weight_world().length();
-        let g_scale = top.weight_world().length();
-        let mut p = self.order;
-        let mut small_before = false;
-        let mut hk = 1.0;
-        for k in 0..self.order {
-            // Coefficient k + 1 is read (times zero, in the second lane)
-            // before it is set: clear what the last series left there.
-            for v in s.x.iter_mut() {
-                v[k + 1] = 0.0;
-            }
-            let acc = s.products(k);
-            let r = 1.0 / (k + 1) as f64;
-            let gk = [s.x[G][k], s.x[G + 1][k], s.x[G + 2][k]];
-            let cg = c.cross(DVec3::from_array(gk));
-            let lk = (d * DVec3::new(acc[0], acc[1], acc[2]) + cg) * r;
-            s.set_momentum(k + 1, lk.to_array(), inv);
-            let gk = DVec3::new(acc[3], acc[4], acc[5]) * r;
-            for n in 0..3 {
-                s.x[G + n][k + 1] = gk[n];
-            }
-            let qk = DQuat::from_xyzw(acc[7], acc[8], acc[9], acc[6]) * (0.5 * r);
-            for (n, x) in [qk.w, qk.x, qk.y, qk.z].into_iter().enumerate() {
-                s.x[Q + n][k + 1] = x;
-            }
-            if self.adaptive {
-                hk *= h.abs();
-                let size = (lk.length() / l_scale)
-                    .max(gk.length() / g_scale)
-                    .max(qk.length())
-                    * hk;
-                // A 0/0 (no gravity, or at rest) is dropped by `max`; a
-                // NaN size is not small.
-                let small = size <= NEGLIGIBLE;
-                if small && small_before {
-                    p = k + 1;
-                    break;
-                }
-                small_before = small;
-            }
-        }
-        let horner = |v: &[f64; M + 1]| {
-            let mut x = v[p];
-            for k in (0..p).rev() {
-                x = x * h + v[k];
-            }
-            x
-        };
-        state.l_principal = DVec3::new(horner(&s.x[L]), horner(&s.x[L + 1]), horner(&s.x[L + 2]));
-        state.world_from_principal = DQuat::from_xyzw(
-            horner(&s.x[Q + 1]),
-            horner(&s.x[Q + 2]),
-            horner(&s.x[Q + 3]),
-            horner(&s.x[Q]),
-        );
+    /// One series step of `h` and order `p` (no sub-steps).
+    fn series_step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64, p: usize) {
+        SCRATCH.with_borrow_mut(|s| series_in(s, top, state, h, p));
     }
+}
+
+/// [`HeavyTopTaylor::series_step`] in the scratch space `s`.
+fn series_in(s: &mut Series, top: &HeavyTop, state: &mut PrincipalState, h: f64, p: usize) {
+    let inverse = 1.0 / top.body().principal_moments();
+    let d = DVec3::new(
+        inverse.z - inverse.y,
+        inverse.x - inverse.z,
+        inverse.y - inverse.x,
+    );
+    let c = top.com_principal();
+    let q0 = state.world_from_principal;
+    let gamma0 = q0.normalize().conjugate() * top.weight_world();
+    let x0 = [
+        state.l_principal.x,
+        state.l_principal.y,
+        state.l_principal.z,
+        gamma0.x,
+        gamma0.y,
+        gamma0.z,
+        0.0,
+        0.0,
+        0.0,
+        q0.w,
+        q0.x,
+        q0.y,
+        q0.z,
+    ];
+    for (v, x) in s.x.iter_mut().zip(x0) {
+        v[0] = x;
+    }
+    let inv = inverse.to_array();
+    s.set_momentum(0, state.l_principal.to_array(), inv);
+    for k in 0..p {
+        // Coefficient k + 1 is read (times zero, in the second lane)
+        // before it is set: clear what the last series left there.
+        for v in s.x.iter_mut() {
+            v[k + 1] = 0.0;
+        }
+        let acc = s.products(k);
+        let r = 1.0 / (k + 1) as f64;
+        let gk = [s.x[G][k], s.x[G + 1][k], s.x[G + 2][k]];
+        let cg = c.cross(DVec3::from_array(gk));
+        let lk = d * DVec3::new(acc[0], acc[1], acc[2]) + cg;
+        s.set_momentum(k + 1, (lk * r).to_array(), inv);
+        for n in 0..3 {
+            s.x[G + n][k + 1] = acc[3 + n] * r;
+        }
+        for n in 0..4 {
+            s.x[Q + n][k + 1] = acc[6 + n] * (0.5 * r);
+        }
+    }
+    let horner = |v: &[f64; M + 1]| {
+        let mut x = v[p];
+        for k in (0..p).rev() {
+            x = x * h + v[k];
+        }
+        x
+    };
+    state.l_principal = DVec3::new(horner(&s.x[L]), horner(&s.x[L + 1]), horner(&s.x[L + 2]));
+    state.world_from_principal = DQuat::from_xyzw(
+        horner(&s.x[Q + 1]),
+        horner(&s.x[Q + 2]),
+        horner(&s.x[Q + 3]),
+        horner(&s.x[Q]),
+    );
 }
 
 /// Where the components live in [`Series::x`]: `L`, `γ`, `ω`, `q` (w, x, y, z).
@@ -406,8 +426,9 @@ impl HeavyTopIntegrator for HeavyTopTaylor {
     ) -> Result<(), DynamicsError> {
         let n = self.try_substeps(top, state, h)?;
         let sub = h / n as f64;
+        let p = self.order_for(sub.abs() * top.angular_speed_bound(state));
         for _ in 0..n {
-            self.series_step(top, state, sub);
+            self.series_step(top, state, sub, p);
         }
         Ok(())
     }
@@ -422,8 +443,8 @@ mod tests {
 
     /// Without gravity the heavy top is a free body: the series against
     /// the exact elliptic solution (an independent closed form), at steps
-    /// from a sub-step of `h |ω| = 0.8` (full order) to `0.008` (the
-    /// adaptive series stops early), fixed-order and adaptive.
+    /// from a sub-step of `h |ω| = 0.8` (full order) to `0.008` (order 8 for
+    /// the default), fixed-order and adaptive.
     #[test]
     fn free_body_matches_the_exact_solution() {
         let moments = DVec3::new(1.0, 1.7, 2.3);
