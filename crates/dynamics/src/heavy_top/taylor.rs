@@ -156,9 +156,12 @@ impl HeavyTopTaylor {
         state: &PrincipalState,
         h: f64,
     ) -> Result<usize, DynamicsError> {
-        let needed = (h.abs() * top.angular_speed_bound(state) / self.reach)
-            .ceil()
-            .max(1.0);
+        self.substeps_for(h, top.angular_speed_bound(state))
+    }
+
+    /// [`HeavyTopTaylor::try_substeps`] for the speed bound `omega_max`.
+    fn substeps_for(&self, h: f64, omega_max: f64) -> Result<usize, DynamicsError> {
+        let needed = (h.abs() * omega_max / self.reach).ceil().max(1.0);
         // NaN fails the comparison too.
         if needed <= MAX_SUBSTEPS as f64 {
             Ok(needed as usize)
@@ -424,9 +427,10 @@ impl HeavyTopIntegrator for HeavyTopTaylor {
         state: &mut PrincipalState,
         h: f64,
     ) -> Result<(), DynamicsError> {
-        let n = self.try_substeps(top, state, h)?;
+        let omega_max = top.angular_speed_bound(state);
+        let n = self.substeps_for(h, omega_max)?;
         let sub = h / n as f64;
-        let p = self.order_for(sub.abs() * top.angular_speed_bound(state));
+        let p = self.order_for(sub.abs() * omega_max);
         for _ in 0..n {
             self.series_step(top, state, sub, p);
         }

@@ -98,10 +98,33 @@ impl HeavyTopClosedForm {
         })
     }
 
+    /// As [`HeavyTopClosedForm::try_new`].
+    ///
+    /// # Panics
+    /// Where [`HeavyTopClosedForm::try_new`] returns an error.
+    pub fn new(top: &HeavyTop, state: PrincipalState) -> Self {
+        match Self::try_new(top, state) {
+            Ok(motion) => motion,
+            Err(e) => panic!("{e}"),
+        }
+    }
+
     /// The state at time `t` (s) after the start.
     ///
     /// ```text
     /// q(t) = world_from_vertical · Rz(φ) Rx(θ) Rz(ψ) · top_from_principal,   L(t) = J ω(t)
+    /// ```
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::{HeavyTop, HeavyTopClosedForm, PrincipalState};
+    /// // Gravity along −x, symmetry axis on principal x: the frames are relabelled.
+    /// let top = HeavyTop::try_from_principal(DVec3::new(0.01, 0.02, 0.02), DVec3::new(0.1, 0.0, 0.0), 1.0, DVec3::new(-9.81, 0.0, 0.0))?;
+    /// let start = PrincipalState { world_from_principal: DQuat::from_rotation_z(0.5), l_principal: DVec3::new(0.3, 0.01, -0.02) };
+    /// let s = HeavyTopClosedForm::new(&top, start).state_at(0.0);
+    /// assert!(kreisel_kinematics::rotation_angle_between(s.world_from_principal, start.world_from_principal) < 1e-14);
+    /// assert!((s.l_principal - start.l_principal).length() < 1e-14);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn state_at(&self, t: f64) -> PrincipalState {
         let (vertical_from_top, omega_top) = self.motion.world_from_body_and_omega_at(t);
