@@ -2,7 +2,10 @@
 //! tops of `tests/data/heavy_top/` (the shared test problems of
 //! `tests/heavy_top_reference.rs` and `examples/heavy_top_work_precision.rs`):
 //! `bruls` (symmetric: exact free flow) and `asymmetric_fast` (PDMV10 free
-//! flow), at dt = 1e-3.
+//! flow), at dt = 1e-3; and the Taylor series (`HeavyTopTaylor::DEFAULT`,
+//! `taylor`) and one `state_at` of the closed form of the Lagrange top
+//! `bruls` (`HeavyTopClosedForm`, `closed_form`, plus its set-up
+//! `closed_form_setup`).
 //!
 //! ```text
 //! cargo bench --bench heavy_top
@@ -16,7 +19,9 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use kreisel::dynamics::{HEAVY_TOP_METHODS, heavy_top_method};
+use kreisel::dynamics::{
+    HEAVY_TOP_METHODS, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopTaylor, heavy_top_method,
+};
 
 #[path = "../tests/common/heavy_top.rs"]
 mod heavy_top;
@@ -38,6 +43,25 @@ fn step(c: &mut Criterion) {
                     method.step(&r.top, black_box(&mut s), 1e-3);
                     s
                 });
+            });
+        }
+        group.bench_with_input(
+            BenchmarkId::new(scenario, "taylor"),
+            &r.start,
+            |b, start| {
+                b.iter(|| {
+                    let mut s = *start;
+                    HeavyTopTaylor::DEFAULT.step(&r.top, black_box(&mut s), 1e-3);
+                    s
+                });
+            },
+        );
+        if let Ok(closed) = HeavyTopClosedForm::try_new(&r.top, r.start) {
+            group.bench_function(BenchmarkId::new(scenario, "closed_form"), |b| {
+                b.iter(|| closed.state_at(black_box(1.234)));
+            });
+            group.bench_function(BenchmarkId::new(scenario, "closed_form_setup"), |b| {
+                b.iter(|| HeavyTopClosedForm::try_new(&r.top, black_box(r.start)));
             });
         }
     }

@@ -3,55 +3,111 @@
 //! asymmetric top with its centre of mass off the principal axes, both
 //! spinning at 150 rad/s, 2 s): the largest attitude error over the
 //! reference samples (every 0.01 s) and the run time per step, for every
-//! method of `kreisel::dynamics::HEAVY_TOP_METHODS` over a range of step
-//! sizes. Prints a Markdown table (used in BENCHMARKS.md) and, with
-//! `--csv FILE`, writes `scenario,method,dt,error_rad,ns_per_step`.
+//! method of `kreisel::dynamics::HEAVY_TOP_METHODS`, the Taylor series
+//! (`HeavyTopTaylor::DEFAULT`, `taylor`) and, on the Lagrange top `bruls`,
+//! the closed form (`HeavyTopClosedForm`, `closed_form`: built once, then
+//! one `state_at` per step; its time per 2 s includes the set-up) over a
+//! range of step sizes. Prints a Markdown table (used in BENCHMARKS.md)
+//! and, with `--csv FILE`, writes `scenario,method,dt,error_rad,ns_per_step`.
 //!
 //! ```text
 //! cargo run --release --example heavy_top_work_precision -- --csv benches/heavy_top_work_precision.csv
 //! ```
 //!
 //! Timing: interleaved rounds (every round times every point once), the
-//! median of five rounds; a run is the whole 2 s of one top.
+//! median of eleven rounds; a run is the whole 2 s of one top.
 
 use std::hint::black_box;
 use std::io::Write;
 use std::time::Instant;
 
-use kreisel::dynamics::{HEAVY_TOP_METHODS, heavy_top_method};
+use kreisel::dynamics::{
+    HEAVY_TOP_METHODS, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopTaylor, heavy_top_method,
+};
 
 #[path = "../tests/common/heavy_top.rs"]
 mod heavy_top;
 
-/// Step sizes, s (each divides the 0.01 s sample interval).
+/// Step sizes, s (each divides the 0.01 s sample interval). The closed
+/// form, evaluated at any t, also runs at 1/60 s, the game-loop frame.
 const STEPS: [f64; 6] = [1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4];
 /// Timed rounds over all points (the median is reported).
-const ROUNDS: usize = 5;
+const ROUNDS: usize = 11;
+
+/// How a point moves its top.
+#[derive(Clone, Copy)]
+enum Mover {
+    /// A registered method, stepped.
+    Method(&'static str),
+    /// `HeavyTopTaylor::DEFAULT`, stepped.
+    Taylor,
+    /// `HeavyTopClosedForm`: built once, evaluated every step.
+    ClosedForm,
+}
+
+impl Mover {
+    fn name(self) -> &'static str {
+        match self {
+            Mover::Method(name) => name,
+            Mover::Taylor => "taylor",
+            Mover::ClosedForm => "closed_form",
+        }
+    }
+
+    /// The whole run of `steps` steps of `dt` from the start; `visit(k, state)`
+    /// after every step.
+    fn run(
+        self,
+        r: &heavy_top::HeavyTopReference,
+        dt: f64,
+        steps: usize,
+        mut visit: impl FnMut(usize, &kreisel::dynamics::PrincipalState),
+    ) {
+        let stepped = |m: &dyn HeavyTopIntegrator, visit: &mut dyn FnMut(usize, &_)| {
+            let mut s = r.start;
+            for k in 1..=steps {
+                m.step(&r.top, black_box(&mut s), dt);
+                visit(k, &s);
+            }
+        };
+        match self {
+            Mover::Method(name) => stepped(
+                heavy_top_method(name).expect("registered").as_ref(),
+                &mut visit,
+            ),
+            Mover::Taylor => stepped(&HeavyTopTaylor::DEFAULT, &mut visit),
+            Mover::ClosedForm => {
+                let closed = HeavyTopClosedForm::try_new(&r.top, black_box(r.start))
+                    .expect("a Lagrange top");
+                for k in 1..=steps {
+                    visit(k, &closed.state_at(black_box(k as f64 * dt)));
+                }
+            }
+        }
+    }
+}
 
 /// One point of the set.
 struct Point {
     scenario: &'static str,
-    method: &'static str,
+    mover: Mover,
     dt: f64,
     steps: usize,
     error: f64,
     times_ns: Vec<f64>,
 }
 
-/// Runs `method` over the reference with step `dt`; the largest attitude
-/// error over the samples.
-fn error(r: &heavy_top::HeavyTopReference, method: &str, dt: f64) -> f64 {
-    let m = heavy_top_method(method).expect("registered");
+/// The largest attitude error over the samples the steps land on.
+fn error(r: &heavy_top::HeavyTopReference, mover: Mover, dt: f64, steps: usize) -> f64 {
     let interval = r.samples[1].0 - r.samples[0].0;
-    let per_sample = (interval / dt).round() as usize;
-    let mut s = r.start;
     let mut worst: f64 = 0.0;
-    for k in 1..r.samples.len() {
-        for _ in 0..per_sample {
-            m.step(&r.top, &mut s, dt);
+    mover.run(r, dt, steps, |k, s| {
+        let t = k as f64 * dt;
+        let sample = (t / interval).round();
+        if (sample * interval - t).abs() < 1e-9 * interval {
+            worst = worst.max(r.attitude_error(s, sample as usize));
         }
-        worst = worst.max(r.attitude_error(&s, k));
-    }
+    });
     worst
 }
 
@@ -66,14 +122,24 @@ fn main() {
     let mut points = Vec::new();
     for (scenario, r) in scenarios.iter().zip(&references) {
         let duration = r.samples.last().expect("samples").0;
-        for method in HEAVY_TOP_METHODS {
-            for dt in STEPS {
+        let mut movers: Vec<Mover> = HEAVY_TOP_METHODS.into_iter().map(Mover::Method).collect();
+        movers.push(Mover::Taylor);
+        if r.top.symmetry_axis().is_some() {
+            movers.push(Mover::ClosedForm);
+        }
+        for mover in movers {
+            let mut steps_list = STEPS.to_vec();
+            if matches!(mover, Mover::ClosedForm) {
+                steps_list.insert(0, 1.0 / 60.0);
+            }
+            for dt in steps_list {
+                let steps = (duration / dt).round() as usize;
                 points.push(Point {
                     scenario,
-                    method,
+                    mover,
                     dt,
-                    steps: (duration / dt).round() as usize,
-                    error: error(r, method, dt),
+                    steps,
+                    error: error(r, mover, dt, steps),
                     times_ns: Vec::new(),
                 });
             }
@@ -85,13 +151,10 @@ fn main() {
                 .iter()
                 .position(|s| *s == p.scenario)
                 .expect("known")];
-            let m = heavy_top_method(p.method).expect("registered");
-            let mut s = r.start;
             let start = Instant::now();
-            for _ in 0..p.steps {
-                m.step(&r.top, black_box(&mut s), p.dt);
-            }
-            black_box(s);
+            p.mover.run(r, p.dt, p.steps, |_, s| {
+                black_box(s);
+            });
             p.times_ns
                 .push(start.elapsed().as_nanos() as f64 / p.steps as f64);
         }
@@ -102,18 +165,26 @@ fn main() {
     for p in &mut points {
         p.times_ns.sort_by(f64::total_cmp);
         let ns = p.times_ns[ROUNDS / 2];
+        let dt = if (p.dt - 1.0 / 60.0).abs() < 1e-15 {
+            "1/60".to_owned()
+        } else {
+            format!("{:e}", p.dt)
+        };
         println!(
-            "| {} | {} | {:e} | {:.1e} | {:.0} | {:.2} |",
+            "| {} | {} | {dt} | {:.1e} | {:.0} | {:.3} |",
             p.scenario,
-            p.method,
-            p.dt,
+            p.mover.name(),
             p.error,
             ns,
             ns * p.steps as f64 * 1e-6
         );
         rows.push(format!(
             "{},{},{:e},{:e},{:.1}",
-            p.scenario, p.method, p.dt, p.error, ns
+            p.scenario,
+            p.mover.name(),
+            p.dt,
+            p.error,
+            ns
         ));
     }
     if let Some(path) = csv {

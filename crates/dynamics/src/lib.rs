@@ -84,12 +84,12 @@ pub use forced::{
 };
 pub use heavy_top::{
     HEAVY_TOP_METHODS, HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
-    MAX_SUBSTEPS, heavy_top_method, integrate_heavy_top,
+    HeavyTopTaylor, MAX_SUBSTEPS, TAYLOR_MAX_ORDER, heavy_top_method, integrate_heavy_top,
 };
 pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};
 pub use lagrange_top::{
-    EulerAnglesAndRates, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, SteadyPrecession,
-    TopMotionKind,
+    EulerAnglesAndRates, HeavyTopClosedForm, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion,
+    SteadyPrecession, TopMotionKind,
 };
 pub use method::{FreeBodyMethod, HeavyTopMethod};
 pub use moser_veselov::MoserVeselov;

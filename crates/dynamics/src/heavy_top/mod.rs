@@ -7,6 +7,7 @@ mod free_flow;
 mod integrator;
 mod rk4;
 mod splitting;
+mod taylor;
 
 use glam::{DQuat, DVec3};
 use kreisel_inertia::MassProperties;
@@ -17,6 +18,7 @@ pub use self::integrator::{
 };
 pub use self::rk4::HeavyTopRk4;
 pub use self::splitting::HeavyTopSplitting;
+pub use self::taylor::{HeavyTopTaylor, TAYLOR_MAX_ORDER};
 
 pub(crate) use self::free_flow::FreeFlow;
 use crate::{DynamicsError, PrincipalState, RigidBody};

@@ -293,10 +293,7 @@ impl LagrangeTopMotion {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn world_from_body_at(&self, t: f64) -> DQuat {
-        let e = self.signed_euler(t);
-        DQuat::from_rotation_z(e.phi)
-            * DQuat::from_rotation_x(e.theta)
-            * DQuat::from_rotation_z(e.psi)
+        attitude(&self.signed_euler(t))
     }
 
     /// The angular velocity in body axes at time `t` (s), rad/s.
@@ -314,15 +311,32 @@ impl LagrangeTopMotion {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn omega_body_at(&self, t: f64) -> DVec3 {
-        let e = self.signed_euler(t);
-        let (st, ct) = e.theta.sin_cos();
-        let (sp, cp) = e.psi.sin_cos();
-        DVec3::new(
-            e.phi_dot * st * sp + e.theta_dot * cp,
-            e.phi_dot * st * cp - e.theta_dot * sp,
-            e.phi_dot * ct + e.psi_dot,
-        )
+        omega_body(&self.signed_euler(t))
     }
+
+    /// [`LagrangeTopMotion::world_from_body_at`] and
+    /// [`LagrangeTopMotion::omega_body_at`] from one evaluation of the
+    /// angles.
+    pub(super) fn world_from_body_and_omega_at(&self, t: f64) -> (DQuat, DVec3) {
+        let e = self.signed_euler(t);
+        (attitude(&e), omega_body(&e))
+    }
+}
+
+/// `Rz(φ) · Rx(θ) · Rz(ψ)`.
+fn attitude(e: &EulerAnglesAndRates) -> DQuat {
+    DQuat::from_rotation_z(e.phi) * DQuat::from_rotation_x(e.theta) * DQuat::from_rotation_z(e.psi)
+}
+
+/// `ω = (φ̇ sin θ sin ψ + θ̇ cos ψ,  φ̇ sin θ cos ψ − θ̇ sin ψ,  φ̇ cos θ + ψ̇)`.
+fn omega_body(e: &EulerAnglesAndRates) -> DVec3 {
+    let (st, ct) = e.theta.sin_cos();
+    let (sp, cp) = e.psi.sin_cos();
+    DVec3::new(
+        e.phi_dot * st * sp + e.theta_dot * cp,
+        e.phi_dot * st * cp - e.theta_dot * sp,
+        e.phi_dot * ct + e.psi_dot,
+    )
 }
 
 #[cfg(test)]

@@ -24,6 +24,7 @@
 mod centre;
 mod classify;
 mod evaluate;
+mod heavy;
 mod motion;
 mod roots;
 mod steady;
@@ -31,6 +32,7 @@ mod steady;
 mod tests;
 mod third_kind;
 
+pub use heavy::HeavyTopClosedForm;
 pub use motion::LagrangeTopMotion;
 
 use crate::DynamicsError;
