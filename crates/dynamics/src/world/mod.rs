@@ -26,6 +26,7 @@ mod registry;
 mod setters;
 mod state;
 mod stepping;
+mod uniform;
 
 use std::num::NonZeroUsize;
 
@@ -33,10 +34,12 @@ use glam::DVec3;
 
 pub use self::body::{Body, BodyBuilder, Support};
 pub use self::plan::Plan;
+use self::state::Reading;
 pub use self::state::{BodyId, BodyState};
 
 use self::clock::Clock;
 use self::plan::Motion;
+use self::uniform::{Rotation, UniformBatch};
 use crate::{
     DivergenceCheck, DynamicsError, ForcedBody, ForcedState, FreeBodyMethod, HeavyTop,
     HeavyTopMethod, PrincipalState, RigidBody,
@@ -72,6 +75,16 @@ pub struct World {
     heavy_method: HeavyTopMethod,
     clock: Clock,
     entries: Vec<Entry>,
+    /// What a read of each entry needs, compact and in body order.
+    reads: Vec<Reading>,
+    /// The uniform rotations (spheres, principal spins), evaluated together.
+    uniform: UniformBatch,
+    /// The entries a move touches one by one, ascending: every body that
+    /// is neither resting nor a uniform rotation.
+    moving: Vec<usize>,
+    /// Resting bodies and uniform rotations planned since the world last
+    /// moved: from the next move on they report the exact solution's state.
+    fresh: Vec<usize>,
     failed: Option<DynamicsError>,
     threads: NonZeroUsize,
 }
@@ -89,9 +102,6 @@ struct Entry {
     baseline: PrincipalState,
     /// The free body's checks (a heavy top's borrow the top: made per call).
     check: Option<DivergenceCheck<'static>>,
-    /// Centre of mass and velocity at world time `since` (free bodies;
-    /// a forced body's are in its motion, copied here when it is replanned).
-    ballistic: (DVec3, DVec3, f64),
 }
 
 impl std::fmt::Debug for World {
@@ -102,6 +112,8 @@ impl std::fmt::Debug for World {
             .field("heavy_top_method", &self.heavy_method)
             .field("clock", &self.clock)
             .field("bodies", &self.entries)
+            .field("uniform_rotations", &self.uniform.len())
+            .field("moving", &self.moving.len())
             .field("failed", &self.failed)
             .field("threads", &self.threads)
             .finish()
@@ -142,6 +154,10 @@ impl World {
             heavy_method: HeavyTopMethod::Auto,
             clock: Clock::new(dt),
             entries: Vec::new(),
+            reads: Vec::new(),
+            uniform: UniformBatch::default(),
+            moving: Vec::new(),
+            fresh: Vec::new(),
             failed: None,
             threads: NonZeroUsize::MIN,
         })
@@ -368,6 +384,7 @@ impl World {
         let state =
             PrincipalState::try_from_omega_body(&rigid, body.world_from_body(), body.omega_body())?;
         let (plan, motion, check) = self.plan_for(&body, &rigid, top.as_ref(), state, ballistic)?;
+        let body_mass = body.mass();
         self.entries.push(Entry {
             body,
             rigid,
@@ -376,9 +393,80 @@ impl World {
             motion,
             baseline: state,
             check,
-            ballistic,
         });
-        Ok(BodyId(self.entries.len() - 1))
+        self.reads.push(Reading::new(body_mass, ballistic));
+        let index = self.entries.len() - 1;
+        self.place(index);
+        Ok(BodyId(index))
+    }
+
+    /// Puts entry `index` (its motion just made) where the world moves it:
+    /// a uniform rotation into the batch, a resting body nowhere (both
+    /// into `fresh`), any other into `moving`.
+    fn place(&mut self, index: usize) {
+        let entry = &mut self.entries[index];
+        if let Motion::Exact {
+            solution,
+            start,
+            state,
+        } = &entry.motion
+            && let Some(parts) = solution.uniform_parts()
+        {
+            let (q0, _, l) = parts;
+            let at_start = PrincipalState {
+                world_from_principal: q0,
+                l_principal: l,
+            };
+            let q_norm = entry.baseline.world_from_principal.length();
+            let finite_is_enough = (0.5..=2.0).contains(&q_norm)
+                && entry
+                    .check
+                    .as_ref()
+                    .is_some_and(|c| c.check(&at_start, 0.0).is_ok());
+            let slot = self.uniform.push(Rotation {
+                entry: index,
+                parts,
+                start: *start,
+                q: state.world_from_principal,
+                l: state.l_principal,
+                finite_is_enough,
+            });
+            entry.motion = Motion::Uniform { slot };
+        } else if !matches!(entry.motion, Motion::Resting { .. }) {
+            if let Err(at) = self.moving.binary_search(&index) {
+                self.moving.insert(at, index);
+            }
+            self.refresh_reading(index);
+            return;
+        }
+        if self.fresh.last() != Some(&index) {
+            self.fresh.push(index);
+        }
+        self.refresh_reading(index);
+    }
+
+    /// Takes entry `index` out of the batch or of `moving` (before its
+    /// motion is replaced).
+    fn unplace(&mut self, index: usize) {
+        match self.entries[index].motion {
+            Motion::Uniform { slot } => {
+                if let Some((moved, slot)) = self.uniform.swap_remove(slot) {
+                    self.entries[moved].motion = Motion::Uniform { slot };
+                    self.refresh_reading(moved);
+                }
+            }
+            Motion::Resting { .. } => {}
+            _ => {
+                if let Ok(at) = self.moving.binary_search(&index) {
+                    self.moving.remove(at);
+                }
+            }
+        }
+    }
+
+    /// The rotational state of entry `index` now.
+    fn rotation(&self, index: usize) -> PrincipalState {
+        self.entries[index].motion.state(&self.uniform)
     }
 
     /// The plan, the motion and the checks of a body in `state` now, its
@@ -424,7 +512,7 @@ impl World {
     /// Remakes every plan from the current states.
     fn replan_all(&mut self) -> Result<(), DynamicsError> {
         for index in 0..self.entries.len() {
-            let state = self.entries[index].motion.state();
+            let state = self.rotation(index);
             self.replan(index, state)?;
         }
         Ok(())
@@ -433,10 +521,10 @@ impl World {
     /// Gives body `index` the rotational state `state` now and remakes its plan.
     fn replan(&mut self, index: usize, state: PrincipalState) -> Result<(), DynamicsError> {
         let now = self.time();
-        let entry = &mut self.entries[index];
+        let entry = &self.entries[index];
         state.validate(entry.rigid.principal_moments())?;
         if let Some((_, s)) = entry.motion.forced_state() {
-            entry.ballistic = (s.position_world, s.velocity_world, now);
+            self.reads[index].ballistic = (s.position_world, s.velocity_world, now);
         }
         let entry = &self.entries[index];
         let (plan, motion, check) = self.plan_for(
@@ -444,10 +532,12 @@ impl World {
             &entry.rigid,
             entry.top.as_ref(),
             state,
-            entry.ballistic,
+            self.reads[index].ballistic,
         )?;
+        self.unplace(index);
         let entry = &mut self.entries[index];
         (entry.plan, entry.motion, entry.check, entry.baseline) = (plan, motion, check, state);
+        self.place(index);
         Ok(())
     }
 
