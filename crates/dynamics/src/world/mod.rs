@@ -17,7 +17,25 @@
 //!   mass moves with the splitting, and their energy is the mechanical
 //!   energy, whose change is the work of the inputs ([`BodyState`]).
 //! - Every state reached is checked ([`crate::DivergenceCheck`]; for
-//!   forced bodies: finiteness and `|q|`, since energy is not conserved).
+//!   forced bodies: finiteness and `|q|`, since energy is not conserved;
+//!   for uniform rotations: finiteness, the only thing that can change —
+//!   see `uniform.rs`).
+//!
+//! **What a move touches.** Bodies of one kind are kept together:
+//!
+//! ```text
+//! resting (Plan::Resting)                 nothing: not in any loop (settled once, at the first move after its plan)
+//! uniform (Plan::Sphere, PrincipalSpin)   one structure-of-arrays batch, q(t) = q₀ ⊗ exp(t ω) in one loop
+//! every other plan                        `moving`: the ascending list of the entries a move visits
+//! ```
+//!
+//! A setter remakes the body's plan and moves it between these (the batch
+//! fills a freed slot with its last one). Reads ([`World::state`],
+//! [`World::states`], [`World::attitudes`]) go through a compact per-body
+//! table that keeps what is constant while a plan lasts (a resting body's
+//! whole rotational state; a uniform rotation's ω and energy), so reading
+//! every body each frame does not walk the large entries. Every number is
+//! the one the body's exact solution gives on its own, bit for bit.
 
 mod body;
 mod clock;

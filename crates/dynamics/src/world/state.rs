@@ -89,28 +89,29 @@ impl World {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn state(&self, id: BodyId) -> Option<BodyState> {
-        (id.0 < self.reads.len()).then(|| self.state_of(id.0))
+        let read = self.reads.get(id.0)?;
+        Some(self.state_of(id.0, read))
     }
 
-    /// The state of entry `index` (an index of the world).
-    fn state_of(&self, index: usize) -> BodyState {
-        let read = &self.reads[index];
-        let (world_from_body, omega_body, l_world, rotational) = match read.lane {
+    /// The state of entry `index`, whose reading is `read`.
+    #[inline]
+    fn state_of(&self, index: usize, read: &Reading) -> BodyState {
+        let (world_from_body, omega_body, l_world, rotational) = match &read.lane {
             Lane::Resting {
                 world_from_body,
                 omega_body,
                 l_world,
                 rotational,
-            } => (world_from_body, omega_body, l_world, rotational),
+            } => (*world_from_body, *omega_body, *l_world, *rotational),
             Lane::Uniform {
                 slot,
                 body_from_principal,
                 omega_body,
                 rotational,
             } => {
-                let (q, l) = self.uniform.state(slot);
+                let (q, l) = self.uniform.state(*slot);
                 let world_from_body = q * body_from_principal.conjugate();
-                (world_from_body, omega_body, q.normalize() * l, rotational)
+                (world_from_body, *omega_body, q.normalize() * l, *rotational)
             }
             Lane::Entry => return self.entry_state(index),
         };
@@ -148,7 +149,10 @@ impl World {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn states(&self) -> impl ExactSizeIterator<Item = (BodyId, BodyState)> + '_ {
-        (0..self.reads.len()).map(move |i| (BodyId(i), self.state_of(i)))
+        self.reads
+            .iter()
+            .enumerate()
+            .map(move |(i, read)| (BodyId(i), self.state_of(i, read)))
     }
 
     /// Every body's attitude now (body → world), in the order added: what
@@ -183,7 +187,9 @@ impl World {
             })
     }
 
-    /// The state of entry `index`, computed from the entry (any plan).
+    /// The state of entry `index`, computed from the entry (any plan; not
+    /// inlined, so that the reads of the compact lanes stay small).
+    #[inline(never)]
     fn entry_state(&self, index: usize) -> BodyState {
         let entry = &self.entries[index];
         let state = self.rotation(index);
