@@ -88,6 +88,7 @@ impl World {
     /// assert_eq!((s.omega_body, s.l_world, s.energy), (glam::DVec3::Y, 2.0 * glam::DVec3::Y, 1.0));
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
+    #[inline]
     pub fn state(&self, id: BodyId) -> Option<BodyState> {
         let read = self.reads.get(id.0)?;
         // Two returns, each built in place: a value merged from both
