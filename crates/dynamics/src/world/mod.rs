@@ -450,7 +450,7 @@ impl World {
                 finite_is_enough,
             });
             entry.motion = Motion::Uniform { slot };
-        } else if !matches!(entry.motion, Motion::Resting { .. }) {
+        } else if entry.motion.is_moving() {
             if let Err(at) = self.moving.binary_search(&index) {
                 self.moving.insert(at, index);
             }
@@ -475,6 +475,7 @@ impl World {
             }
             Motion::Resting { .. } => {}
             _ => {
+                // Ascending: found by bisection.
                 if let Ok(at) = self.moving.binary_search(&index) {
                     self.moving.remove(at);
                 }
@@ -552,10 +553,19 @@ impl World {
             state,
             self.reads[index].ballistic,
         )?;
-        self.unplace(index);
+        // A body that moves before and after stays where it is in `moving`
+        // (a controller replanning every body each frame pays no list work).
+        let stays = self.entries[index].motion.is_moving() && motion.is_moving();
+        if !stays {
+            self.unplace(index);
+        }
         let entry = &mut self.entries[index];
         (entry.plan, entry.motion, entry.check, entry.baseline) = (plan, motion, check, state);
-        self.place(index);
+        if stays {
+            self.refresh_reading(index);
+        } else {
+            self.place(index);
+        }
         Ok(())
     }
 

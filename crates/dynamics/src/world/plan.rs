@@ -324,6 +324,17 @@ impl Motion {
         }
     }
 
+    /// Whether a move visits this motion in the world's `moving` list:
+    /// every motion but a resting body and a uniform rotation (in the
+    /// batch, or an exact solution that will be put there).
+    pub(crate) fn is_moving(&self) -> bool {
+        match self {
+            Motion::Resting { .. } | Motion::Uniform { .. } => false,
+            Motion::Exact { solution, .. } => solution.uniform_parts().is_none(),
+            _ => true,
+        }
+    }
+
     /// A forced body's state and body (`None` for the other motions).
     pub(crate) fn forced_state(&self) -> Option<(&ForcedBody, &ForcedState)> {
         match self {
