@@ -27,7 +27,10 @@
 //!    .propagator(..).advance(h)`) on the same bodies; one iteration is one
 //!    frame, 1/throughput the time per body-step.
 //! 4. `world_step_1_60_10k`: the same frame on 10⁴ asymmetric bodies,
-//!    spheres and resting bodies.
+//!    spheres and resting bodies: `world_step` alone, and
+//!    `world_step_read_all`, the frame followed by a read of every body's
+//!    state (`World::states`, what a game or robotics loop reads each
+//!    frame), the same work for every kind.
 //! 5. `world_heavy_tops_1k_step_1_60`: 10³ heavy tops (the Brüls top and the
 //!    asymmetric fast top of `tests/data/heavy_top/`) through the World
 //!    (auto), one frame per iteration, on one thread (`world_step`, the
@@ -64,7 +67,7 @@ use criterion::{
     criterion_main, measurement::WallTime,
 };
 use kreisel::dynamics::{
-    Body, BodyId, ExactSolution, FreeBodyMethod, Plan, PrincipalState, Propagator, World,
+    Body, BodyId, BodyState, ExactSolution, FreeBodyMethod, Plan, PrincipalState, Propagator, World,
 };
 use kreisel::kinematics::glam::{DQuat, DVec3};
 use kreisel::kinematics::rotation_angle_between;
@@ -227,11 +230,19 @@ fn auto_world(kind: Kind, n: usize) -> (World, Vec<BodyId>) {
     (world, ids)
 }
 
+/// Every field of a state read, summed (as a balanced tree, so the sum
+/// adds little latency to the read): a read must compute them all.
+fn consume(s: &BodyState) -> f64 {
+    let q = s.world_from_body;
+    let v = (s.omega_body + s.l_world) + (s.position + s.velocity);
+    ((s.time + s.energy) + (q.w + q.x)) + ((q.y + q.z) + (v.x + (v.y + v.z)))
+}
+
 /// Reads every body's state (as a writer of rows does); a sum to keep it.
 fn read_all(world: &World, ids: &[BodyId]) -> f64 {
     ids.iter()
         .filter_map(|&id| world.state(id))
-        .map(|s| s.world_from_body.w + s.energy)
+        .map(|s| consume(&s))
         .sum()
 }
 
@@ -468,7 +479,8 @@ fn game(c: &mut Criterion) {
     group.finish();
 }
 
-/// 4: one frame of 10⁴ bodies of each family.
+/// 4: one frame of 10⁴ bodies of each family, without and with a read of
+/// every body.
 fn frames_by_kind(c: &mut Criterion) {
     let n = scale().bodies;
     let mut group = c.benchmark_group("world_step_1_60_10k");
@@ -481,6 +493,14 @@ fn frames_by_kind(c: &mut Criterion) {
             BenchmarkId::new("world_step", kind.name()),
             &mut world,
         );
+        let id = BenchmarkId::new("world_step_read_all", kind.name());
+        group.bench_function(id, |b| {
+            b.iter(|| {
+                world.step(H).expect("no divergence");
+                let read: f64 = world.states().map(|(_, s)| consume(&s)).sum();
+                black_box(read)
+            })
+        });
     }
     group.finish();
 }

@@ -177,10 +177,7 @@ impl ExactSolution {
     pub(crate) fn state_at_split(&self, t_hi: f64, t_lo: f64) -> PrincipalState {
         let t = t_hi + t_lo;
         let (world_from_principal, l_principal) = match &self.motion {
-            Motion::Uniform { q0, l, omega } => (
-                *q0 * kreisel_kinematics::quat_from_rotation_vector(*omega * t),
-                *l,
-            ),
+            Motion::Uniform { q0, l, omega } => (uniform_rotation(*q0, *omega, t), *l),
             Motion::Symmetric {
                 start,
                 perpendicular,
@@ -197,6 +194,16 @@ impl ExactSolution {
         PrincipalState {
             world_from_principal,
             l_principal: l_principal * self.unit,
+        }
+    }
+
+    /// For a uniform rotation: `(q₀, ω, L)` with `q(t) = uniform_rotation(q₀, ω, t)`
+    /// and `L` constant, bit for bit what [`ExactSolution::state_at`]
+    /// gives (the world evaluates these in a batch); `None` otherwise.
+    pub(crate) fn uniform_parts(&self) -> Option<(DQuat, DVec3, DVec3)> {
+        match &self.motion {
+            Motion::Uniform { q0, l, omega } => Some((*q0, *omega, *l * self.unit)),
+            _ => None,
         }
     }
 
@@ -245,6 +252,17 @@ impl ExactSolution {
             _ => 0,
         }
     }
+}
+
+/// The uniform rotation at `t`, the exact motion of a sphere or of a spin
+/// about a principal axis (ω in the units of the motion).
+///
+/// ```text
+/// q(t) = q₀ ⊗ exp(t ω)
+/// ```
+#[inline]
+pub(crate) fn uniform_rotation(q0: DQuat, omega: DVec3, t: f64) -> DQuat {
+    q0 * kreisel_kinematics::quat_from_rotation_vector(omega * t)
 }
 
 /// The exact flow as an integrator (registry name `"exact"`): no truncation

@@ -23,7 +23,25 @@
 //!   takes the cheapest method and sub-steps predicted to meet it
 //!   ([`World::choice`]).
 //! - Every state reached is checked ([`crate::DivergenceCheck`]; for
-//!   forced bodies: finiteness and `|q|`, since energy is not conserved).
+//!   forced bodies: finiteness and `|q|`, since energy is not conserved;
+//!   for uniform rotations: finiteness, the only thing that can change —
+//!   see `uniform.rs`).
+//!
+//! **What a move touches.** Bodies of one kind are kept together:
+//!
+//! ```text
+//! resting (Plan::Resting)                 nothing: not in any loop (settled once, at the first move after its plan)
+//! uniform (Plan::Sphere, PrincipalSpin)   one structure-of-arrays batch, q(t) = q₀ ⊗ exp(t ω) in one loop
+//! every other plan                        `moving`: the ascending list of the entries a move visits
+//! ```
+//!
+//! A setter remakes the body's plan and moves it between these (the batch
+//! fills a freed slot with its last one). Reads ([`World::state`],
+//! [`World::states`], [`World::attitudes`]) go through a compact per-body
+//! table that keeps what is constant while a plan lasts (a resting body's
+//! whole rotational state; a uniform rotation's ω and energy), so reading
+//! every body each frame does not walk the large entries. Every number is
+//! the one the body's exact solution gives on its own, bit for bit.
 
 mod body;
 mod clock;
@@ -33,6 +51,7 @@ mod setters;
 mod state;
 mod stepping;
 mod tolerance;
+mod uniform;
 
 use std::num::NonZeroUsize;
 
@@ -40,11 +59,13 @@ use glam::DVec3;
 
 pub use self::body::{Body, BodyBuilder, Support};
 pub use self::plan::Plan;
+use self::state::Reading;
 pub use self::state::{BodyId, BodyState};
 pub use self::tolerance::{Choice, Tolerance};
 
 use self::clock::Clock;
 use self::plan::Motion;
+use self::uniform::{Rotation, UniformBatch};
 use crate::{
     DivergenceCheck, DynamicsError, ForcedBody, ForcedState, FreeBodyMethod, HeavyTop,
     HeavyTopMethod, PrincipalState, RigidBody,
@@ -80,6 +101,16 @@ pub struct World {
     heavy_method: HeavyTopMethod,
     clock: Clock,
     entries: Vec<Entry>,
+    /// What a read of each entry needs, compact and in body order.
+    reads: Vec<Reading>,
+    /// The uniform rotations (spheres, principal spins), evaluated together.
+    uniform: UniformBatch,
+    /// The entries a move touches one by one, ascending: every body that
+    /// is neither resting nor a uniform rotation.
+    moving: Vec<usize>,
+    /// Resting bodies and uniform rotations planned since the world last
+    /// moved: from the next move on they report the exact solution's state.
+    fresh: Vec<usize>,
     failed: Option<DynamicsError>,
     threads: NonZeroUsize,
     tolerance: Option<Tolerance>,
@@ -98,9 +129,6 @@ struct Entry {
     baseline: PrincipalState,
     /// The free body's checks (a heavy top's borrow the top: made per call).
     check: Option<DivergenceCheck<'static>>,
-    /// Centre of mass and velocity at world time `since` (free bodies;
-    /// a forced body's are in its motion, copied here when it is replanned).
-    ballistic: (DVec3, DVec3, f64),
     /// What the world's tolerance chose for the body, if one is set.
     choice: Option<Choice>,
 }
@@ -121,6 +149,8 @@ impl std::fmt::Debug for World {
             .field("heavy_top_method", &self.heavy_method)
             .field("clock", &self.clock)
             .field("bodies", &self.entries)
+            .field("uniform_rotations", &self.uniform.len())
+            .field("moving", &self.moving.len())
             .field("failed", &self.failed)
             .field("threads", &self.threads)
             .field("tolerance", &self.tolerance)
@@ -162,6 +192,10 @@ impl World {
             heavy_method: HeavyTopMethod::Auto,
             clock: Clock::new(dt),
             entries: Vec::new(),
+            reads: Vec::new(),
+            uniform: UniformBatch::default(),
+            moving: Vec::new(),
+            fresh: Vec::new(),
             failed: None,
             threads: NonZeroUsize::MIN,
             tolerance: None,
@@ -401,6 +435,7 @@ impl World {
             check,
             choice,
         } = self.plan_for(&body, &rigid, top.as_ref(), state, ballistic)?;
+        let body_mass = body.mass();
         self.entries.push(Entry {
             body,
             rigid,
@@ -409,10 +444,82 @@ impl World {
             motion,
             baseline: state,
             check,
-            ballistic,
             choice,
         });
-        Ok(BodyId(self.entries.len() - 1))
+        self.reads.push(Reading::new(body_mass, ballistic));
+        let index = self.entries.len() - 1;
+        self.place(index);
+        Ok(BodyId(index))
+    }
+
+    /// Puts entry `index` (its motion just made) where the world moves it:
+    /// a uniform rotation into the batch, a resting body nowhere (both
+    /// into `fresh`), any other into `moving`.
+    fn place(&mut self, index: usize) {
+        let entry = &mut self.entries[index];
+        if let Motion::Exact {
+            solution,
+            start,
+            state,
+        } = &entry.motion
+            && let Some(parts) = solution.uniform_parts()
+        {
+            let (q0, _, l) = parts;
+            let at_start = PrincipalState {
+                world_from_principal: q0,
+                l_principal: l,
+            };
+            let q_norm = entry.baseline.world_from_principal.length();
+            let finite_is_enough = (0.5..=2.0).contains(&q_norm)
+                && entry
+                    .check
+                    .as_ref()
+                    .is_some_and(|c| c.check(&at_start, 0.0).is_ok());
+            let slot = self.uniform.push(Rotation {
+                entry: index,
+                parts,
+                start: *start,
+                q: state.world_from_principal,
+                l: state.l_principal,
+                finite_is_enough,
+            });
+            entry.motion = Motion::Uniform { slot };
+        } else if entry.motion.is_moving() {
+            if let Err(at) = self.moving.binary_search(&index) {
+                self.moving.insert(at, index);
+            }
+            self.refresh_reading(index);
+            return;
+        }
+        if self.fresh.last() != Some(&index) {
+            self.fresh.push(index);
+        }
+        self.refresh_reading(index);
+    }
+
+    /// Takes entry `index` out of the batch or of `moving` (before its
+    /// motion is replaced).
+    fn unplace(&mut self, index: usize) {
+        match self.entries[index].motion {
+            Motion::Uniform { slot } => {
+                if let Some((moved, slot)) = self.uniform.swap_remove(slot) {
+                    self.entries[moved].motion = Motion::Uniform { slot };
+                    self.refresh_reading(moved);
+                }
+            }
+            Motion::Resting { .. } => {}
+            _ => {
+                // Ascending: found by bisection.
+                if let Ok(at) = self.moving.binary_search(&index) {
+                    self.moving.remove(at);
+                }
+            }
+        }
+    }
+
+    /// The rotational state of entry `index` now.
+    fn rotation(&self, index: usize) -> PrincipalState {
+        self.entries[index].motion.state(&self.uniform)
     }
 
     /// The plan, the motion, the checks and the tolerance's choice of a
@@ -553,7 +660,7 @@ impl World {
     /// Remakes every plan from the current states.
     fn replan_all(&mut self) -> Result<(), DynamicsError> {
         for index in 0..self.entries.len() {
-            let state = self.entries[index].motion.state();
+            let state = self.rotation(index);
             self.replan(index, state)?;
         }
         Ok(())
@@ -562,12 +669,12 @@ impl World {
     /// Gives body `index` the rotational state `state` now and remakes its plan.
     fn replan(&mut self, index: usize, state: PrincipalState) -> Result<(), DynamicsError> {
         let now = self.time();
-        let entry = &mut self.entries[index];
+        let entry = &self.entries[index];
         state.validate(entry.rigid.principal_moments())?;
         // A free body's centre of mass flies on from where its splitting
         // left it (a top's pivot stays where it is).
         if let (None, Some((_, s))) = (&entry.top, entry.motion.forced_state()) {
-            entry.ballistic = (s.position_world, s.velocity_world, now);
+            self.reads[index].ballistic = (s.position_world, s.velocity_world, now);
         }
         let entry = &self.entries[index];
         let planned = self.plan_for(
@@ -575,12 +682,23 @@ impl World {
             &entry.rigid,
             entry.top.as_ref(),
             state,
-            entry.ballistic,
+            self.reads[index].ballistic,
         )?;
+        // A body that moves before and after stays where it is in `moving`
+        // (a controller replanning every body each frame pays no list work).
+        let stays = self.entries[index].motion.is_moving() && planned.motion.is_moving();
+        if !stays {
+            self.unplace(index);
+        }
         let entry = &mut self.entries[index];
         (entry.plan, entry.motion, entry.check, entry.choice) =
             (planned.plan, planned.motion, planned.check, planned.choice);
         entry.baseline = state;
+        if stays {
+            self.refresh_reading(index);
+        } else {
+            self.place(index);
+        }
         Ok(())
     }
 

@@ -16,6 +16,7 @@
 use std::fmt;
 
 use super::registry;
+use super::uniform::UniformBatch;
 use crate::elliptic::dd::Dd;
 use crate::exact::ExactKind;
 use crate::{
@@ -266,6 +267,9 @@ pub(crate) enum Motion {
         state: PrincipalState,
         settled: PrincipalState,
     },
+    /// A uniform rotation (sphere, principal spin), evaluated in the
+    /// world's batch: its slot there.
+    Uniform { slot: usize },
     /// The exact solution from the world time `start`, and its last value.
     Exact {
         solution: ExactSolution,
@@ -292,7 +296,13 @@ pub(crate) enum Motion {
 
 impl fmt::Debug for Motion {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_tuple("Motion").field(&self.state()).finish()
+        match self {
+            Motion::Uniform { slot } => f.debug_struct("Uniform").field("slot", slot).finish(),
+            other => f
+                .debug_tuple("Motion")
+                .field(&other.state(&UniformBatch::default()))
+                .finish(),
+        }
     }
 }
 
@@ -370,13 +380,31 @@ impl Motion {
         }
     }
 
-    /// The current state.
-    pub(crate) fn state(&self) -> PrincipalState {
+    /// The current state (`batch`: the world's uniform rotations).
+    pub(crate) fn state(&self, batch: &UniformBatch) -> PrincipalState {
         match self {
+            Motion::Uniform { slot } => {
+                let (world_from_principal, l_principal) = batch.state(*slot);
+                PrincipalState {
+                    world_from_principal,
+                    l_principal,
+                }
+            }
             Motion::Resting { state, .. } | Motion::HeavyTop(state) => *state,
             Motion::Exact { state, .. } => *state,
             Motion::Stepping(propagator) => propagator.state(),
             Motion::Forced { state, .. } => state.rotation,
+        }
+    }
+
+    /// Whether a move visits this motion in the world's `moving` list:
+    /// every motion but a resting body and a uniform rotation (in the
+    /// batch, or an exact solution that will be put there).
+    pub(crate) fn is_moving(&self) -> bool {
+        match self {
+            Motion::Resting { .. } | Motion::Uniform { .. } => false,
+            Motion::Exact { solution, .. } => solution.uniform_parts().is_none(),
+            _ => true,
         }
     }
 
@@ -387,22 +415,16 @@ impl Motion {
             _ => None,
         }
     }
+}
 
-    /// For the exact motion: evaluates it at world time `now`.
-    pub(crate) fn evaluate_at(&mut self, now: Dd) {
-        if let Motion::Exact {
-            solution,
-            start,
-            state,
-        } = self
-        {
-            let t = if start.hi == 0.0 && start.lo == 0.0 {
-                now
-            } else {
-                now.add(start.neg())
-            };
-            *state = solution.state_at_split(t.hi, t.lo);
-        }
+/// The time since world time `start`, double-double (`now` itself for a
+/// start at 0).
+#[inline]
+pub(crate) fn elapsed(now: Dd, start: Dd) -> Dd {
+    if start.hi == 0.0 && start.lo == 0.0 {
+        now
+    } else {
+        now.add(start.neg())
     }
 }
 

@@ -35,7 +35,7 @@ impl World {
     /// ```
     pub fn set_omega_body(&mut self, id: BodyId, omega_body: DVec3) -> Result<(), DynamicsError> {
         let entry = self.entry(id)?;
-        let state = entry.motion.state();
+        let state = self.rotation(id.0);
         let world_from_body = state.world_from_body(&entry.rigid);
         let next = PrincipalState::try_from_omega_body(&entry.rigid, world_from_body, omega_body)?;
         self.replan(id.0, next)
@@ -66,7 +66,8 @@ impl World {
                 reason: "angular impulse is not finite",
             });
         }
-        let state = self.entry(id)?.motion.state();
+        self.entry(id)?;
+        let state = self.rotation(id.0);
         let q = state.world_from_principal.normalize();
         let next = PrincipalState {
             world_from_principal: q,
@@ -96,7 +97,7 @@ impl World {
         world_from_body: DQuat,
     ) -> Result<(), DynamicsError> {
         let entry = self.entry(id)?;
-        let omega_body = entry.motion.state().omega_body(&entry.rigid);
+        let omega_body = self.rotation(id.0).omega_body(&entry.rigid);
         let next = PrincipalState::try_from_omega_body(&entry.rigid, world_from_body, omega_body)?;
         self.replan(id.0, next)
     }
@@ -148,9 +149,8 @@ impl World {
             return Err(DynamicsError::InvalidBody { field, reason });
         }
         let now = self.time();
-        let entry = &mut self.entries[id.0];
-        entry.ballistic = (position, velocity, now);
-        if let Motion::Forced { state, .. } = &mut entry.motion {
+        self.reads[id.0].ballistic = (position, velocity, now);
+        if let Motion::Forced { state, .. } = &mut self.entries[id.0].motion {
             (state.position_world, state.velocity_world) = (position, velocity);
         }
         Ok(())
@@ -194,7 +194,7 @@ impl World {
                 super::Plan::forced_splitting(self.free_body_method())?;
             }
         }
-        let state = entry.motion.state();
+        let state = self.rotation(id.0);
         let previous = entry.body.inputs().clone();
         self.entries[id.0].body.set_inputs(inputs);
         let replanned = self.replan(id.0, state);

@@ -6,7 +6,7 @@
 //! [`crate::ForcedPropagator::try_advance`].
 
 use super::clock::{Clock, Route};
-use super::plan::Motion;
+use super::plan::{Motion, elapsed};
 use super::{Entry, World, registry};
 use crate::{
     DivergenceCheck, DynamicsError, ForcedBody, ForcedSplitting, ForcedState, HeavyTop,
@@ -111,6 +111,9 @@ impl World {
     /// Moves every body along `route`, checking every state reached: the
     /// bodies that step every `dt` (heavy tops, forced bodies) on up to
     /// [`World::threads`] scoped threads, the others on the calling thread.
+    /// Resting bodies are not touched (but for the first move after their
+    /// plan was made); uniform rotations are evaluated in their batch; the
+    /// loop over the other entries visits only them (`moving`).
     fn run(&mut self, route: Route) -> Result<(), DynamicsError> {
         if let Some(error) = &self.failed {
             return Err(error.clone());
@@ -125,8 +128,41 @@ impl World {
             heavy: self.heavy_method,
         };
         let mut first: Option<Failure> = None;
+        // Bodies planned since the last move report the exact solution's
+        // state from now on.
+        let mut fresh = std::mem::take(&mut self.fresh);
+        for &index in &fresh {
+            match &mut self.entries[index].motion {
+                Motion::Resting { state, settled } => *state = *settled,
+                Motion::Uniform { slot } => self.uniform.settle(*slot),
+                _ => {}
+            }
+            self.refresh_reading(index);
+        }
+        fresh.clear();
+        self.fresh = fresh;
+        for slot in self.uniform.evaluate(end) {
+            let index = self.uniform.entry(slot);
+            let entry = &self.entries[index];
+            let state = entry.motion.state(&self.uniform);
+            let failure = entry
+                .check
+                .as_ref()
+                .and_then(|c| c.check(&state, route.end).err());
+            first = earlier(first, failure.map(|e| (route.whole + 1, index, e)));
+        }
         let mut jobs = Vec::new();
-        for (index, entry) in self.entries.iter_mut().enumerate() {
+        // The entries of `moving` (ascending), borrowed one by one.
+        let mut rest: &mut [Entry] = &mut self.entries;
+        let mut offset = 0;
+        for &index in &self.moving {
+            let Some((entry, tail)) = std::mem::take(&mut rest)
+                .get_mut(index - offset..)
+                .and_then(|s| s.split_first_mut())
+            else {
+                break;
+            };
+            (rest, offset) = (tail, index + 1);
             let Entry {
                 motion,
                 top,
@@ -135,17 +171,20 @@ impl World {
                 ..
             } = entry;
             let failure = match motion {
-                // At rest the state is the exact solution's value at its
-                // start, finite and checked when the plan was made.
-                Motion::Resting { state, settled } => {
-                    *state = *settled;
-                    None
-                }
-                motion @ Motion::Exact { .. } => {
-                    motion.evaluate_at(end);
+                // Not in `moving`: settled above (at rest the state is the
+                // exact solution's value at its start, finite and checked
+                // when the plan was made) or evaluated in the batch.
+                Motion::Resting { .. } | Motion::Uniform { .. } => None,
+                Motion::Exact {
+                    solution,
+                    start,
+                    state,
+                } => {
+                    let t = elapsed(end, *start);
+                    *state = solution.state_at_split(t.hi, t.lo);
                     check
                         .as_ref()
-                        .and_then(|c| c.check(&motion.state(), route.end).err())
+                        .and_then(|c| c.check(state, route.end).err())
                         .map(|e| (route.whole + 1, e))
                 }
                 // Free-body propagators are not `Send`: stepped here.
