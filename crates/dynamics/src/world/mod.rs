@@ -68,7 +68,7 @@ use self::plan::Motion;
 use self::uniform::{Rotation, UniformBatch};
 use crate::{
     DivergenceCheck, DynamicsError, ForcedBody, ForcedState, FreeBodyMethod, HeavyTop,
-    HeavyTopMethod, PrincipalState, RigidBody,
+    HeavyTopClosedForm, HeavyTopMethod, PrincipalState, RigidBody,
 };
 
 /// Bodies under gravity, stepped together: the library's engine.
@@ -402,11 +402,16 @@ impl World {
     /// use glam::DVec3;
     /// use kreisel_dynamics::{Body, Plan, World};
     /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1e-3)?;
-    /// let top = Body::from_principal_moments(1.0, DVec3::new(0.02, 0.02, 0.01))
-    ///     .omega_body(DVec3::new(0.0, 0.0, 50.0))
-    ///     .pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO)
-    ///     .try_build()?;
-    /// let id = world.add(top)?;
+    /// let top = |pivot_body| {
+    ///     Body::from_principal_moments(1.0, DVec3::new(0.02, 0.02, 0.01))
+    ///         .omega_body(DVec3::new(0.0, 0.0, 50.0))
+    ///         .pivot(pivot_body, DVec3::ZERO)
+    ///         .try_build()
+    /// };
+    /// let id = world.add(top(DVec3::new(0.0, 0.0, -0.1))?)?;
+    /// // Two equal moments, the centre of mass on the axis: a Lagrange top.
+    /// assert_eq!(world.plan(id), Some(&Plan::LagrangeTop));
+    /// let id = world.add(top(DVec3::new(0.01, 0.0, -0.1))?)?;
     /// assert_eq!(world.plan(id), Some(&Plan::HeavyTop(kreisel_dynamics::HeavyTopMethod::Auto)));
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
@@ -537,8 +542,8 @@ impl World {
             .tolerance
             .filter(|_| self.free_method == FreeBodyMethod::Auto);
         let (plan, motion, check, choice) = match top {
-            Some(_) => {
-                let (plan, motion, choice) = self.plan_on_pivot(body, state)?;
+            Some(top) => {
+                let (plan, motion, choice) = self.plan_on_pivot(body, top, state)?;
                 (plan, motion, None, choice)
             }
             None if !body.inputs().is_none() => {
@@ -602,6 +607,7 @@ impl World {
     fn plan_on_pivot(
         &self,
         body: &Body,
+        top: &HeavyTop,
         state: PrincipalState,
     ) -> Result<(Plan, Motion, Option<Choice>), DynamicsError> {
         let auto = self.heavy_method == HeavyTopMethod::Auto;
@@ -617,6 +623,17 @@ impl World {
                 reason: "has no pivot",
             });
         };
+        // A Lagrange top under auto: its closed form, at rounding level
+        // and evaluated only where asked, whatever the tolerance.
+        if !driven && auto && top.symmetry_axis().is_some() {
+            let closed = HeavyTopClosedForm::try_new(top, state)?;
+            let motion = Motion::LagrangeTop {
+                closed: Box::new(closed),
+                start: self.clock.now(),
+                state,
+            };
+            return Ok((Plan::LagrangeTop, motion, None));
+        }
         if !driven && tolerance.is_none() {
             let (plan, motion) = Motion::heavy_top(self.heavy_method, state);
             return Ok((plan, motion, None));

@@ -8,6 +8,7 @@
 //! free, two equal moments             symmetric:   two commuting rotations
 //! free, three distinct moments        asymmetric:  Jacobi elliptic functions, evaluated where asked
 //! free, a stepping method chosen      stepping:    the method, every dt
+//! pivot, Lagrange top, auto           Lagrange:    the closed form, evaluated where asked
 //! pivot                               heavy top:   the heavy-top method, every dt (auto sub-steps)
 //! free, with applied inputs           forced:      a torque splitting, every dt
 //! pivot, with applied inputs          driven top:  the splitting with gravity kicked too, every dt
@@ -21,7 +22,7 @@ use crate::elliptic::dd::Dd;
 use crate::exact::ExactKind;
 use crate::{
     DivergenceCheck, DynamicsError, ExactSolution, ForcedBody, ForcedSplitting, ForcedState,
-    FreeBodyMethod, HeavyTopMethod, PrincipalState, Propagator,
+    FreeBodyMethod, HeavyTopClosedForm, HeavyTopMethod, PrincipalState, Propagator,
 };
 
 /// What a body of a [`crate::World`] is and how it is moved (see
@@ -69,6 +70,12 @@ pub enum Plan {
     /// A body on a pivot under gravity, moved by the heavy-top method
     /// every `dt`.
     HeavyTop(HeavyTopMethod),
+    /// A Lagrange top (two equal moments about the pivot, the centre of
+    /// mass on the symmetry axis) under the `auto` heavy-top method and
+    /// without inputs: the closed form ([`crate::HeavyTopClosedForm`]),
+    /// set up once and evaluated only at the times asked, at rounding
+    /// level.
+    LagrangeTop,
     /// A free body with applied inputs (torques, forces, damping, a law),
     /// moved by the kick–drift–kick splitting `method` every `dt`: the
     /// free flow alternates with exact kicks of the loads
@@ -107,6 +114,7 @@ impl Plan {
                 | Plan::PrincipalSpin { .. }
                 | Plan::Symmetric { .. }
                 | Plan::Asymmetric
+                | Plan::LagrangeTop
         )
     }
 }
@@ -248,6 +256,10 @@ impl fmt::Display for Plan {
                 method.name(),
                 method.order()
             ),
+            Plan::LagrangeTop => write!(
+                f,
+                "Lagrange top on a pivot: exact, closed form in elliptic functions set up once and evaluated only at the times asked (two equal moments, centre of mass on the symmetry axis)"
+            ),
             Plan::DrivenTop { method } => write!(
                 f,
                 "driven heavy top on a pivot: {} (order {}) every dt, kick-drift-kick splitting of the free flow about the pivot and exact kicks of gravity and the loads (torques, forces or damping are applied)",
@@ -280,6 +292,13 @@ pub(crate) enum Motion {
     Stepping(Box<dyn Propagator>),
     /// A heavy top: its state, stepped by the world's heavy-top method.
     HeavyTop(PrincipalState),
+    /// A Lagrange top's closed form from the world time `start`, and its
+    /// last value.
+    LagrangeTop {
+        closed: Box<HeavyTopClosedForm>,
+        start: Dd,
+        state: PrincipalState,
+    },
     /// A free body under inputs: the splitting, the body with its loads,
     /// the state, and `|q|` when the plan was made (the checks' reference).
     Forced {
@@ -391,7 +410,7 @@ impl Motion {
                 }
             }
             Motion::Resting { state, .. } | Motion::HeavyTop(state) => *state,
-            Motion::Exact { state, .. } => *state,
+            Motion::Exact { state, .. } | Motion::LagrangeTop { state, .. } => *state,
             Motion::Stepping(propagator) => propagator.state(),
             Motion::Forced { state, .. } => state.rotation,
         }

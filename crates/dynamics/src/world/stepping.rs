@@ -9,8 +9,8 @@ use super::clock::{Clock, Route};
 use super::plan::{Motion, elapsed};
 use super::{Entry, World, registry};
 use crate::{
-    DivergenceCheck, DynamicsError, ForcedBody, ForcedSplitting, ForcedState, HeavyTop,
-    HeavyTopMethod, PrincipalState, forced,
+    Divergence, DivergenceCheck, DynamicsError, ForcedBody, ForcedSplitting, ForcedState, HeavyTop,
+    HeavyTopClosedForm, HeavyTopMethod, PrincipalState, forced,
 };
 
 /// The first failure of a run: step number, body, error.
@@ -187,6 +187,22 @@ impl World {
                         .and_then(|c| c.check(state, route.end).err())
                         .map(|e| (route.whole + 1, e))
                 }
+                Motion::LagrangeTop {
+                    closed,
+                    start,
+                    state,
+                } => {
+                    let t = elapsed(end, *start);
+                    jobs.push((
+                        index,
+                        Job::LagrangeTop {
+                            closed,
+                            t: t.hi + t.lo,
+                            state,
+                        },
+                    ));
+                    None
+                }
                 // Free-body propagators are not `Send`: stepped here.
                 Motion::Stepping(propagator) => {
                     let check = check.as_ref();
@@ -287,9 +303,16 @@ fn earlier(a: Option<Failure>, b: Option<Failure>) -> Option<Failure> {
     }
 }
 
-/// A body that steps every `dt`, borrowed from its entry so that it can be
-/// sent to another thread (every field is `Send`).
+/// A body that steps every `dt` (or a Lagrange top evaluated once),
+/// borrowed from its entry so that it can be sent to another thread (every
+/// field is `Send`).
 enum Job<'a> {
+    /// A Lagrange top: its closed form evaluated `t` after its start.
+    LagrangeTop {
+        closed: &'a HeavyTopClosedForm,
+        t: f64,
+        state: &'a mut PrincipalState,
+    },
     /// A heavy top: stepped by the world's heavy-top method.
     HeavyTop {
         top: &'a HeavyTop,
@@ -344,6 +367,19 @@ impl Walker {
     /// Moves one stepping body along the route.
     fn job(&self, job: &mut Job<'_>) -> Option<(u64, DynamicsError)> {
         match job {
+            Job::LagrangeTop { closed, t, state } => {
+                **state = closed.state_at(*t);
+                let finite =
+                    state.world_from_principal.is_finite() && state.l_principal.is_finite();
+                (!finite).then(|| {
+                    let error = DynamicsError::Diverged {
+                        method: "closed form",
+                        time: self.route.end,
+                        reason: Divergence::NonFinite,
+                    };
+                    (self.route.whole + 1, error)
+                })
+            }
             Job::HeavyTop {
                 top,
                 baseline,
