@@ -35,7 +35,10 @@ fn heavy_tops_meet_the_tolerance_on_every_reference() {
                 assert!(world.choice(id).is_none());
             } else {
                 assert!(
-                    matches!(world.plan(id), Some(Plan::HeavyTop(_))),
+                    matches!(
+                        world.plan(id),
+                        Some(Plan::HeavyTop(_) | Plan::HeavyTopSeries)
+                    ),
                     "{choice}"
                 );
             }

@@ -656,6 +656,18 @@ impl World {
             let at = (self.time(), self.dt());
             tolerance::choose_forced(&tol, &forced, &start, at, (default, stable))
         });
+        // Without inputs, the Taylor series of the whole top where it meets
+        // the tolerance for less work than any splitting.
+        let default_work = tolerance::splitting_work(&forced, default, stable, self.dt());
+        let series = tolerance
+            .filter(|_| !driven)
+            .and_then(|tol| tolerance::choose_taylor(&tol, top, &state, self.dt(), default_work))
+            .filter(|taylor| chosen.as_ref().is_none_or(|(_, c)| taylor.work < c.work));
+        if let Some(choice) = series {
+            let integrator = &registry::HEAVY_TAYLOR;
+            let motion = Motion::HeavyTop { state, integrator };
+            return Ok((Plan::HeavyTopSeries, motion, Some(choice)));
+        }
         let (method, substeps, choice) = match chosen {
             Some((method, choice)) => (method, choice.substeps, Some(choice)),
             // Nothing chosen (at rounding level): the heavy top's own plan.

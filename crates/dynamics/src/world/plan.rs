@@ -22,7 +22,8 @@ use crate::elliptic::dd::Dd;
 use crate::exact::ExactKind;
 use crate::{
     DivergenceCheck, DynamicsError, ExactSolution, ForcedBody, ForcedSplitting, ForcedState,
-    FreeBodyMethod, HeavyTopClosedForm, HeavyTopMethod, PrincipalState, Propagator,
+    FreeBodyMethod, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopMethod, PrincipalState,
+    Propagator,
 };
 
 /// What a body of a [`crate::World`] is and how it is moved (see
@@ -70,6 +71,11 @@ pub enum Plan {
     /// A body on a pivot under gravity, moved by the heavy-top method
     /// every `dt`.
     HeavyTop(HeavyTopMethod),
+    /// A heavy top moved by the Taylor series of the whole top
+    /// ([`crate::HeavyTopTaylor`], order up to 18, sub-stepped to
+    /// `h ω ≤ 0.8`) every `dt`: what a [`crate::Tolerance`] picks where it is
+    /// the cheapest way to meet it.
+    HeavyTopSeries,
     /// A Lagrange top (two equal moments about the pivot, the centre of
     /// mass on the symmetry axis) under the `auto` heavy-top method and
     /// without inputs: the closed form ([`crate::HeavyTopClosedForm`]),
@@ -256,6 +262,10 @@ impl fmt::Display for Plan {
                 method.name(),
                 method.order()
             ),
+            Plan::HeavyTopSeries => write!(
+                f,
+                "heavy top on a pivot: taylor (series of the whole top, order up to 18, sub-steps of h omega <= 0.8) every dt (gravity exerts a torque about the pivot)"
+            ),
             Plan::LagrangeTop => write!(
                 f,
                 "Lagrange top on a pivot: exact, closed form in elliptic functions set up once and evaluated only at the times asked (two equal moments, centre of mass on the symmetry axis)"
@@ -290,8 +300,12 @@ pub(crate) enum Motion {
     },
     /// A free-body propagator.
     Stepping(Box<dyn Propagator>),
-    /// A heavy top: its state, stepped by the world's heavy-top method.
-    HeavyTop(PrincipalState),
+    /// A heavy top: its state, stepped by `integrator` (the world's
+    /// heavy-top method, or the Taylor series a tolerance chose).
+    HeavyTop {
+        state: PrincipalState,
+        integrator: &'static (dyn HeavyTopIntegrator + Sync),
+    },
     /// A Lagrange top's closed form from the world time `start`, and its
     /// last value.
     LagrangeTop {
@@ -376,7 +390,11 @@ impl Motion {
 
     /// The plan and motion of a heavy top.
     pub(crate) fn heavy_top(method: HeavyTopMethod, state: PrincipalState) -> (Plan, Motion) {
-        (Plan::HeavyTop(method), Motion::HeavyTop(state))
+        let integrator = registry::heavy_top(method);
+        (
+            Plan::HeavyTop(method),
+            Motion::HeavyTop { state, integrator },
+        )
     }
 
     /// The motion of a body under inputs (or a heavy top under a
@@ -409,7 +427,7 @@ impl Motion {
                     l_principal,
                 }
             }
-            Motion::Resting { state, .. } | Motion::HeavyTop(state) => *state,
+            Motion::Resting { state, .. } | Motion::HeavyTop { state, .. } => *state,
             Motion::Exact { state, .. } | Motion::LagrangeTop { state, .. } => *state,
             Motion::Stepping(propagator) => propagator.state(),
             Motion::Forced { state, .. } => state.rotation,

@@ -11,7 +11,8 @@ use crate::composition::{Composition, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 use crate::splitting::{AxisStrang, SymmetricTopSplitting};
 use crate::{
     ExactFlow, FreeBodyIntegrator, FreeBodyMethod, HeavyTopAuto, HeavyTopIntegrator,
-    HeavyTopMethod, HeavyTopRk4, HeavyTopSplitting, MoserVeselov, PreprocessedMoserVeselov, Rk4,
+    HeavyTopMethod, HeavyTopRk4, HeavyTopSplitting, HeavyTopTaylor, MoserVeselov,
+    PreprocessedMoserVeselov, Rk4,
 };
 
 static SPLITTING4: Composition = Composition::new("splitting4", 4, &SUZUKI_4);
@@ -25,6 +26,9 @@ static HEAVY_STRANG: HeavyTopSplitting = HeavyTopSplitting::STRANG;
 static HEAVY_SPLITTING4: HeavyTopSplitting = HeavyTopSplitting::ORDER_4;
 static HEAVY_SPLITTING6: HeavyTopSplitting = HeavyTopSplitting::ORDER_6;
 static HEAVY_SPLITTING8: HeavyTopSplitting = HeavyTopSplitting::ORDER_8;
+/// The Taylor series of the whole heavy top, which a tolerance may choose
+/// ([`crate::Plan::HeavyTopSeries`]).
+pub(crate) static HEAVY_TAYLOR: HeavyTopTaylor = HeavyTopTaylor::DEFAULT;
 
 /// The integrator that runs free-body method `method` (`auto`: the exact
 /// solution).
@@ -46,7 +50,7 @@ pub(crate) fn free_body(method: FreeBodyMethod) -> &'static dyn FreeBodyIntegrat
 }
 
 /// The integrator that runs heavy-top method `method`.
-pub(crate) fn heavy_top(method: HeavyTopMethod) -> &'static dyn HeavyTopIntegrator {
+pub(crate) fn heavy_top(method: HeavyTopMethod) -> &'static (dyn HeavyTopIntegrator + Sync) {
     match method {
         HeavyTopMethod::Auto => &HeavyTopAuto,
         HeavyTopMethod::Rk4 => &HeavyTopRk4,

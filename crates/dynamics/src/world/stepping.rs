@@ -7,10 +7,10 @@
 
 use super::clock::{Clock, Route};
 use super::plan::{Motion, elapsed};
-use super::{Entry, World, registry};
+use super::{Entry, World};
 use crate::{
     Divergence, DivergenceCheck, DynamicsError, ForcedBody, ForcedSplitting, ForcedState, HeavyTop,
-    HeavyTopClosedForm, HeavyTopMethod, PrincipalState, forced,
+    HeavyTopClosedForm, HeavyTopIntegrator, PrincipalState, forced,
 };
 
 /// The first failure of a run: step number, body, error.
@@ -125,7 +125,6 @@ impl World {
         let walker = Walker {
             route,
             clock: self.clock,
-            heavy: self.heavy_method,
         };
         let mut first: Option<Failure> = None;
         // Bodies planned since the last move report the exact solution's
@@ -236,7 +235,7 @@ impl World {
                     ));
                     None
                 }
-                Motion::HeavyTop(state) => {
+                Motion::HeavyTop { state, integrator } => {
                     if let Some(top) = top.as_ref() {
                         jobs.push((
                             index,
@@ -244,6 +243,7 @@ impl World {
                                 top,
                                 baseline,
                                 state,
+                                heavy: *integrator,
                             },
                         ));
                     }
@@ -318,6 +318,7 @@ enum Job<'a> {
         top: &'a HeavyTop,
         baseline: &'a PrincipalState,
         state: &'a mut PrincipalState,
+        heavy: &'static (dyn HeavyTopIntegrator + Sync),
     },
     /// A free body under inputs: stepped by its splitting.
     Forced {
@@ -335,7 +336,6 @@ enum Job<'a> {
 struct Walker {
     route: Route,
     clock: Clock,
-    heavy: HeavyTopMethod,
 }
 
 impl Walker {
@@ -384,8 +384,8 @@ impl Walker {
                 top,
                 baseline,
                 state,
+                heavy,
             } => {
-                let heavy = registry::heavy_top(self.heavy);
                 let check = DivergenceCheck::heavy_top(heavy.name(), top, baseline);
                 let mut step = |k: u64, h: f64| {
                     let mut next = **state;

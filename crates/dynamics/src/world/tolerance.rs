@@ -30,7 +30,7 @@ use glam::DVec3;
 use super::registry;
 use crate::{
     DynamicsError, ExactSolution, ForcedBody, ForcedSplitting, ForcedState, FreeBodyMethod,
-    PrincipalState,
+    HeavyTop, HeavyTopIntegrator, PrincipalState,
 };
 use kreisel_kinematics::rotation_angle_between;
 
@@ -408,6 +408,65 @@ impl Chooser<'_> {
         };
         probe.substeps(self.min, cap)
     }
+}
+
+/// The work of `n` sub-steps of splitting `method` per `dt` on `body`, ns
+/// per simulated second (measured stage costs).
+pub(crate) fn splitting_work(body: &ForcedBody, method: ForcedSplitting, n: u32, dt: f64) -> f64 {
+    let stage_ns = STAGE_NS[usize::from(body.free_flow_is_exact())];
+    f64::from(n) * method.stages() as f64 * stage_ns / dt
+}
+
+/// Measured cost of one series step of [`crate::HeavyTopTaylor`] (order 18), ns:
+/// 0.47 ms for the 400 series steps of the asymmetric fast top over 2 s
+/// (BENCHMARKS.md, heavy top).
+const TAYLOR_NS: f64 = 1200.0;
+
+/// The Taylor series of the whole top ([`crate::HeavyTopTaylor`]) for a heavy top
+/// without inputs from `state`, stepped every `dt`: its predicted error,
+/// measured by step doubling at 8 states of its own pilot run of up to 8
+/// steps, and its work, one series step per `0.8/ω_max` s. `None` at the
+/// rounding level or when it is predicted to miss the tolerance.
+pub(crate) fn choose_taylor(
+    tol: &Tolerance,
+    top: &HeavyTop,
+    state: &PrincipalState,
+    dt: f64,
+    default_work: f64,
+) -> Option<Choice> {
+    if !tol.above_rounding() {
+        return None;
+    }
+    let taylor = &registry::HEAVY_TAYLOR;
+    let steps = ((tol.horizon / dt).ceil() as usize).clamp(1, PROBES);
+    let mut s = *state;
+    let mut worst: f64 = 0.0;
+    for _ in 0..steps {
+        let mut whole = s;
+        let mut halves = s;
+        let stepped = taylor.try_step(top, &mut whole, dt).and_then(|()| {
+            taylor.try_step(top, &mut halves, 0.5 * dt)?;
+            taylor.try_step(top, &mut halves, 0.5 * dt)
+        });
+        let gap = attitude_gap(&whole, &halves);
+        if stepped.is_err() || !gap.is_finite() {
+            return None;
+        }
+        worst = worst.max(gap);
+        s = whole;
+    }
+    let predicted = tol.predicted(worst, dt);
+    let series = (dt * top.angular_speed_bound(state) / 0.8).ceil().max(1.0);
+    let work = TAYLOR_NS * series / dt;
+    (predicted <= tol.attitude && work.is_finite()).then(|| Choice {
+        tolerance: tol.attitude,
+        horizon: tol.horizon,
+        method: "taylor",
+        substeps: series.min(f64::from(u32::MAX)) as u32,
+        predicted,
+        work,
+        default_work,
+    })
 }
 
 /// How many steps of `dt` the pilot run takes at most.
