@@ -252,20 +252,21 @@ impl World {
     }
 
     /// Sets how many threads may move the bodies that step every `dt`
-    /// (heavy tops and bodies with inputs); 1 (the default) moves every
-    /// body on the calling thread. The world splits those bodies into
-    /// contiguous chunks, one per scoped thread (the calling thread takes
-    /// the first), and only when the work is worth a thread:
+    /// (heavy tops and bodies with inputs) and evaluate the symmetric and
+    /// asymmetric exact solutions; 1 (the default) moves every body on the
+    /// calling thread. The world splits those bodies into contiguous
+    /// chunks, one per scoped thread (the calling thread takes the first),
+    /// and only when the work is worth a thread:
     ///
     /// ```text
-    /// threads used = min(n, bodies / 2, bodies · steps / 64), at least 1
+    /// threads used = min(n, bodies / 2, body-steps / 64), at least 1   (an exact evaluation counts as one step)
     /// ```
     ///
     /// Bodies do not interact and each one's arithmetic is the same on any
     /// thread, so the states are bit-identical whatever `n`, and so is the
     /// error of a failed run (the earliest step, then the lowest index).
-    /// Free bodies under a stepping method the user chose and exact
-    /// solutions stay on the calling thread. Loads given as closures run on
+    /// Free bodies under a stepping method the user chose and uniform
+    /// rotations (their batch) stay on the calling thread. Loads given as closures run on
     /// the worker threads (they are `Send + Sync`).
     ///
     /// ```
