@@ -153,7 +153,7 @@ impl World {
                 .and_then(|c| c.check(&state, route.end).err());
             first = earlier(first, failure.map(|e| (route.whole + 1, index, e)));
         }
-        let mut jobs = Vec::new();
+        let mut jobs = Vec::with_capacity(self.moving.len());
         // The entries of `moving` (ascending), borrowed one by one.
         let mut rest: &mut [Entry] = &mut self.entries;
         let mut offset = 0;
