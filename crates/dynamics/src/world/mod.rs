@@ -21,13 +21,10 @@
 //!   for uniform rotations: finiteness, the only thing that can change —
 //!   see `uniform.rs`).
 //!
-//! **What a move touches.** Bodies of one kind are kept together:
-//!
-//! ```text
-//! resting (Plan::Resting)                 nothing: not in any loop (settled once, at the first move after its plan)
-//! uniform (Plan::Sphere, PrincipalSpin)   one structure-of-arrays batch, q(t) = q₀ ⊗ exp(t ω) in one loop
-//! every other plan                        `moving`: the ascending list of the entries a move visits
-//! ```
+//! **What a move touches.** Bodies of one kind are kept together
+//! (`lanes.rs`): resting bodies in no loop, uniform rotations in one
+//! structure-of-arrays batch (`uniform.rs`), every other body on the
+//! ascending list of entries a move visits.
 //!
 //! A setter remakes the body's plan and moves it between these (the batch
 //! fills a freed slot with its last one). Reads ([`World::state`],
@@ -39,6 +36,7 @@
 
 mod body;
 mod clock;
+mod lanes;
 mod plan;
 mod registry;
 mod setters;
@@ -57,7 +55,7 @@ pub use self::state::{BodyId, BodyState};
 
 use self::clock::Clock;
 use self::plan::Motion;
-use self::uniform::{Rotation, UniformBatch};
+use self::uniform::UniformBatch;
 use crate::{
     DivergenceCheck, DynamicsError, ForcedBody, ForcedState, FreeBodyMethod, HeavyTop,
     HeavyTopMethod, PrincipalState, RigidBody,
@@ -417,76 +415,6 @@ impl World {
         let index = self.entries.len() - 1;
         self.place(index);
         Ok(BodyId(index))
-    }
-
-    /// Puts entry `index` (its motion just made) where the world moves it:
-    /// a uniform rotation into the batch, a resting body nowhere (both
-    /// into `fresh`), any other into `moving`.
-    fn place(&mut self, index: usize) {
-        let entry = &mut self.entries[index];
-        if let Motion::Exact {
-            solution,
-            start,
-            state,
-        } = &entry.motion
-            && let Some(parts) = solution.uniform_parts()
-        {
-            let (q0, _, l) = parts;
-            let at_start = PrincipalState {
-                world_from_principal: q0,
-                l_principal: l,
-            };
-            let q_norm = entry.baseline.world_from_principal.length();
-            let finite_is_enough = (0.5..=2.0).contains(&q_norm)
-                && entry
-                    .check
-                    .as_ref()
-                    .is_some_and(|c| c.check(&at_start, 0.0).is_ok());
-            let slot = self.uniform.push(Rotation {
-                entry: index,
-                parts,
-                start: *start,
-                q: state.world_from_principal,
-                l: state.l_principal,
-                finite_is_enough,
-            });
-            entry.motion = Motion::Uniform { slot };
-        } else if entry.motion.is_moving() {
-            if let Err(at) = self.moving.binary_search(&index) {
-                self.moving.insert(at, index);
-            }
-            self.refresh_reading(index);
-            return;
-        }
-        if self.fresh.last() != Some(&index) {
-            self.fresh.push(index);
-        }
-        self.refresh_reading(index);
-    }
-
-    /// Takes entry `index` out of the batch or of `moving` (before its
-    /// motion is replaced).
-    fn unplace(&mut self, index: usize) {
-        match self.entries[index].motion {
-            Motion::Uniform { slot } => {
-                if let Some((moved, slot)) = self.uniform.swap_remove(slot) {
-                    self.entries[moved].motion = Motion::Uniform { slot };
-                    self.refresh_reading(moved);
-                }
-            }
-            Motion::Resting { .. } => {}
-            _ => {
-                // Ascending: found by bisection.
-                if let Ok(at) = self.moving.binary_search(&index) {
-                    self.moving.remove(at);
-                }
-            }
-        }
-    }
-
-    /// The rotational state of entry `index` now.
-    fn rotation(&self, index: usize) -> PrincipalState {
-        self.entries[index].motion.state(&self.uniform)
     }
 
     /// The plan, the motion and the checks of a body in `state` now, its

@@ -130,19 +130,7 @@ impl World {
             heavy: self.heavy_method,
         };
         let mut first: Option<Failure> = None;
-        // Bodies planned since the last move report the exact solution's
-        // state from now on.
-        let mut fresh = std::mem::take(&mut self.fresh);
-        for &index in &fresh {
-            match &mut self.entries[index].motion {
-                Motion::Resting { state, settled } => *state = *settled,
-                Motion::Uniform { slot } => self.uniform.settle(*slot),
-                _ => {}
-            }
-            self.refresh_reading(index);
-        }
-        fresh.clear();
-        self.fresh = fresh;
+        self.settle_fresh();
         for slot in self.uniform.evaluate(end) {
             let index = self.uniform.entry(slot);
             let entry = &self.entries[index];
