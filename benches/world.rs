@@ -30,7 +30,8 @@
 //!    spheres and resting bodies: `world_step` alone, and
 //!    `world_step_read_all`, the frame followed by a read of every body's
 //!    state (`World::states`, what a game or robotics loop reads each
-//!    frame), the same work for every kind.
+//!    frame), the same work for every kind; and the asymmetric frame on
+//!    two threads (`World::set_threads`).
 //! 5. `world_heavy_tops_1k_step_1_60`: 10³ heavy tops (the Brüls top and the
 //!    asymmetric fast top of `tests/data/heavy_top/`) through the World
 //!    (auto), one frame per iteration, on one thread (`world_step`, the
@@ -502,6 +503,14 @@ fn frames_by_kind(c: &mut Criterion) {
             })
         });
     }
+    // The asymmetric frame's evaluations on two threads.
+    let (mut world, _) = auto_world(Kind::Asymmetric, n);
+    world.set_threads(NonZeroUsize::new(2).expect("2"));
+    bench_frames(
+        &mut group,
+        BenchmarkId::new("world_step_2_threads", Kind::Asymmetric.name()),
+        &mut world,
+    );
     group.finish();
 }
 

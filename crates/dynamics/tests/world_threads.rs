@@ -186,3 +186,76 @@ fn the_first_failure_is_the_same_on_any_number_of_threads() {
         );
     }
 }
+
+/// A symmetric free body spinning at ~10²⁰⁰ rad/s about its odd axis,
+/// valid, whose closed form overflows (and turns NaN) past t ≈ 1.8e108 s.
+fn overflowing_symmetric() -> Body {
+    Body::from_principal_moments(1.0, DVec3::new(1e-100, 1.0, 1.0))
+        .omega_body(DVec3::new(1e200, 1.0, 0.0))
+        .try_build()
+        .unwrap()
+}
+
+#[test]
+fn exact_solutions_are_evaluated_on_the_threads_bit_identically() {
+    // 200 exact bodies: 134 asymmetric and symmetric ones evaluated as
+    // jobs, enough for 2 threads (134 / 64), and 66 spheres in their batch.
+    let exact_bodies = |failing: &[usize]| -> Vec<Body> {
+        (0..200)
+            .map(|i| {
+                if failing.contains(&i) {
+                    return overflowing_symmetric();
+                }
+                let f = i as f64;
+                let moments = match i % 3 {
+                    0 => DVec3::new(1.0, 2.0 + 0.01 * f, 3.0),
+                    1 => DVec3::new(1.0, 1.0, 1.5),
+                    _ => DVec3::splat(2.0),
+                };
+                Body::from_principal_moments(1.0, moments)
+                    .world_from_body(DQuat::from_rotation_z(0.01 * f))
+                    .omega_body(DVec3::new(0.3, 1.0 + 0.01 * f, 0.2))
+                    .try_build()
+                    .unwrap()
+            })
+            .collect()
+    };
+    let run_to = |bodies: &[Body], threads: usize, times: &[f64]| {
+        let mut world = World::try_new(DVec3::ZERO, 1e95).unwrap();
+        world.set_threads(NonZeroUsize::new(threads).unwrap());
+        let ids: Vec<_> = bodies
+            .iter()
+            .map(|b| world.add(b.clone()).unwrap())
+            .collect();
+        let mut states = Vec::new();
+        let mut error = None;
+        for &t in times {
+            let result = world.advance_to(t);
+            states.extend(ids.iter().map(|&id| bits(&world.state(id).unwrap())));
+            if let Err(e) = result {
+                error = Some(e.to_string());
+                break;
+            }
+        }
+        (states, error)
+    };
+    let times = [0.37, 12.5, 1e3, 1e110];
+    let calm = exact_bodies(&[]);
+    let (one, error) = run_to(&calm, 1, &times[..3]);
+    assert!(error.is_none());
+    // Bodies 61 and 190 overflow at the last time; on 2 threads they are
+    // in different chunks, and the lower index is reported.
+    let failing = exact_bodies(&[61, 190]);
+    let (one_failing, failure) = run_to(&failing, 1, &times);
+    let failure = failure.expect("the overflow must stop the world");
+    assert!(failure.starts_with("body 61:"), "{failure}");
+    for threads in [2, 5] {
+        assert!(
+            one == run_to(&calm, threads, &times[..3]).0,
+            "{threads} threads"
+        );
+        let (many, other) = run_to(&failing, threads, &times);
+        assert_eq!(other.as_ref(), Some(&failure), "{threads} threads");
+        assert!(one_failing == many, "{threads} threads: states differ");
+    }
+}

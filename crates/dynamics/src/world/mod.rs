@@ -27,13 +27,10 @@
 //!   for uniform rotations: finiteness, the only thing that can change —
 //!   see `uniform.rs`).
 //!
-//! **What a move touches.** Bodies of one kind are kept together:
-//!
-//! ```text
-//! resting (Plan::Resting)                 nothing: not in any loop (settled once, at the first move after its plan)
-//! uniform (Plan::Sphere, PrincipalSpin)   one structure-of-arrays batch, q(t) = q₀ ⊗ exp(t ω) in one loop
-//! every other plan                        `moving`: the ascending list of the entries a move visits
-//! ```
+//! **What a move touches.** Bodies of one kind are kept together
+//! (`lanes.rs`): resting bodies in no loop, uniform rotations in one
+//! structure-of-arrays batch (`uniform.rs`), every other body on the
+//! ascending list of entries a move visits.
 //!
 //! A setter remakes the body's plan and moves it between these (the batch
 //! fills a freed slot with its last one). Reads ([`World::state`],
@@ -45,6 +42,7 @@
 
 mod body;
 mod clock;
+mod lanes;
 mod plan;
 mod registry;
 mod setters;
@@ -65,7 +63,7 @@ pub use self::tolerance::{Choice, Tolerance};
 
 use self::clock::Clock;
 use self::plan::Motion;
-use self::uniform::{Rotation, UniformBatch};
+use self::uniform::UniformBatch;
 use crate::{
     DivergenceCheck, DynamicsError, ForcedBody, ForcedState, FreeBodyMethod, HeavyTop,
     HeavyTopClosedForm, HeavyTopMethod, PrincipalState, RigidBody,
@@ -280,20 +278,21 @@ impl World {
     }
 
     /// Sets how many threads may move the bodies that step every `dt`
-    /// (heavy tops and bodies with inputs); 1 (the default) moves every
-    /// body on the calling thread. The world splits those bodies into
-    /// contiguous chunks, one per scoped thread (the calling thread takes
-    /// the first), and only when the work is worth a thread:
+    /// (heavy tops and bodies with inputs) and evaluate the symmetric and
+    /// asymmetric exact solutions; 1 (the default) moves every body on the
+    /// calling thread. The world splits those bodies into contiguous
+    /// chunks, one per scoped thread (the calling thread takes the first),
+    /// and only when the work is worth a thread:
     ///
     /// ```text
-    /// threads used = min(n, bodies / 2, bodies · steps / 64), at least 1
+    /// threads used = min(n, bodies / 2, body-steps / 64), at least 1   (an exact evaluation counts as one step)
     /// ```
     ///
     /// Bodies do not interact and each one's arithmetic is the same on any
     /// thread, so the states are bit-identical whatever `n`, and so is the
     /// error of a failed run (the earliest step, then the lowest index).
-    /// Free bodies under a stepping method the user chose and exact
-    /// solutions stay on the calling thread. Loads given as closures run on
+    /// Free bodies under a stepping method the user chose and uniform
+    /// rotations (their batch) stay on the calling thread. Loads given as closures run on
     /// the worker threads (they are `Send + Sync`).
     ///
     /// ```
@@ -455,76 +454,6 @@ impl World {
         let index = self.entries.len() - 1;
         self.place(index);
         Ok(BodyId(index))
-    }
-
-    /// Puts entry `index` (its motion just made) where the world moves it:
-    /// a uniform rotation into the batch, a resting body nowhere (both
-    /// into `fresh`), any other into `moving`.
-    fn place(&mut self, index: usize) {
-        let entry = &mut self.entries[index];
-        if let Motion::Exact {
-            solution,
-            start,
-            state,
-        } = &entry.motion
-            && let Some(parts) = solution.uniform_parts()
-        {
-            let (q0, _, l) = parts;
-            let at_start = PrincipalState {
-                world_from_principal: q0,
-                l_principal: l,
-            };
-            let q_norm = entry.baseline.world_from_principal.length();
-            let finite_is_enough = (0.5..=2.0).contains(&q_norm)
-                && entry
-                    .check
-                    .as_ref()
-                    .is_some_and(|c| c.check(&at_start, 0.0).is_ok());
-            let slot = self.uniform.push(Rotation {
-                entry: index,
-                parts,
-                start: *start,
-                q: state.world_from_principal,
-                l: state.l_principal,
-                finite_is_enough,
-            });
-            entry.motion = Motion::Uniform { slot };
-        } else if entry.motion.is_moving() {
-            if let Err(at) = self.moving.binary_search(&index) {
-                self.moving.insert(at, index);
-            }
-            self.refresh_reading(index);
-            return;
-        }
-        if self.fresh.last() != Some(&index) {
-            self.fresh.push(index);
-        }
-        self.refresh_reading(index);
-    }
-
-    /// Takes entry `index` out of the batch or of `moving` (before its
-    /// motion is replaced).
-    fn unplace(&mut self, index: usize) {
-        match self.entries[index].motion {
-            Motion::Uniform { slot } => {
-                if let Some((moved, slot)) = self.uniform.swap_remove(slot) {
-                    self.entries[moved].motion = Motion::Uniform { slot };
-                    self.refresh_reading(moved);
-                }
-            }
-            Motion::Resting { .. } => {}
-            _ => {
-                // Ascending: found by bisection.
-                if let Ok(at) = self.moving.binary_search(&index) {
-                    self.moving.remove(at);
-                }
-            }
-        }
-    }
-
-    /// The rotational state of entry `index` now.
-    fn rotation(&self, index: usize) -> PrincipalState {
-        self.entries[index].motion.state(&self.uniform)
     }
 
     /// The plan, the motion, the checks and the tolerance's choice of a

@@ -8,9 +8,10 @@
 use super::clock::{Clock, Route};
 use super::plan::{Motion, elapsed};
 use super::{Entry, World};
+use crate::elliptic::dd::Dd;
 use crate::{
-    Divergence, DivergenceCheck, DynamicsError, ForcedBody, ForcedSplitting, ForcedState, HeavyTop,
-    HeavyTopClosedForm, HeavyTopIntegrator, PrincipalState, forced,
+    Divergence, DivergenceCheck, DynamicsError, ExactSolution, ForcedBody, ForcedSplitting,
+    ForcedState, HeavyTop, HeavyTopClosedForm, HeavyTopIntegrator, PrincipalState, forced,
 };
 
 /// The first failure of a run: step number, body, error.
@@ -125,21 +126,10 @@ impl World {
         let walker = Walker {
             route,
             clock: self.clock,
+            end,
         };
         let mut first: Option<Failure> = None;
-        // Bodies planned since the last move report the exact solution's
-        // state from now on.
-        let mut fresh = std::mem::take(&mut self.fresh);
-        for &index in &fresh {
-            match &mut self.entries[index].motion {
-                Motion::Resting { state, settled } => *state = *settled,
-                Motion::Uniform { slot } => self.uniform.settle(*slot),
-                _ => {}
-            }
-            self.refresh_reading(index);
-        }
-        fresh.clear();
-        self.fresh = fresh;
+        self.settle_fresh();
         for slot in self.uniform.evaluate(end) {
             let index = self.uniform.entry(slot);
             let entry = &self.entries[index];
@@ -150,7 +140,7 @@ impl World {
                 .and_then(|c| c.check(&state, route.end).err());
             first = earlier(first, failure.map(|e| (route.whole + 1, index, e)));
         }
-        let mut jobs = Vec::new();
+        let mut jobs = Vec::with_capacity(self.moving.len());
         // The entries of `moving` (ascending), borrowed one by one.
         let mut rest: &mut [Entry] = &mut self.entries;
         let mut offset = 0;
@@ -179,12 +169,16 @@ impl World {
                     start,
                     state,
                 } => {
-                    let t = elapsed(end, *start);
-                    *state = solution.state_at_split(t.hi, t.lo);
-                    check
-                        .as_ref()
-                        .and_then(|c| c.check(state, route.end).err())
-                        .map(|e| (route.whole + 1, e))
+                    jobs.push((
+                        index,
+                        Job::Exact {
+                            solution,
+                            start: *start,
+                            state,
+                            check: check.as_ref(),
+                        },
+                    ));
+                    None
                 }
                 Motion::LagrangeTop {
                     closed,
@@ -279,14 +273,14 @@ pub(crate) const MIN_BODIES_PER_THREAD: usize = 2;
 /// world stays on the calling thread).
 pub(crate) const MIN_BODY_STEPS_PER_THREAD: u64 = 64;
 
-/// The number of threads for `bodies` stepping bodies taking `steps` steps
-/// each, at most `threads`:
+/// The number of threads for `bodies` bodies taking `body_steps` steps in
+/// all (an exact evaluation counts as one), at most `threads`:
 ///
 /// ```text
-/// min(threads, bodies / MIN_BODIES_PER_THREAD, bodies·steps / MIN_BODY_STEPS_PER_THREAD), at least 1
+/// min(threads, bodies / MIN_BODIES_PER_THREAD, body_steps / MIN_BODY_STEPS_PER_THREAD), at least 1
 /// ```
-pub(crate) fn threads_for(threads: usize, bodies: usize, steps: u64) -> usize {
-    let by_work = (bodies as u64).saturating_mul(steps) / MIN_BODY_STEPS_PER_THREAD;
+pub(crate) fn threads_for(threads: usize, bodies: usize, body_steps: u64) -> usize {
+    let by_work = body_steps / MIN_BODY_STEPS_PER_THREAD;
     let by_work = usize::try_from(by_work).unwrap_or(usize::MAX);
     threads
         .min(bodies / MIN_BODIES_PER_THREAD)
@@ -303,15 +297,24 @@ fn earlier(a: Option<Failure>, b: Option<Failure>) -> Option<Failure> {
     }
 }
 
-/// A body that steps every `dt` (or a Lagrange top evaluated once),
-/// borrowed from its entry so that it can be sent to another thread (every
-/// field is `Send`).
+/// A body moved by a job, borrowed from its entry so that it can be sent
+/// to another thread (every field is `Send`): one that steps every `dt`,
+/// or an exact solution or a Lagrange top's closed form evaluated once at
+/// the route's end.
 enum Job<'a> {
     /// A Lagrange top: its closed form evaluated `t` after its start.
     LagrangeTop {
         closed: &'a HeavyTopClosedForm,
         t: f64,
         state: &'a mut PrincipalState,
+    },
+    /// A symmetric or asymmetric free body: its exact solution from world
+    /// time `start`, evaluated at the end and checked.
+    Exact {
+        solution: &'a ExactSolution,
+        start: Dd,
+        state: &'a mut PrincipalState,
+        check: Option<&'a DivergenceCheck<'static>>,
     },
     /// A heavy top: stepped by the world's heavy-top method.
     HeavyTop {
@@ -336,6 +339,8 @@ enum Job<'a> {
 struct Walker {
     route: Route,
     clock: Clock,
+    /// The exact time at the end of the route.
+    end: Dd,
 }
 
 impl Walker {
@@ -379,6 +384,18 @@ impl Walker {
                     };
                     (self.route.whole + 1, error)
                 })
+            }
+            Job::Exact {
+                solution,
+                start,
+                state,
+                check,
+            } => {
+                let t = elapsed(self.end, *start);
+                **state = solution.state_at_split(t.hi, t.lo);
+                check
+                    .and_then(|c| c.check(state, self.route.end).err())
+                    .map(|e| (self.route.whole + 1, e))
             }
             Job::HeavyTop {
                 top,
@@ -445,7 +462,15 @@ impl Walker {
     /// not depend on `threads`. A panic in a user load is resumed here.
     fn run_jobs(&self, jobs: &mut [(usize, Job<'_>)], threads: usize) -> Option<Failure> {
         let steps = self.route.whole + u64::from(self.route.last.is_some());
-        let threads = threads_for(threads, jobs.len(), steps);
+        // An exact evaluation costs about one step.
+        let work = jobs
+            .iter()
+            .map(|(_, job)| match job {
+                Job::Exact { .. } => 1,
+                _ => steps,
+            })
+            .fold(0u64, u64::saturating_add);
+        let threads = threads_for(threads, jobs.len(), work);
         if threads <= 1 {
             return self.chunk(jobs);
         }
@@ -475,12 +500,13 @@ mod tests {
     fn threads_only_where_the_work_is_worth_them() {
         // One body or one thread: the calling thread.
         assert_eq!(threads_for(8, 1, 1000), 1);
-        assert_eq!(threads_for(1, 1000, 1000), 1);
+        assert_eq!(threads_for(1, 1000, 1_000_000), 1);
         // Two bodies per thread at least.
-        assert_eq!(threads_for(8, 5, 1000), 2);
-        // A single step of a small world is not worth a thread.
-        assert_eq!(threads_for(2, 100, 1), 1);
-        assert_eq!(threads_for(2, 1000, 1), 2);
+        assert_eq!(threads_for(8, 5, 5000), 2);
+        // A single step (or one exact evaluation) of a small world is not
+        // worth a thread.
+        assert_eq!(threads_for(2, 100, 100), 1);
+        assert_eq!(threads_for(2, 1000, 1000), 2);
         assert_eq!(threads_for(2, 1000, u64::MAX), 2);
     }
 
