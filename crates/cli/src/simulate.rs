@@ -469,7 +469,7 @@ mod tests {
             "ball: free sphere: exact, one uniform rotation",
             "disc: symmetric free body: exact, closed form",
             "handle: asymmetric free body: exact, Jacobi elliptic solution",
-            "top: heavy top on a pivot: auto (order 8, splitting8 sub-stepped",
+            "top: Lagrange top on a pivot: exact, closed form",
         ];
         assert_eq!(lines.len(), starts.len());
         for (line, start) in lines.iter().zip(starts) {
