@@ -11,6 +11,9 @@ use kreisel_dynamics::{
 use kreisel_inertia::MassProperties;
 use kreisel_kinematics::rotation_angle_between;
 
+mod common;
+use common::initial;
+
 const MOMENTS: DVec3 = DVec3::new(1.0, 2.0, 3.0);
 
 /// An asymmetric body near the separatrix (the Dzhanibekov flip).
@@ -20,16 +23,6 @@ fn asymmetric() -> Body {
         .omega_body(DVec3::new(0.01, 1.0, 0.2))
         .try_build()
         .unwrap()
-}
-
-/// The principal-frame state of `body` as given (moments in body order).
-fn initial(body: &Body) -> PrincipalState {
-    PrincipalState::try_from_omega_body(
-        body.rigid_body(),
-        body.world_from_body(),
-        body.omega_body(),
-    )
-    .unwrap()
 }
 
 /// The angle between the world's attitude and the principal-frame state's.

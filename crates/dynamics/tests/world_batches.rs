@@ -12,6 +12,9 @@ use kreisel_dynamics::{
 };
 use kreisel_kinematics::rotation_angle_between;
 
+mod common;
+use common::initial;
+
 const H: f64 = 1.0 / 60.0;
 
 fn body(moments: DVec3, attitude: DQuat, omega_body: DVec3) -> Body {
@@ -21,16 +24,6 @@ fn body(moments: DVec3, attitude: DQuat, omega_body: DVec3) -> Body {
         .free(DVec3::new(1.0, 2.0, 3.0), DVec3::new(0.5, 0.0, 4.0))
         .try_build()
         .unwrap()
-}
-
-/// The principal-frame state of `body` as given.
-fn initial(body: &Body) -> PrincipalState {
-    PrincipalState::try_from_omega_body(
-        body.rigid_body(),
-        body.world_from_body(),
-        body.omega_body(),
-    )
-    .unwrap()
 }
 
 /// Spheres, principal spins, a symmetric, an asymmetric and a resting body,

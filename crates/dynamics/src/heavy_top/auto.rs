@@ -92,18 +92,32 @@ impl HeavyTopAuto {
         state: &PrincipalState,
         h: f64,
     ) -> Result<usize, DynamicsError> {
-        let needed = (h * substep_rate(top, state)).ceil().max(1.0);
-        // NaN fails the comparison too.
-        if needed <= MAX_SUBSTEPS as f64 {
-            Ok(needed as usize)
-        } else {
-            Err(DynamicsError::TooManySubsteps {
-                method: "auto",
-                h,
-                needed,
-                limit: MAX_SUBSTEPS,
-            })
-        }
+        substep_count("auto", h, h * substep_rate(top, state))
+    }
+}
+
+/// The sub-steps a step of `h` takes when it needs `span` of them
+/// (rounded up, at least 1), at most [`MAX_SUBSTEPS`].
+///
+/// # Errors
+/// [`DynamicsError::TooManySubsteps`] naming `method` beyond the limit or
+/// for a `span` that is NaN.
+pub(crate) fn substep_count(
+    method: &'static str,
+    h: f64,
+    span: f64,
+) -> Result<usize, DynamicsError> {
+    let needed = span.ceil().max(1.0);
+    // NaN fails the comparison too.
+    if needed <= MAX_SUBSTEPS as f64 {
+        Ok(needed as usize)
+    } else {
+        Err(DynamicsError::TooManySubsteps {
+            method,
+            h,
+            needed,
+            limit: MAX_SUBSTEPS,
+        })
     }
 }
 

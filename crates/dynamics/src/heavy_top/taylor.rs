@@ -6,8 +6,8 @@ use std::cell::RefCell;
 
 use glam::{DQuat, DVec3};
 
+use super::HeavyTop;
 use super::integrator::HeavyTopIntegrator;
-use super::{HeavyTop, MAX_SUBSTEPS};
 use crate::{DynamicsError, PrincipalState};
 
 /// The highest order a [`HeavyTopTaylor`] may have.
@@ -149,7 +149,7 @@ impl HeavyTopTaylor {
     ///
     /// # Errors
     /// [`DynamicsError::TooManySubsteps`] when `n` exceeds
-    /// [`MAX_SUBSTEPS`] or cannot be computed.
+    /// [`crate::MAX_SUBSTEPS`] or cannot be computed.
     pub fn try_substeps(
         &self,
         top: &HeavyTop,
@@ -161,18 +161,7 @@ impl HeavyTopTaylor {
 
     /// [`HeavyTopTaylor::try_substeps`] for the speed bound `omega_max`.
     fn substeps_for(&self, h: f64, omega_max: f64) -> Result<usize, DynamicsError> {
-        let needed = (h.abs() * omega_max / self.reach).ceil().max(1.0);
-        // NaN fails the comparison too.
-        if needed <= MAX_SUBSTEPS as f64 {
-            Ok(needed as usize)
-        } else {
-            Err(DynamicsError::TooManySubsteps {
-                method: "taylor",
-                h,
-                needed,
-                limit: MAX_SUBSTEPS,
-            })
-        }
+        super::auto::substep_count("taylor", h, h.abs() * omega_max / self.reach)
     }
 
     /// The order of one series over a sub-step with `h ω_max = x`: the
