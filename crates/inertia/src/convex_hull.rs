@@ -137,7 +137,9 @@ pub fn convex_hull(mesh: &TriMesh) -> Result<TriMesh, InertiaError> {
     }
     // Last, parry's quickhull (slow on big hulls, but it handles some CAD
     // meshes, full of coplanar and cocircular points, that both of the
-    // above fail on: 2 of 1188 pybullet meshes).
+    // above fail on: 2 of 1188 pybullet meshes). Without the `parry`
+    // feature those meshes are `HullCheckFailed`.
+    #[cfg(feature = "parry")]
     match parry_hull(&white, &candidates) {
         Ok((hull_index, triangles)) => {
             let white_hull: Vec<DVec3> = hull_index.iter().map(|&i| white[i]).collect();
@@ -156,6 +158,7 @@ pub fn convex_hull(mesh: &TriMesh) -> Result<TriMesh, InertiaError> {
 
 /// parry's hull of `white[candidates]`, its vertices mapped back to input
 /// indices by their bits.
+#[cfg(feature = "parry")]
 fn parry_hull(
     white: &[DVec3],
     candidates: &[usize],

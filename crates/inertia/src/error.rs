@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
-use crate::io::MeshFormat;
+use crate::mesh_format::MeshFormat;
 
 /// Everything that can go wrong when loading a mesh or computing mass properties.
 ///

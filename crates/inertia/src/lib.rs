@@ -19,12 +19,15 @@
 
 mod convex_hull;
 mod error;
+#[cfg(feature = "formats")]
 pub mod io;
 mod mass_properties;
 mod mesh_check;
+mod mesh_format;
 mod mesh_integration;
 mod mesh_mass;
 mod mesh_unit;
+#[cfg(feature = "parry")]
 mod parry_interop;
 mod primitives;
 mod principal_axes;
@@ -39,6 +42,7 @@ pub use mass_properties::MassProperties;
 pub use mesh_check::{CheckedMesh, MeshWarning, prepare_shell, prepare_solid};
 pub use mesh_integration::MeshMoments;
 pub use mesh_mass::{MassModel, Material, MeshMassReport, mesh_mass_properties};
+#[cfg(feature = "parry")]
 pub use parry_interop::{from_parry, from_parry_mass_properties, parry_mass_properties, to_parry};
 pub use principal_axes::PrincipalAxes;
 pub use tri_mesh::TriMesh;

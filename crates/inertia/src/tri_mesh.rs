@@ -123,6 +123,7 @@ impl TriMesh {
     /// Marks the mesh as having no bit-identical, unused or out-of-order
     /// vertices (the caller's guarantee; see the field), so that
     /// [`TriMesh::welded`] skips its exact pass.
+    #[cfg_attr(not(feature = "formats"), allow(dead_code))]
     pub(crate) fn known_exact_unique(mut self) -> Self {
         self.exact_unique = true;
         self
@@ -130,6 +131,7 @@ impl TriMesh {
 
     /// Marks the mesh as numbered in order of first use, none unused, exact
     /// repeats possible (the caller's guarantee; see the field).
+    #[cfg_attr(not(feature = "formats"), allow(dead_code))]
     pub(crate) fn known_first_use(mut self) -> Self {
         self.first_use = true;
         self
