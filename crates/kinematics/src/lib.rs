@@ -41,6 +41,7 @@
 mod axis_angle;
 mod error;
 mod euler_angles;
+mod euler_f32;
 mod euler_rates;
 mod euler_sequence;
 #[cfg(feature = "nalgebra")]
@@ -53,6 +54,7 @@ mod rotation_vector;
 pub use axis_angle::AxisAngle;
 pub use error::KinematicsError;
 pub use euler_angles::EulerDecomposition;
+pub use euler_f32::EulerDecompositionF32;
 pub use euler_rates::RATE_SINGULARITY_TOLERANCE;
 pub use euler_sequence::{Axis, EulerSequence, Frame};
 pub use quaternion::{canonical_quat, rotation_angle_between, try_normalize_quat};
