@@ -44,6 +44,8 @@ mod euler_angles;
 mod euler_f32;
 mod euler_rates;
 mod euler_sequence;
+#[cfg(feature = "glam033")]
+pub mod glam033_interop;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_interop;
 mod quaternion;
