@@ -313,18 +313,53 @@ pub(crate) enum Motion {
         start: Dd,
         state: PrincipalState,
     },
-    /// A free body under inputs: the splitting, the body with its loads,
-    /// the state, and `|q|` when the plan was made (the checks' reference).
-    Forced {
-        method: ForcedSplitting,
-        substeps: u32,
-        /// Whether each step takes at least the sub-steps its stability
-        /// needs ([`ForcedBody::stable_substeps`]: heavy tops under `auto`).
-        stabilise: bool,
-        body: Box<ForcedBody>,
-        state: ForcedState,
-        q_norm: f64,
-    },
+    /// A body under inputs, or a heavy top under a tolerance.
+    Forced(ForcedMotion),
+}
+
+/// A body under inputs (or a heavy top under a tolerance) as the world
+/// moves it: the splitting, its sub-steps, the body with its loads, the
+/// state, and `|q|` when the plan was made (the checks' reference).
+pub(crate) struct ForcedMotion {
+    method: ForcedSplitting,
+    substeps: u32,
+    /// Whether each step takes at least the sub-steps its stability needs
+    /// ([`ForcedBody::stable_substeps`]: heavy tops under `auto`).
+    stabilise: bool,
+    body: Box<ForcedBody>,
+    pub(crate) state: ForcedState,
+    q_norm: f64,
+}
+
+impl ForcedMotion {
+    /// One step of `h` from time `t`: `substeps` equal sub-steps (at least
+    /// the stable number if `stabilise`), each checked as
+    /// [`crate::ForcedPropagator::try_advance`] checks.
+    ///
+    /// # Errors
+    /// [`DynamicsError::TooManySubsteps`] from the stability limit;
+    /// [`DynamicsError::Diverged`] from a sub-step.
+    pub(crate) fn step(&mut self, t: f64, h: f64) -> Result<(), DynamicsError> {
+        let n = if self.stabilise {
+            self.substeps
+                .max(self.body.stable_substeps(&self.state, h)?)
+        } else {
+            self.substeps
+        };
+        let sub = h / f64::from(n);
+        for j in 0..n {
+            let t = t + f64::from(j) * sub;
+            self.state = crate::forced::checked_step(
+                self.method,
+                &self.body,
+                &self.state,
+                t,
+                sub,
+                self.q_norm,
+            )?;
+        }
+        Ok(())
+    }
 }
 
 impl fmt::Debug for Motion {
@@ -407,14 +442,14 @@ impl Motion {
         body: ForcedBody,
         state: ForcedState,
     ) -> Motion {
-        Motion::Forced {
+        Motion::Forced(ForcedMotion {
             method,
             substeps,
             stabilise,
             body: Box::new(body),
             q_norm: state.rotation.world_from_principal.length(),
             state,
-        }
+        })
     }
 
     /// The current state (`batch`: the world's uniform rotations).
@@ -430,7 +465,7 @@ impl Motion {
             Motion::Resting { state, .. } | Motion::HeavyTop { state, .. } => *state,
             Motion::Exact { state, .. } | Motion::LagrangeTop { state, .. } => *state,
             Motion::Stepping(propagator) => propagator.state(),
-            Motion::Forced { state, .. } => state.rotation,
+            Motion::Forced(forced) => forced.state.rotation,
         }
     }
 
@@ -448,7 +483,7 @@ impl Motion {
     /// A forced body's state and body (`None` for the other motions).
     pub(crate) fn forced_state(&self) -> Option<(&ForcedBody, &ForcedState)> {
         match self {
-            Motion::Forced { body, state, .. } => Some((body, state)),
+            Motion::Forced(forced) => Some((&forced.body, &forced.state)),
             _ => None,
         }
     }

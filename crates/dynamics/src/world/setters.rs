@@ -150,7 +150,8 @@ impl World {
         }
         let now = self.time();
         self.reads[id.0].ballistic = (position, velocity, now);
-        if let Motion::Forced { state, .. } = &mut self.entries[id.0].motion {
+        if let Motion::Forced(forced) = &mut self.entries[id.0].motion {
+            let state = &mut forced.state;
             (state.position_world, state.velocity_world) = (position, velocity);
         }
         Ok(())

@@ -6,12 +6,12 @@
 //! [`crate::ForcedPropagator::try_advance`].
 
 use super::clock::{Clock, Route};
-use super::plan::{Motion, elapsed};
+use super::plan::{ForcedMotion, Motion, elapsed};
 use super::{Entry, World};
 use crate::elliptic::dd::Dd;
 use crate::{
-    Divergence, DivergenceCheck, DynamicsError, ExactSolution, ForcedBody, ForcedSplitting,
-    ForcedState, HeavyTop, HeavyTopClosedForm, HeavyTopIntegrator, PrincipalState, forced,
+    Divergence, DivergenceCheck, DynamicsError, ExactSolution, HeavyTop, HeavyTopClosedForm,
+    HeavyTopIntegrator, PrincipalState,
 };
 
 /// The first failure of a run: step number, body, error.
@@ -208,25 +208,8 @@ impl World {
                     };
                     walker.walk(&mut step)
                 }
-                Motion::Forced {
-                    method,
-                    substeps,
-                    stabilise,
-                    body,
-                    state,
-                    q_norm,
-                } => {
-                    jobs.push((
-                        index,
-                        Job::Forced {
-                            method: *method,
-                            substeps: *substeps,
-                            stabilise: *stabilise,
-                            body,
-                            state,
-                            q_norm: *q_norm,
-                        },
-                    ));
+                Motion::Forced(forced) => {
+                    jobs.push((index, Job::Forced(forced)));
                     None
                 }
                 Motion::HeavyTop { state, integrator } => {
@@ -323,15 +306,9 @@ enum Job<'a> {
         state: &'a mut PrincipalState,
         heavy: &'static (dyn HeavyTopIntegrator + Sync),
     },
-    /// A free body under inputs: stepped by its splitting.
-    Forced {
-        method: ForcedSplitting,
-        substeps: u32,
-        stabilise: bool,
-        body: &'a ForcedBody,
-        state: &'a mut ForcedState,
-        q_norm: f64,
-    },
+    /// A body under inputs (or a heavy top under a tolerance): stepped by
+    /// its splitting.
+    Forced(&'a mut ForcedMotion),
 }
 
 /// What every body's walk along a route needs (`Copy`, `Send`).
@@ -413,34 +390,16 @@ impl Walker {
                 };
                 self.walk(&mut step)
             }
-            Job::Forced {
-                method,
-                substeps,
-                stabilise,
-                body,
-                state,
-                q_norm,
-            } => {
+            Job::Forced(forced) => {
                 // Step k starts at the grid time of step k − 1 (loads
-                // that read the time see the world's clock); a tolerance
-                // may split it into equal sub-steps.
+                // that read the time see the world's clock).
                 let mut step = |k: u64, h: f64| {
                     let t = if k == 1 {
                         self.clock.time()
                     } else {
                         self.time_of(k - 1)
                     };
-                    let n = if *stabilise {
-                        (*substeps).max(body.stable_substeps(state, h)?)
-                    } else {
-                        *substeps
-                    };
-                    let sub = h / f64::from(n);
-                    for j in 0..n {
-                        let t = t + f64::from(j) * sub;
-                        **state = forced::checked_step(*method, body, state, t, sub, *q_norm)?;
-                    }
-                    Ok(())
+                    forced.step(t, h)
                 };
                 self.walk(&mut step)
             }

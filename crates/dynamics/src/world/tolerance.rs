@@ -328,7 +328,6 @@ pub(crate) fn choose_forced(
         pilot: &pilot,
         dt,
         min,
-        stage_ns: STAGE_NS[usize::from(body.free_flow_is_exact())],
     };
     let default_work = chooser.work(default.0, default.1);
     // Two passes over the splittings. First in order of cost per step, each
@@ -378,14 +377,12 @@ struct Chooser<'a> {
     dt: f64,
     /// The fewest sub-steps per `dt` (a heavy top's stability limit).
     min: u32,
-    /// Measured cost of one stage, ns.
-    stage_ns: f64,
 }
 
 impl Chooser<'_> {
     /// The work of `n` sub-steps of `method` per `dt`, ns per simulated s.
     fn work(&self, method: ForcedSplitting, n: u32) -> f64 {
-        f64::from(n) * method.stages() as f64 * self.stage_ns / self.dt
+        splitting_work(self.body, method, n, self.dt)
     }
 
     /// The sub-steps with which `method` is predicted to meet the tolerance
@@ -399,14 +396,63 @@ impl Chooser<'_> {
         if cap < self.min {
             return None;
         }
-        let probe = Probe {
-            tol: self.tol,
-            method,
-            body: self.body,
-            pilot: self.pilot,
-            dt: self.dt,
+        // A first guess from the local error at `min` sub-steps and the
+        // order (e(h) ∝ hᵖ in the asymptotic range), then doublings until
+        // the measured prediction meets the tolerance.
+        let (min, attitude) = (self.min, self.tol.attitude);
+        let first = self.predicted(method, min);
+        if !first.is_finite() {
+            return None;
+        }
+        if first <= attitude {
+            return Some((min, first));
+        }
+        let guess = f64::from(min) * (first / attitude).powf(1.0 / f64::from(method.order()));
+        let mut n = guess
+            .ceil()
+            .clamp(f64::from(min) + 1.0, f64::from(MAX_SUBSTEPS)) as u32;
+        while n <= cap {
+            let e = self.predicted(method, n);
+            if e <= attitude {
+                return Some((n, e));
+            }
+            if n >= MAX_SUBSTEPS {
+                break;
+            }
+            n = n.saturating_mul(2).min(MAX_SUBSTEPS);
+        }
+        None
+    }
+
+    /// The predicted error over the horizon of `method` at `n` sub-steps
+    /// per `dt`.
+    fn predicted(&self, method: ForcedSplitting, n: u32) -> f64 {
+        let h = self.dt / f64::from(n);
+        self.tol.predicted(self.local(method, h), h)
+    }
+
+    /// The largest local attitude error of one step of `h` by `method` at
+    /// the pilot's states, by step doubling.
+    fn local(&self, method: ForcedSplitting, h: f64) -> f64 {
+        let body = self.body;
+        let richardson = {
+            let p = 2f64.powi(method.order() as i32);
+            p / (p - 1.0)
         };
-        probe.substeps(self.min, cap)
+        let mut worst: f64 = 0.0;
+        for &(t, state) in self.pilot {
+            let mut whole = state;
+            method.step(body, &mut whole, t, h);
+            let mut halves = state;
+            method.step(body, &mut halves, t, 0.5 * h);
+            method.step(body, &mut halves, t + 0.5 * h, 0.5 * h);
+            let gap = attitude_gap(&whole.rotation, &halves.rotation) * richardson;
+            if !gap.is_finite() {
+                return f64::INFINITY;
+            }
+            worst = worst.max(gap);
+        }
+        worst
     }
 }
 
@@ -507,78 +553,6 @@ fn pilot(
         }
     }
     states
-}
-
-/// One splitting's error measured on one body at plan time.
-struct Probe<'a> {
-    tol: &'a Tolerance,
-    method: ForcedSplitting,
-    body: &'a ForcedBody,
-    pilot: &'a [(f64, ForcedState)],
-    dt: f64,
-}
-
-impl Probe<'_> {
-    /// The fewest sub-steps per `dt`, from `min` to `cap`, with which the
-    /// method is predicted to meet the tolerance, and the prediction: a
-    /// first guess from the local error at `min` sub-steps and the order,
-    /// then doubled until the measured prediction meets the tolerance.
-    fn substeps(&self, min: u32, cap: u32) -> Option<(u32, f64)> {
-        let first = self.predicted(min);
-        if !first.is_finite() {
-            return None;
-        }
-        if first <= self.tol.attitude {
-            return Some((min, first));
-        }
-        // e(h) ∝ hᵖ in the asymptotic range: the guess, then doublings.
-        let guess =
-            f64::from(min) * (first / self.tol.attitude).powf(1.0 / f64::from(self.method.order()));
-        let mut n = guess
-            .ceil()
-            .clamp(f64::from(min) + 1.0, f64::from(MAX_SUBSTEPS)) as u32;
-        while n <= cap {
-            let e = self.predicted(n);
-            if e <= self.tol.attitude {
-                return Some((n, e));
-            }
-            if n >= MAX_SUBSTEPS {
-                break;
-            }
-            n = n.saturating_mul(2).min(MAX_SUBSTEPS);
-        }
-        None
-    }
-
-    /// The predicted error over the horizon at `n` sub-steps per `dt`.
-    fn predicted(&self, n: u32) -> f64 {
-        let h = self.dt / f64::from(n);
-        self.tol.predicted(self.local(h), h)
-    }
-
-    /// The largest local attitude error of one step of `h` at the pilot's
-    /// states, by step doubling.
-    fn local(&self, h: f64) -> f64 {
-        let (method, body) = (self.method, self.body);
-        let richardson = {
-            let p = 2f64.powi(method.order() as i32);
-            p / (p - 1.0)
-        };
-        let mut worst: f64 = 0.0;
-        for &(t, state) in self.pilot {
-            let mut whole = state;
-            method.step(body, &mut whole, t, h);
-            let mut halves = state;
-            method.step(body, &mut halves, t, 0.5 * h);
-            method.step(body, &mut halves, t + 0.5 * h, 0.5 * h);
-            let gap = attitude_gap(&whole.rotation, &halves.rotation) * richardson;
-            if !gap.is_finite() {
-                return f64::INFINITY;
-            }
-            worst = worst.max(gap);
-        }
-        worst
-    }
 }
 
 /// The angle between two states' attitudes, rad.
