@@ -35,8 +35,39 @@ impl World {
     /// ```
     pub fn set_omega_body(&mut self, id: BodyId, omega_body: DVec3) -> Result<(), DynamicsError> {
         let entry = self.entry(id)?;
-        let state = self.rotation(id.0);
-        let world_from_body = state.world_from_body(&entry.rigid);
+        let world_from_body = self.rotation(id.0).world_from_body(&entry.rigid);
+        self.set_rotation(id, world_from_body, omega_body)
+    }
+
+    /// Sets body `id`'s attitude (body → world; normalised) and angular
+    /// velocity (body axes, rad/s) now, together: one new plan (what an
+    /// engine adapter does when the engine's state was changed).
+    ///
+    /// ```text
+    /// L_world = R (I ω_body),   R = world_from_body
+    /// ```
+    ///
+    /// # Errors
+    /// As [`World::set_omega_body`], and for a zero or non-finite quaternion.
+    ///
+    /// ```
+    /// # use kreisel_dynamics::{Body, World};
+    /// use glam::{DQuat, DVec3};
+    /// let mut world = World::try_new(DVec3::ZERO, 0.1)?;
+    /// let id = world.add(Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0)).try_build()?)?;
+    /// world.set_rotation(id, DQuat::from_rotation_z(1.0), DVec3::Y)?;
+    /// let s = world.state(id).unwrap();
+    /// assert!((s.l_world - DVec3::new(-2.0 * 1f64.sin(), 2.0 * 1f64.cos(), 0.0)).length() < 1e-15);
+    /// assert!(world.set_rotation(id, DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0), DVec3::Y).is_err());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn set_rotation(
+        &mut self,
+        id: BodyId,
+        world_from_body: DQuat,
+        omega_body: DVec3,
+    ) -> Result<(), DynamicsError> {
+        let entry = self.entry(id)?;
         let next = PrincipalState::try_from_omega_body(&entry.rigid, world_from_body, omega_body)?;
         self.replan(id.0, next)
     }
@@ -98,8 +129,7 @@ impl World {
     ) -> Result<(), DynamicsError> {
         let entry = self.entry(id)?;
         let omega_body = self.rotation(id.0).omega_body(&entry.rigid);
-        let next = PrincipalState::try_from_omega_body(&entry.rigid, world_from_body, omega_body)?;
-        self.replan(id.0, next)
+        self.set_rotation(id, world_from_body, omega_body)
     }
 
     /// Sets a free body's centre of mass (m) and its velocity (m/s), world
