@@ -44,10 +44,11 @@ const MAX_PDMV_SUBSTEPS: f64 = 256.0;
 /// world axes and the inertia as principal moments plus the rotation of the
 /// principal axes in the body (rapier: `MassProperties::
 /// principal_inertia_local_frame`, with `inv_principal_inertia`; avian:
-/// `AngularInertiaTensor::principal_angular_inertia_with_local_frame`);
+/// `AngularInertia::local_frame`, with `principal`);
 /// both rotations map principal to body coordinates, `I_body = R diag(I) Rᵀ`.
-/// Their own integrators treat the gyroscopic term `ω × Iω` explicitly or
-/// drop it; this step is the exact motion to rounding.
+/// rapier's own angular step is first order in `dt`
+/// (`tests/rapier_cross_check.rs` at the workspace root); this step is the
+/// exact motion to rounding.
 ///
 /// ```text
 /// q_wp = q̂_wb ⊗ q̂_bp,   L = I (q_wp⁻¹ ω_w)                    (f64, inputs widened exactly)
@@ -61,9 +62,9 @@ const MAX_PDMV_SUBSTEPS: f64 = 256.0;
 /// `q̂` is `q` normalised in `f64`. The bound `ω_max` holds over the whole
 /// motion (the energy `E = ½ I ω²` is conserved), so no sub-step turns the
 /// body by more than 0.25 rad, where one step of PDMV10 is within 2e-14 rad
-/// of the exact motion (measured over 20 000 random bodies and states
-/// against [`ExactSolution`]; 1.2e-13 at 0.3, 1.6e-12 at 0.4): far
-/// below `f32`'s 1.2e-7. Beyond 256 sub-steps (`ω_max dt > 64 rad`) the
+/// of the exact motion (`tests/free_body_f32.rs`, random bodies and states
+/// against [`ExactSolution`]; 1.6e-13 at 0.3, 3.7e-12 at 0.4): far below
+/// `f32`'s 1.2e-7. Beyond 256 sub-steps (`ω_max dt > 64 rad`) the
 /// exact solution, ~40 µs with its tables, is cheaper.
 ///
 /// The preprocessed discrete Moser–Veselov algorithm of order 10: E. Hairer
@@ -126,39 +127,52 @@ const MAX_PDMV_SUBSTEPS: f64 = 256.0;
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 ///
-/// # From bevy or avian
-/// bevy (bevy_math 0.20) and rapier 0.36 use glam 0.33 types: convert them exactly with
-/// `kreisel_kinematics::glam033_interop` (feature `glam033`), or build
-/// glam 0.34 values from their components. A per-frame system, as a sketch
-/// (not compiled here: kreisel does not depend on bevy):
+/// # From bevy, avian or rapier
+/// bevy (bevy_math 0.20) and rapier 0.36 use glam 0.33's `Quat`/`Vec3`:
+/// convert them exactly with `kreisel_kinematics::glam033_interop`
+/// (feature `glam033`); an engine on glam 0.34 passes its values as they
+/// are. A per-frame bevy system for avian bodies in free flight, as a
+/// sketch (not compiled: kreisel does not depend on bevy or avian; the
+/// avian names are those of its `AngularInertia` component, `principal`
+/// and `local_frame`, and `AngularVelocity`):
 ///
 /// ```ignore
 /// use kreisel_dynamics::FreeBodyF32;
-/// use kreisel_kinematics::glam033_interop::{dquat_from_quat, quat_from_dquat, dvec3_from_vec3, vec3_from_dvec3};
+/// use kreisel_kinematics::glam033_interop::{dquat_from_quat, dvec3_from_vec3, quat_from_dquat, vec3_from_dvec3};
 ///
-/// /// Moves torque-free spinning bodies exactly (gyroscopic term included).
-/// fn free_rotation(time: Res<Time>, mut bodies: Query<(&mut Transform, &mut AngularVelocity, &ComputedAngularInertia)>) {
+/// /// Turns torque-free bodies by their exact motion, gyroscopic term included.
+/// fn free_rotation(
+///     time: Res<Time>,
+///     mut bodies: Query<(&mut Transform, &mut AngularVelocity, &AngularInertia), With<FreeFlight>>,
+/// ) {
 ///     let dt = time.delta_secs();
-///     if dt <= 0.0 { return; }
+///     if dt <= 0.0 {
+///         return; // paused: nothing to do (a zero step is refused)
+///     }
+///     // glam 0.33 → 0.34 and back, exactly (f32 → f64 → f32).
+///     let q34 = |q| dquat_from_quat(q).as_quat();
+///     let v34 = |v| dvec3_from_vec3(v).as_vec3();
 ///     for (mut transform, mut omega, inertia) in &mut bodies {
-///         let (moments, frame) = inertia.tensor().principal_angular_inertia_with_local_frame();
-///         let to34 = |q: bevy::math::Quat| dquat_from_quat(q).as_quat();
-///         let v34 = |v: bevy::math::Vec3| dvec3_from_vec3(v).as_vec3();
-///         let Ok(body) = FreeBodyF32::try_new(v34(moments), to34(frame)) else { continue };
-///         match body.try_step(to34(transform.rotation), v34(omega.0), dt) {
+///         // Cache this in a component when the inertia does not change.
+///         let body = match FreeBodyF32::try_new(v34(inertia.principal), q34(inertia.local_frame)) {
+///             Ok(body) => body,
+///             Err(e) => { warn!("{e}"); continue } // e.g. a locked (infinite) inertia
+///         };
+///         match body.try_step(q34(transform.rotation), v34(omega.0), dt) {
 ///             Ok((q, w)) => {
 ///                 transform.rotation = quat_from_dquat(q.as_dquat());
 ///                 omega.0 = vec3_from_dvec3(w.as_dvec3());
 ///             }
-///             Err(e) => warn!("free rotation: {e}"),
+///             Err(e) => warn!("{e}"),
 ///         }
 ///     }
 /// }
 /// ```
 ///
-/// (With avian, run it instead of avian's own angular integration for
-/// those bodies, e.g. with `AngularVelocity` owned by this system and the
-/// body kinematic, or for bodies in free flight between contacts.)
+/// Run it in place of the engine's own angular integration for those
+/// bodies (avian and rapier would otherwise turn them a second time). With
+/// rapier, the moments are `1 / mass_properties.inv_principal_inertia` and
+/// the frame `principal_inertia_local_frame`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FreeBodyF32 {
     moments: DVec3,
