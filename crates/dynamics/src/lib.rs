@@ -32,7 +32,10 @@
 //! - [`World`]: bodies ([`Body`]: mass properties, attitude, spin, a free
 //!   or pivot [`Support`]) under gravity, moved by `step(h)` for game loops
 //!   or `advance_to(t)` for simulations along each body's cheapest exact
-//!   [`Plan`] (a torque-free body is never stepped, only evaluated).
+//!   [`Plan`] (a torque-free body is never stepped, only evaluated);
+//! - for `f32` game engines (bevy, avian, rapier), [`FreeBodyF32`]: one
+//!   frame of torque-free motion on glam's `Quat`/`Vec3`, attitude and
+//!   world-axes `ω` in and out, computed in `f64` and rounded once.
 //!
 //! ## Conventions
 //! - SI units, radians. States live in the principal frame:
@@ -61,6 +64,7 @@ pub mod elliptic;
 mod error;
 mod exact;
 mod forced;
+mod free_body_f32;
 mod heavy_top;
 mod integrator;
 mod lagrange_top;
@@ -82,6 +86,7 @@ pub use exact::{ExactFlow, ExactPropagator, ExactSolution};
 pub use forced::{
     ForcedBody, ForcedPropagator, ForcedSplitting, ForcedState, Inputs, Load, LoadFn, PointForce,
 };
+pub use free_body_f32::{FreeBodyF32, try_free_body_step_f32};
 pub use heavy_top::{
     HEAVY_TOP_METHODS, HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
     HeavyTopTaylor, MAX_SUBSTEPS, TAYLOR_MAX_ORDER, heavy_top_method, integrate_heavy_top,
