@@ -234,3 +234,57 @@ fn contact_scenes_never_gain_energy() {
         );
     }
 }
+
+/// A fast spin (100 rad/s, 1.7 rad per step at 1/60): rapier caps |ω| at
+/// π/4 per step unless fast rotation is allowed; the adapter lifts the cap
+/// while kreisel carries the body, and |L| stays that of the start.
+#[test]
+fn a_fast_spin_is_not_cut() {
+    for engine in [Engine::Rapier, Engine::RapierKreisel] {
+        let mut world = PhysicsWorld::new();
+        world.gravity = Vector::ZERO;
+        let props = MassProperties::new(Vector::ZERO, 1.0, Vector::new(1.0, 2.0, 3.0));
+        let body = RigidBodyBuilder::dynamic()
+            .additional_mass_properties(props)
+            .angvel(Vector::new(0.5, 0.0, 100.0));
+        let handle = world.insert_body(body);
+        let mut exact = ExactRotation::new();
+        if engine == Engine::RapierKreisel {
+            exact
+                .manage(&mut world.bodies, &world.colliders, handle)
+                .unwrap();
+        }
+        let l = |world: &PhysicsWorld| {
+            let rb = &world.bodies[handle];
+            let r = *rb.rotation();
+            let q = kreisel::kinematics::glam::DQuat::from_xyzw(
+                r.x.into(),
+                r.y.into(),
+                r.z.into(),
+                r.w.into(),
+            );
+            let w = rb.angvel();
+            let w = q.conjugate()
+                * kreisel::kinematics::glam::DVec3::new(w.x.into(), w.y.into(), w.z.into());
+            (kreisel::kinematics::glam::DVec3::new(1.0, 2.0, 3.0) * w).length()
+        };
+        let l0 = l(&world);
+        for _ in 0..60 {
+            match engine {
+                Engine::Rapier => world.step(),
+                Engine::RapierKreisel => exact.step_world(&mut world).unwrap(),
+            }
+        }
+        let change = (l(&world) - l0) / l0;
+        println!("{engine:?}: |L| after 1 s of a 100 rad/s spin: {change:+.2e} relative");
+        match engine {
+            // Cut to π/4 per step: 47 rad/s.
+            Engine::Rapier => assert!(change < -0.5, "{change}"),
+            Engine::RapierKreisel => assert!(change.abs() < 1e-6, "{change}"),
+        }
+        if engine == Engine::RapierKreisel {
+            exact.release(&mut world.bodies, handle);
+            assert!(!world.bodies[handle].is_fast_rotation_allowed());
+        }
+    }
+}

@@ -33,6 +33,11 @@ pub(crate) struct Managed {
     pub(crate) omega_before: rapier3d::math::Vector,
     /// Who carries the rotation now.
     pub(crate) carrier: Carrier,
+    /// The body's own `allow_fast_rotation`, in force while rapier carries
+    /// it; while kreisel does, rapier's cap on |ω| dt (which its own
+    /// linearised rotation needs and the exact flow does not) is lifted,
+    /// so that it does not cut a fast spin.
+    pub(crate) fast_rotation: bool,
 }
 
 /// Who carries a managed body's rotation over the next step.
@@ -147,6 +152,12 @@ impl ExactRotation {
         }
     }
 
+    /// Moves the managed bodies' exact solutions on up to `n` threads
+    /// ([`World::set_threads`]; default one).
+    pub fn set_threads(&mut self, n: std::num::NonZeroUsize) {
+        self.world.set_threads(n);
+    }
+
     /// The number of bodies managed.
     pub fn len(&self) -> usize {
         self.managed.len()
@@ -255,6 +266,9 @@ impl ExactRotation {
             written,
             omega_before: written.1,
             carrier: Carrier::Kreisel,
+            fast_rotation: slot.map_or(rb.is_fast_rotation_allowed(), |k| {
+                self.managed[k].fast_rotation
+            }),
         };
         match slot {
             Some(k) => self.managed[k] = managed,
@@ -265,6 +279,7 @@ impl ExactRotation {
         }
         if let Some(rb) = bodies.get_mut(handle) {
             rb.enable_gyroscopic_forces(false);
+            rb.set_allow_fast_rotation(true);
         }
         Ok(())
     }
@@ -286,6 +301,7 @@ impl ExactRotation {
             .set_rotation(managed.id, DQuat::IDENTITY, DVec3::ZERO);
         if let Some(rb) = bodies.get_mut(handle) {
             rb.enable_gyroscopic_forces(true);
+            rb.set_allow_fast_rotation(managed.fast_rotation);
         }
         true
     }

@@ -169,9 +169,11 @@ impl ExactRotation {
                     // rests (costs nothing) until the body is free again.
                     rest(&mut self.world, m, rb)?;
                     rb.enable_gyroscopic_forces(true);
+                    rb.set_allow_fast_rotation(m.fast_rotation);
                 }
                 (Carrier::Rapier, Carrier::Kreisel) => {
                     rb.enable_gyroscopic_forces(false);
+                    rb.set_allow_fast_rotation(true);
                     resync(&mut self.world, m, rb)?;
                 }
                 (Carrier::Rapier, Carrier::Rapier) => {}
