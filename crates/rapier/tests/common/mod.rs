@@ -83,3 +83,22 @@ pub fn l_world(rb: &RigidBody) -> DVec3 {
     let moments = dvec3_from_vec3(props.principal_inertia());
     q * (moments * (q.conjugate() * d(rb.angvel())))
 }
+
+/// The exact torque-free motion from the adapter's own `f64` state `now`
+/// of rapier body `rb` (whose mass properties give the moments and the
+/// principal frame).
+pub fn exact_from_managed(
+    rb: &RigidBody,
+    now: &kreisel_rapier::ManagedRotation,
+) -> (ExactSolution, DQuat) {
+    let props = &rb.mass_properties().local_mprops;
+    let moments = dvec3_from_vec3(props.principal_inertia());
+    let local_from_principal = dquat_from_quat(props.principal_inertia_local_frame).normalize();
+    let world_from_principal = (now.world_from_body * local_from_principal).normalize();
+    let state = PrincipalState {
+        world_from_principal,
+        l_principal: world_from_principal.conjugate() * now.l_world,
+    };
+    let exact = ExactSolution::try_new(moments, state).expect("a physical body");
+    (exact, local_from_principal)
+}
