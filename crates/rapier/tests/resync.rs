@@ -124,8 +124,11 @@ fn follows(change: impl FnOnce(&mut RigidBody)) -> Followed {
     }
 }
 
+/// A named change made by user code between steps.
+type Change = (&'static str, Box<dyn Fn(&mut RigidBody)>);
+
 /// The changes tried, each far from the motion without it.
-fn changes() -> Vec<(&'static str, Box<dyn Fn(&mut RigidBody)>)> {
+fn changes() -> Vec<Change> {
     vec![
         (
             "angvel",
