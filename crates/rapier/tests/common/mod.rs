@@ -19,7 +19,9 @@ pub fn free_world() -> PhysicsWorld {
 
 /// A dynamic body without colliders whose mass properties are given:
 /// unit mass, principal `moments` along the axes `frame` (principal →
-/// rapier's local axes), centre of mass `com` (local axes).
+/// rapier's local axes), centre of mass `com` (local axes). It never
+/// sleeps: rapier puts a collider-less body turning slower than 0.5 rad/s
+/// to sleep after 0.5 s, and these bodies are for free flight.
 pub fn body_with_moments(
     world: &mut PhysicsWorld,
     moments: Vector,
@@ -32,6 +34,7 @@ pub fn body_with_moments(
     world.insert_body(
         RigidBodyBuilder::dynamic()
             .additional_mass_properties(props)
+            .can_sleep(false)
             .rotation(rotation.to_scaled_axis())
             .angvel(angvel),
     )
