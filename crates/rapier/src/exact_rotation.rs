@@ -92,7 +92,7 @@ pub enum Carrier {
 /// exact.manage(&mut world.bodies, &world.colliders, handle)?;
 /// let start = exact.rotation(handle).unwrap();
 /// for _ in 0..600 {
-///     exact.step_world(&mut world)?; // or exact.step(&mut bodies, dt, |bodies| pipeline.step(…))
+///     exact.step_world(&mut world)?; // or before_step, pipeline.step(…), after_step
 /// }
 /// // 10 s later L_world and the energy are those of the start, in f64, to rounding.
 /// let now = exact.rotation(handle).unwrap();
