@@ -228,8 +228,11 @@ impl ExactRotation {
             ));
         }
         let moments = dvec3_from_vec3(moments);
-        let local_from_principal = dquat_from_quat(props.principal_inertia_local_frame);
-        let world_from_principal = dquat_from_quat(*rb.rotation()) * local_from_principal;
+        // rapier's f32 quaternions are unit only to f32 rounding: rotating
+        // by one unnormalised would scale ω by |q|².
+        let local_from_principal = dquat_from_quat(props.principal_inertia_local_frame).normalize();
+        let world_from_principal =
+            dquat_from_quat(*rb.rotation()).normalize() * local_from_principal;
         let omega_principal = world_from_principal.conjugate() * dvec3_from_vec3(rb.angvel());
         let body = Body::from_principal_moments(f64::from(mass), moments)
             .world_from_body(world_from_principal)

@@ -50,6 +50,11 @@ impl ExactRotation {
     /// and [`ExactRotation::after_step`].
     pub fn step_world(&mut self, world: &mut PhysicsWorld) -> Result<(), RapierAdapterError> {
         let dt = world.integration_parameters.dt;
+        // Refused before rapier steps: rapier quarantines bodies on a
+        // non-finite dt.
+        if !(dt.is_finite() && dt > 0.0) {
+            return Err(RapierAdapterError::InvalidStep { dt });
+        }
         self.before_step(&mut world.bodies)?;
         world.step();
         let touching = Touching {
@@ -96,14 +101,15 @@ impl ExactRotation {
     }
 
     /// After rapier's step of `dt` seconds, for each managed body:
-    /// - free before and after the step (no active contact, no joint, not
-    ///   asleep): kreisel carries it. Its angular momentum is kicked by
+    /// - free before and after the step (no active contact, no joint,
+    ///   awake, enabled and dynamic): kreisel carries it. Its angular momentum is kicked by
     ///   what rapier's step did to its angular velocity (torques, damping:
     ///   `Δω = 0` bit for bit when nothing acted), it moves along the exact
     ///   torque-free flow over `dt`, and its attitude (about the centre of
     ///   mass rapier moved to) and angular velocity are written back,
     ///   rounded to `f32`;
-    /// - touching something (or asleep) after the step: rapier carries it,
+    /// - touching something (or asleep, disabled, made kinematic or fixed)
+    ///   after the step: rapier carries it,
     ///   its gyroscopic term on, and nothing is written;
     /// - free again after rapier carried it: the `f64` state is
     ///   re-synchronised from rapier's and kreisel carries it from the
@@ -134,7 +140,12 @@ impl ExactRotation {
                 next.push(m.carrier);
                 continue;
             };
-            let free = !rb.is_sleeping() && !touching.touches(m.handle, rb);
+            // Disabled, kinematic or fixed bodies are rapier's (or the
+            // user's) to move.
+            let free = rb.is_enabled()
+                && rb.is_dynamic()
+                && !rb.is_sleeping()
+                && !touching.touches(m.handle, rb);
             next.push(if free {
                 Carrier::Kreisel
             } else {
@@ -207,7 +218,7 @@ fn resync(
     m: &Managed,
     rb: &RigidBody,
 ) -> Result<(), RapierAdapterError> {
-    let world_from_principal = dquat_from_quat(*rb.rotation()) * m.local_from_principal;
+    let world_from_principal = dquat_from_quat(*rb.rotation()).normalize() * m.local_from_principal;
     let omega_principal = world_from_principal.conjugate() * dvec3_from_vec3(rb.angvel());
     (world.set_rotation(m.id, world_from_principal, omega_principal)).map_err(|source| {
         RapierAdapterError::Dynamics {
@@ -223,7 +234,7 @@ fn rest(
     m: &Managed,
     rb: &RigidBody,
 ) -> Result<(), RapierAdapterError> {
-    let world_from_principal = dquat_from_quat(*rb.rotation()) * m.local_from_principal;
+    let world_from_principal = dquat_from_quat(*rb.rotation()).normalize() * m.local_from_principal;
     (world.set_rotation(m.id, world_from_principal, DVec3::ZERO)).map_err(|source| {
         RapierAdapterError::Dynamics {
             handle: m.handle,

@@ -230,7 +230,6 @@ fn a_thrown_body_is_carried_by_kreisel_in_flight_and_by_rapier_after_landing() {
 /// by rapier, but the adapter sees it as free (awake, no contact, no
 /// joint) and keeps turning it with the exact flow.
 #[test]
-#[ignore = "bug: the adapter keeps rotating a disabled body"]
 fn a_disabled_body_stays_put() {
     let mut world = free_world();
     let handle = spinning_box(&mut world, 0.0);
@@ -277,7 +276,6 @@ fn changed_after_manage(change: fn(&mut RigidBody)) -> [Vector; 2] {
 /// torque-free flow's (rapier alone keeps it constant). `before_step`
 /// checks the mass properties but not the body type.
 #[test]
-#[ignore = "bug: a managed body made kinematic keeps being carried by the exact flow"]
 fn a_body_made_kinematic_keeps_its_prescribed_angular_velocity() {
     let [alone, with] =
         changed_after_manage(|rb| rb.set_body_type(RigidBodyType::KinematicVelocityBased, true));

@@ -183,7 +183,6 @@ fn user_changes_are_followed_and_the_motion_after_them_is_exact() {
 /// `world_from_principal.conjugate() * ω` in `manage` and `resync` (and
 /// store `local_from_principal` normalised).
 #[test]
-#[ignore = "bug: resync scales omega by |q|^2 of the unnormalised f32 attitude"]
 fn the_motion_after_a_change_is_exact_from_rapiers_f32_state() {
     for (name, change) in changes() {
         let f = follows(change);
