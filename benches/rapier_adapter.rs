@@ -51,7 +51,7 @@ fn world(n: usize, shape: Shape) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
     let mut world = PhysicsWorld::new();
     world.gravity = Vector::ZERO;
     let side = (n as f64).cbrt().ceil() as usize;
-    let golden = 0.618_033_988_749_895_f32;
+    let golden = 0.618_034_f32;
     let handles = (0..n)
         .map(|k| {
             let s = 1.0 + 0.1 * k as f32 / n as f32;
