@@ -433,3 +433,26 @@ fn free_function_matches_the_type() {
         );
     }
 }
+
+/// Regression: zero-thickness plates (I₃ = I₁ + I₂ exactly, then rounded
+/// to `f32`) broke the triangle check by rounding alone (41% of them) and
+/// were refused; they are accepted, with I₃ the sum of the other two.
+#[test]
+fn f32_plates_are_accepted() {
+    let mut refused = 0;
+    for k in 0..1000u32 {
+        let a = 0.1 + f64::from(k) * 0.0137;
+        let b = a * (1.0 + f64::from(k % 17) * 0.11);
+        let m = Vec3::new(a as f32, b as f32, (a + b) as f32);
+        match FreeBodyF32::try_new(m, Quat::IDENTITY) {
+            Ok(body) => {
+                let d = (body.principal_moments() - m).abs();
+                assert!(d.max_element() <= f32::EPSILON * m.max_element(), "{m} {d}");
+            }
+            Err(_) => refused += 1,
+        }
+    }
+    assert_eq!(refused, 0);
+    // A breach well beyond rounding is still refused.
+    assert!(FreeBodyF32::try_new(Vec3::new(1.0, 1.0, 2.0 + 1e-5), Quat::IDENTITY).is_err());
+}
