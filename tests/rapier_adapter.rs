@@ -7,12 +7,12 @@
 //! numbers of both engines.
 
 #[allow(dead_code)]
-#[path = "../examples/rapier_tumble/tumble.rs"]
-mod tumble;
+#[path = "../examples/rapier_tumble/main.rs"]
+mod demo;
 
+use demo::tumble::{self, Engine};
 use kreisel_rapier::ExactRotation;
 use rapier3d::prelude::*;
-use tumble::Engine;
 
 /// The mpmath period of ω for rapier's scenario (ω₀ = (0.01, 1, 0) in
 /// f64; the f32 ω₀ the engines start from moves it by 4e-9 relative).
@@ -286,5 +286,40 @@ fn a_fast_spin_is_not_cut() {
             exact.release(&mut world.bodies, handle);
             assert!(!world.bodies[handle].is_fast_rotation_allowed());
         }
+    }
+}
+
+/// The README's `cargo run --release --example rapier_tumble`: the report's
+/// two lines, the exact period (60-digit reference), rapier's and
+/// rapier+kreisel's as stated; bad options are one line.
+#[test]
+fn the_example_reports_what_the_readme_says() {
+    let text = demo::report(1.0 / 60.0, 100.0).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 2, "{text}");
+    let numbers: Vec<f64> = lines[0]
+        .strip_prefix("period of ω: exact ")
+        .unwrap()
+        .split(&[',', ' '][..])
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    let [exact, rapier, both] = numbers[..] else {
+        panic!("{}", lines[0])
+    };
+    let reference = reference_period();
+    assert!((exact - reference).abs() < 1e-8 * reference, "{exact}");
+    assert!((both - reference).abs() < 1e-6 * reference, "{both}");
+    assert!(
+        ((rapier - reference) / reference - 4.2e-2).abs() < 1e-3,
+        "{rapier}"
+    );
+    assert!(
+        lines[1].starts_with("drift of |L| and energy over 100 s"),
+        "{}",
+        lines[1]
+    );
+    for (dt, duration) in [(0.0, 100.0), (f64::NAN, 100.0), (1.0 / 60.0, 0.0)] {
+        let e = demo::report(dt, duration).unwrap_err();
+        assert!(e.starts_with("--") && !e.contains('\n'), "{e}");
     }
 }

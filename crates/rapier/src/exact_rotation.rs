@@ -38,6 +38,10 @@ pub(crate) struct Managed {
     /// linearised rotation needs and the exact flow does not) is lifted,
     /// so that it does not cut a fast spin.
     pub(crate) fast_rotation: bool,
+    /// The second half of the last step's kick (world axes, N·m·s): part of
+    /// the body's angular momentum, applied to the twin with the next
+    /// step's first half.
+    pub(crate) pending: DVec3,
 }
 
 /// Who carries a managed body's rotation over the next step.
@@ -65,9 +69,8 @@ pub enum Carrier {
 /// gyroscopic term is off, and after each step of rapier's
 ///
 /// ```text
-/// Δω = ω_after − ω_before           (what rapier's step did: torques, damping)
-/// L ← L + R I Rᵀ Δω                 (kick, at the step's initial attitude R)
-/// (R, L) ← exact torque-free flow over dt
+/// J = R I Rᵀ (ω_after − ω_before)  (what rapier's step did: torques, damping)
+/// L ← L + J/2,  (R, L) ← exact torque-free flow over dt,  L ← L + J/2
 /// rapier ← R (about rapier's new centre of mass),  ω = R I⁻¹ Rᵀ L   (rounded to f32)
 /// ```
 ///
@@ -269,6 +272,7 @@ impl ExactRotation {
             written,
             omega_before: written.1,
             carrier: Carrier::Kreisel,
+            pending: DVec3::ZERO,
             fast_rotation: slot.map_or(rb.is_fast_rotation_allowed(), |k| {
                 self.managed[k].fast_rotation
             }),
@@ -329,12 +333,14 @@ impl ExactRotation {
             return None;
         }
         let s = self.world.state(m.id)?;
-        let omega_world = s.world_from_body * s.omega_body;
+        let q = s.world_from_body;
+        let l_world = s.l_world + m.pending;
+        let omega_world = q * ((q.conjugate() * l_world) / m.moments);
         Some(ManagedRotation {
-            world_from_body: s.world_from_body * m.local_from_principal.conjugate(),
+            world_from_body: q * m.local_from_principal.conjugate(),
             omega_world,
-            l_world: s.l_world,
-            energy: 0.5 * omega_world.dot(s.l_world),
+            l_world,
+            energy: 0.5 * omega_world.dot(l_world),
         })
     }
 }

@@ -94,6 +94,7 @@ impl ExactRotation {
             let now = (*rb.rotation(), rb.angvel());
             if m.carrier == Carrier::Kreisel && now != m.written {
                 resync(&mut self.world, m, rb)?;
+                m.pending = DVec3::ZERO;
             }
             m.omega_before = now.1;
         }
@@ -102,12 +103,12 @@ impl ExactRotation {
 
     /// After rapier's step of `dt` seconds, for each managed body:
     /// - free before and after the step (no active contact, no joint,
-    ///   awake, enabled and dynamic): kreisel carries it. Its angular momentum is kicked by
-    ///   what rapier's step did to its angular velocity (torques, damping:
-    ///   `Δω = 0` bit for bit when nothing acted), it moves along the exact
-    ///   torque-free flow over `dt`, and its attitude (about the centre of
-    ///   mass rapier moved to) and angular velocity are written back,
-    ///   rounded to `f32`;
+    ///   awake, enabled and dynamic): kreisel carries it. Its angular
+    ///   momentum is kicked by what rapier's step did to its angular
+    ///   velocity (torques, damping: `Δω = 0` bit for bit when nothing
+    ///   acted), half before and half after the exact torque-free flow over
+    ///   `dt`, and its attitude (about the centre of mass rapier moved to)
+    ///   and angular velocity are written back, rounded to `f32`;
     /// - touching something (or asleep, disabled, made kinematic or fixed)
     ///   after the step: rapier carries it,
     ///   its gyroscopic term on, and nothing is written;
@@ -116,7 +117,7 @@ impl ExactRotation {
     ///   next step on.
     ///
     /// ```text
-    /// kreisel:  L ← L + R I Rᵀ (ω_after − ω_before),  (R, L) ← Φ_dt(R, L),  ω = R I⁻¹ Rᵀ L
+    /// kreisel:  J = R I Rᵀ (ω_after − ω_before),  L ← L + J/2,  (R, L) ← Φ_dt(R, L),  L ← L + J/2,  ω = R I⁻¹ Rᵀ L
     /// ```
     ///
     /// # Errors
@@ -135,6 +136,8 @@ impl ExactRotation {
         // Who carries each body next; kicks for the bodies kreisel carried
         // through a free step.
         let mut next = Vec::with_capacity(self.managed.len());
+        // The second halves of this step's kicks: (body, impulse).
+        let mut pending = Vec::new();
         for m in &self.managed {
             let Some(rb) = bodies.get(m.handle) else {
                 next.push(m.carrier);
@@ -151,24 +154,40 @@ impl ExactRotation {
             } else {
                 Carrier::Rapier
             });
-            if free && m.carrier == Carrier::Kreisel && rb.angvel() != m.omega_before {
-                let d_omega_world = dvec3_from_vec3(rb.angvel()) - dvec3_from_vec3(m.omega_before);
-                let Some(s) = self.world.state(m.id) else {
-                    continue;
-                };
-                let q = s.world_from_body;
-                let j_world = q * (m.moments * (q.conjugate() * d_omega_world));
-                (self.world)
-                    .apply_angular_impulse(m.id, j_world)
-                    .map_err(|source| RapierAdapterError::Dynamics {
-                        handle: m.handle,
-                        source,
-                    })?;
+            if free && m.carrier == Carrier::Kreisel {
+                // Strang: half of this step's kick before the flow (with the
+                // half left over from the step before), half after it.
+                let mut j_world = m.pending;
+                if rb.angvel() != m.omega_before {
+                    let d_omega_world =
+                        dvec3_from_vec3(rb.angvel()) - dvec3_from_vec3(m.omega_before);
+                    let Some(s) = self.world.state(m.id) else {
+                        continue;
+                    };
+                    let q = s.world_from_body;
+                    let half = 0.5 * (q * (m.moments * (q.conjugate() * d_omega_world)));
+                    j_world += half;
+                    pending.push((next.len() - 1, half));
+                }
+                if j_world != DVec3::ZERO {
+                    (self.world)
+                        .apply_angular_impulse(m.id, j_world)
+                        .map_err(|source| RapierAdapterError::Dynamics {
+                            handle: m.handle,
+                            source,
+                        })?;
+                }
             }
         }
         self.world
             .step(f64::from(dt))
             .map_err(|e| self.failure(e))?;
+        for m in &mut self.managed {
+            m.pending = DVec3::ZERO;
+        }
+        for (k, half) in pending {
+            self.managed[k].pending = half;
+        }
         for (m, next) in self.managed.iter_mut().zip(next) {
             let Some(rb) = bodies.get_mut(m.handle) else {
                 continue;
@@ -259,5 +278,8 @@ fn write_back(world: &kreisel_dynamics::World, m: &Managed, rb: &mut RigidBody) 
             false,
         );
     }
-    rb.set_angvel(vec3_from_dvec3(s.world_from_body * s.omega_body), false);
+    // ω from L_world and the half kick still to come.
+    let q = s.world_from_body;
+    let l_principal = q.conjugate() * (s.l_world + m.pending);
+    rb.set_angvel(vec3_from_dvec3(q * (l_principal / m.moments)), false);
 }
