@@ -1,0 +1,4 @@
+"""kreisel: rigid-body rotations done right (Rust, via PyO3)."""
+
+from ._native import *  # noqa: F401,F403
+from ._native import __version__  # noqa: F401
