@@ -21,7 +21,8 @@ use kreisel_inertia::{MassModel, Weld};
 
 use crate::error::{CliError, one_line};
 
-pub use compute::{DensityChoice, Report, Setup, Summary, compute};
+pub use compute::{DensityChoice, Report, Setup, Summary, compute, compute_scaled};
+pub use json::FRAME;
 
 /// What `--weld` chooses.
 #[derive(Debug, Clone, Copy, PartialEq)]

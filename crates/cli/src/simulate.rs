@@ -23,14 +23,18 @@ use std::io::{self, BufWriter, Write};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
-use kreisel_dynamics::DynamicsError;
+use kreisel_dynamics::{BodyId, DynamicsError, World};
 
-use self::output::{Column, CsvWriter};
+pub use self::output::Column;
+use self::output::CsvWriter;
 use self::progress::Progress;
 use self::scene::Scene;
 use crate::error::{CliError, Stream};
 
 use self::methods::AUTO;
+
+/// The bodies' names and ids in scene order.
+pub type Names = [(String, BodyId)];
 
 /// Size of the output buffer.
 const BUFFER_BYTES: usize = 1 << 16;
@@ -232,15 +236,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         path: scene_path.clone(),
         source,
     })?;
-    let mut scene = scene::parse_with_method(scene_path, &text, args.method.as_deref())?;
-    let name = match (&args.method, &scene.method) {
-        (Some(name), _) | (None, Some(name)) => name.clone(),
-        (None, None) => AUTO.to_owned(),
-    };
-    // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
-    if scene.has_pivot {
-        methods::heavy_top_integrator(&name).map_err(|message| CliError::Method { message })?;
-    }
+    let (mut scene, name) = prepare(scene_path, &text, args.method.as_deref())?;
     if args.explain {
         return explain(&scene);
     }
@@ -253,7 +249,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     );
     let mut csv = CsvWriter::with_columns(BufWriter::with_capacity(BUFFER_BYTES, writer), columns)
         .map_err(|source| write_error(&output, source))?;
-    let simulated = simulate(&mut scene, &mut csv, &mut progress);
+    let simulated = simulate(&mut scene, &mut |w, b| csv.rows(w, b), &mut progress);
     progress.finish();
     // The rows written before a divergence are valid: flushed either way.
     let flushed = csv.flush();
@@ -275,6 +271,71 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             flushed.map_err(|source| write_error(&output, source))?;
             // Whole or not at all: the --output file appears only now.
             crate::convert::commit_output(pending, output)
+        }
+    }
+}
+
+/// The scene at `path` (whose text is `text`) parsed and checked as `kreisel
+/// simulate` does, moved by `method` if given (`--method`, a known name)
+/// instead of the scene's: the scene and the name of its method.
+///
+/// # Errors
+/// [`CliError::Method`] for an unknown `method`; as [`scene::parse`];
+/// [`CliError::Method`] for a method without a heavy-top version when a
+/// body has a pivot.
+pub fn prepare(
+    path: &std::path::Path,
+    text: &str,
+    method: Option<&str>,
+) -> Result<(Scene, String), CliError> {
+    if let Some(name) = method {
+        methods::integrator(name).map_err(|message| CliError::Method { message })?;
+    }
+    let scene = scene::parse_with_method(path, text, method)?;
+    let name = match (method, &scene.method) {
+        (Some(name), _) => name.to_owned(),
+        (None, Some(name)) => name.clone(),
+        (None, None) => AUTO.to_owned(),
+    };
+    // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
+    if scene.has_pivot {
+        methods::heavy_top_integrator(&name).map_err(|message| CliError::Method { message })?;
+    }
+    Ok((scene, name))
+}
+
+/// Moves a [`prepare`]d scene through its schedule as `kreisel simulate`
+/// does, handing `rows` the world at every time the CSV has rows for (the
+/// bodies' names and ids in scene order), instead of writing them.
+///
+/// # Errors
+/// The one-line error of `kreisel simulate` for a body that diverged
+/// (`path` names the scene, `method` is the name [`prepare`] returned);
+/// the rows before it have been handed over.
+pub fn run_rows(
+    scene: &mut Scene,
+    path: &std::path::Path,
+    method: &str,
+    rows: &mut dyn FnMut(&World, &Names),
+) -> Result<(), CliError> {
+    let mut progress = Progress::new(scene.schedule.steps(), false);
+    let simulated = simulate(
+        scene,
+        &mut |w, b| {
+            rows(w, b);
+            Ok(())
+        },
+        &mut progress,
+    );
+    match simulated {
+        Ok(()) => Ok(()),
+        Err(Stop::Write(source)) => Err(write_error(&Stream::Standard, source)),
+        Err(Stop::Diverged { body, time, error }) => {
+            let body = scene
+                .bodies
+                .get(body)
+                .map_or("?", |(name, _)| name.as_str());
+            Err(diverged(path, body, time, &error, method))
         }
     }
 }
@@ -392,7 +453,7 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
     }
 }
 
-/// Moves the world through the schedule, writing the rows it asks for:
+/// Moves the world through the schedule, handing `rows` the world at the rows it asks for:
 /// whole steps of `dt` up to each row before the last, then the world is
 /// advanced to `duration`. The world checks every state it reaches; a body
 /// whose state becomes non-finite or whose invariants blow up stops the run
@@ -400,14 +461,14 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
 ///
 /// # Errors
 /// The writer's errors; the first divergence, with the body's index.
-fn simulate<W: Write>(
+fn simulate(
     scene: &mut Scene,
-    csv: &mut CsvWriter<W>,
+    rows: &mut dyn FnMut(&World, &Names) -> io::Result<()>,
     progress: &mut Progress,
 ) -> Result<(), Stop> {
     let schedule = scene.schedule;
     let (world, bodies) = (&mut scene.world, &scene.bodies);
-    csv.rows(world, bodies)?;
+    rows(world, bodies)?;
     let steps = schedule.steps();
     // Without a bar, the world goes from row to row in one call.
     let chunk = if progress.enabled() {
@@ -426,13 +487,13 @@ fn simulate<W: Write>(
         done = target;
         progress.update(done);
         if done == row && schedule.writes_row(done) {
-            csv.rows(world, bodies)?;
+            rows(world, bodies)?;
         }
     }
     world
         .advance_to(schedule.time(steps))
         .map_err(Stop::from_world)?;
-    csv.rows(world, bodies)?;
+    rows(world, bodies)?;
     progress.update(steps);
     Ok(())
 }

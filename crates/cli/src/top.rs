@@ -426,6 +426,18 @@ fn plot(
     })
 }
 
+/// The motion of the top `args` describes and the report of it, as
+/// [`run`] computes them (the plot aside).
+///
+/// # Errors
+/// [`CliError::Argument`] for a bad option value (naming it).
+pub fn solve_and_summarise(args: &TopArgs) -> Result<(LagrangeTopMotion, Summary), CliError> {
+    args.validate()?;
+    let motion = solve(args)?;
+    let summary = summarise(args, &motion);
+    Ok((motion, summary))
+}
+
 /// Runs `kreisel top`.
 ///
 /// # Errors
@@ -433,8 +445,7 @@ fn plot(
 /// for the figure, [`CliError::Write`] when standard output fails.
 pub fn run(args: &TopArgs) -> Result<(), CliError> {
     let format = args.validate()?;
-    let motion = solve(args)?;
-    let summary = summarise(args, &motion);
+    let (motion, summary) = solve_and_summarise(args)?;
     if let (Some(format), Some(path)) = (format, &args.plot) {
         plot(args, &motion, &summary, format, path)?;
     }

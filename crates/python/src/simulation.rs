@@ -1,8 +1,193 @@
-//! (to be written)
+//! `kreisel.simulate`: a scene in the format of `kreisel simulate` (a path
+//! or the TOML text) run exactly as the CLI runs it, the rows it would
+//! write as a dict of numpy arrays keyed by the CSV column names; and the
+//! object API over the engine's World (`kreisel.World`,
+//! `simulation_world.rs`).
+//!
+//! No physics here: the scene is parsed by the CLI's parser into the
+//! engine's World and moved along the CLI's schedule
+//! ([`kreisel_cli::simulate::run_rows`]); where the CLI formats a row, this
+//! copies the state's numbers into columns, so the arrays hold the very
+//! numbers the CSV spells.
 
+use std::num::NonZeroUsize;
+use std::path::{Path, PathBuf};
+
+use kreisel_cli::error::CliError;
+use kreisel_cli::simulate::{Column, prepare, run_rows};
+use kreisel_dynamics::{BodyId, World};
+use numpy::PyArray1;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::errors::{error, guard};
+
+#[path = "simulation_world.rs"]
+mod world;
+
+/// The name a scene given as text goes by in messages (mesh paths in it
+/// are relative to the working directory).
+const TEXT_SCENE: &str = "<string>";
+
+/// The rows of a run, one column per [`Column`].
+#[derive(Default)]
+struct Columns {
+    /// Every numeric column, in [`Column::ALL`] order (`t` first, `body` skipped).
+    numbers: Vec<Vec<f64>>,
+    /// The `body` column.
+    body: Vec<String>,
+}
+
+impl Columns {
+    fn new() -> Self {
+        Self {
+            numbers: vec![Vec::new(); Column::ALL.len() - 1],
+            body: Vec::new(),
+        }
+    }
+
+    /// One row per body of `world` at its current time, in scene order.
+    fn push(&mut self, world: &World, bodies: &[(String, BodyId)]) {
+        for (name, id) in bodies {
+            let Some(s) = world.state(*id) else { continue };
+            let q = s.world_from_body;
+            let row = [
+                s.time,
+                q.w,
+                q.x,
+                q.y,
+                q.z,
+                s.omega_body.x,
+                s.omega_body.y,
+                s.omega_body.z,
+                s.energy,
+                s.l_world.x,
+                s.l_world.y,
+                s.l_world.z,
+                s.position.x,
+                s.position.y,
+                s.position.z,
+                s.velocity.x,
+                s.velocity.y,
+                s.velocity.z,
+            ];
+            for (column, x) in self.numbers.iter_mut().zip(row) {
+                column.push(x);
+            }
+            self.body.push(name.clone());
+        }
+    }
+}
+
+/// What the `scene` argument names: a file, or the TOML text itself.
+fn scene_source(scene: &Bound<'_, PyAny>) -> PyResult<(PathBuf, Option<String>)> {
+    if let Ok(text) = scene.extract::<String>() {
+        // TOML needs a line per key: one line cannot hold a scene.
+        return Ok(if text.contains('\n') {
+            (PathBuf::from(TEXT_SCENE), Some(text))
+        } else {
+            (PathBuf::from(text), None)
+        });
+    }
+    match scene.extract::<PathBuf>() {
+        Ok(path) => Ok((path, None)),
+        Err(_) => Err(error(format!(
+            "scene must be a path or the TOML text of a scene, got {}",
+            scene.get_type().name()?
+        ))),
+    }
+}
+
+/// Reads, parses and runs the scene; the columns of every row.
+fn run(
+    path: &Path,
+    text: Option<String>,
+    method: Option<&str>,
+    threads: Option<usize>,
+) -> Result<Columns, CliError> {
+    let text = match text {
+        Some(text) => text,
+        None => std::fs::read_to_string(path).map_err(|source| CliError::ReadScene {
+            path: path.to_owned(),
+            source,
+        })?,
+    };
+    let (mut scene, name) = prepare(path, &text, method)?;
+    let threads = match threads {
+        Some(n) => NonZeroUsize::new(n).ok_or_else(|| CliError::Argument {
+            argument: "threads".to_owned(),
+            message: "must be at least 1".to_owned(),
+        })?,
+        None => std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN),
+    };
+    scene.world.set_threads(threads);
+    let mut columns = Columns::new();
+    run_rows(&mut scene, path, &name, &mut |world, bodies| {
+        columns.push(world, bodies);
+    })?;
+    Ok(columns)
+}
+
+/// Runs a scene of `kreisel simulate` (a path, or the TOML text) as the CLI
+/// does and returns the rows it would write, one numpy array per CSV
+/// column: ``t``, ``body`` (str), ``qw``, ``qx``, ``qy``, ``qz``
+/// (world_from_body), ``wx``, ``wy``, ``wz`` (body axes), ``energy``,
+/// ``lx``, ``ly``, ``lz`` (world axes), ``x``, ``y``, ``z``, ``vx``,
+/// ``vy``, ``vz``. One row per body and output time, bodies in scene order;
+/// the numbers are those the CSV spells (bit for bit).
+///
+/// ``method`` overrides the scene's (as ``--method``); ``threads`` as
+/// ``--threads`` (the output does not depend on it). A scene given as text
+/// finds its mesh files relative to the working directory. The GIL is
+/// released while the scene runs.
+///
+/// Raises KreiselError with the CLI's one-line message: an unreadable
+/// scene, a bad key (naming its line), a body that diverges.
+///
+/// >>> import kreisel
+/// >>> rows = kreisel.simulate('''
+/// ... [simulation]
+/// ... duration = 1.0
+/// ... dt = 0.5
+/// ... [[body]]
+/// ... mass = 1.0
+/// ... inertia = [1.0, 2.0, 3.0]
+/// ... angular_velocity = [0.0, 0.0, 1.0]
+/// ... ''')
+/// >>> rows["t"].tolist(), rows["body"].tolist()
+/// ([0.0, 0.5, 1.0], ['body1', 'body1', 'body1'])
+/// >>> float(rows["energy"][-1])
+/// 1.5
+#[pyfunction]
+#[pyo3(signature = (scene, method=None, threads=None))]
+fn simulate<'py>(
+    py: Python<'py>,
+    scene: &Bound<'py, PyAny>,
+    method: Option<&str>,
+    threads: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    guard(|| {
+        let (path, text) = scene_source(scene)?;
+        let columns = py
+            .detach(|| run(&path, text, method, threads))
+            .map_err(error)?;
+        let dict = PyDict::new(py);
+        let np = py.import("numpy")?;
+        let mut numbers = columns.numbers.into_iter();
+        for column in Column::ALL {
+            if column == Column::Body {
+                let names = np.call_method1("array", (columns.body.clone(), "str"))?;
+                dict.set_item(column.name(), names)?;
+            } else if let Some(values) = numbers.next() {
+                dict.set_item(column.name(), PyArray1::from_vec(py, values))?;
+            }
+        }
+        Ok(dict)
+    })
+}
 
 /// Adds this part's functions and classes to the module.
-pub fn register(_m: &Bound<'_, PyModule>) -> PyResult<()> {
-    Ok(())
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    world::register(m)
 }

@@ -280,6 +280,18 @@ fn unit_name(u: Units) -> &'static str {
 pub fn compute(setup: Setup) -> Result<Report, CliError> {
     let options = setup.solid_options(setup.merge);
     let bodies = load_scaled(&setup, &options)?;
+    compute_scaled(setup, bodies)
+}
+
+/// [`compute`] for bodies already loaded and scaled to metres (meshes that
+/// come from memory, e.g. vertex and face arrays from Python); `setup.file`
+/// names them in messages. The advice that reloads the file (`--merge`,
+/// `--weld`) is given only when `setup.file` can be read.
+///
+/// # Errors
+/// As [`compute`], but for loading.
+pub fn compute_scaled(setup: Setup, bodies: Vec<Body>) -> Result<Report, CliError> {
+    let options = setup.solid_options(setup.merge);
     if bodies.is_empty() {
         return Err(CliError::NoBodies {
             path: setup.file.clone(),
