@@ -111,7 +111,7 @@ impl PyWorld {
     /// >>> top = w.add_body(0.5, moments=(0.02, 0.02, 0.01), omega_body=(0, 0, 50),
     /// ...                  attitude=(0.99, 0.14, 0, 0), pivot=(0, 0, -0.05))
     /// >>> w.plan(top)
-    /// 'Lagrange top on a pivot: exact, closed form'
+    /// 'Lagrange top on a pivot: exact, closed form ...'
     #[pyo3(signature = (mass, moments=None, inertia=None, *, attitude=None, omega_body=[0.0, 0.0, 0.0], position=[0.0, 0.0, 0.0], velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=0.0))]
     #[allow(clippy::too_many_arguments)] // the Python keywords, one each
     fn add_body(

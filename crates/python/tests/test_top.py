@@ -200,3 +200,22 @@ def test_bad_times_and_arguments():
     with pytest.raises(TypeError):
         kreisel.top(1.0, 0.5, 1.0)
     assert repr(top).startswith("LagrangeTop(i1=0.3")
+
+
+def test_docstring_examples_of_this_part(monkeypatch):
+    # The examples in the docstrings (mass, simulation, World, top) run and
+    # print what they say; paths in them are relative to the repository.
+    import doctest
+
+    monkeypatch.chdir(cli.REPO)
+    objects = [
+        kreisel.mass_properties, kreisel.mass_properties_from_arrays, kreisel.simulate,
+        kreisel.World, kreisel.World.add_body, kreisel.top, kreisel.LagrangeTop,
+    ]  # fmt: skip
+    for obj in objects:
+        assert ">>>" in obj.__doc__, obj
+        finder = doctest.DocTestFinder(recurse=False)
+        runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+        for test in finder.find(obj, obj.__name__, globs={}):
+            runner.run(test)
+        assert runner.failures == 0 and runner.tries > 0, obj
