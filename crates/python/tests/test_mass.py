@@ -316,3 +316,46 @@ def test_wrong_argument_types_raise_type_error_not_panic():
     ]:
         with pytest.raises((TypeError, ValueError)):
             call()
+
+
+@pytest.mark.parametrize("suffix", [".stl", ".obj", ".ply", ".gltf", ".glb"])
+def test_random_and_mutated_files_never_panic(tmp_path, suffix):
+    # Random bytes, and a real file with bytes flipped or cut: a result or a
+    # KreiselError, never a panic caught by the guard ("internal error").
+    rng = np.random.default_rng(15)
+    seeds = {
+        ".stl": REPO / "assets" / "top.stl",
+        ".obj": T_HANDLE,
+        ".ply": FIXTURES / "cube_binary_le.ply",
+        ".gltf": FIXTURES / "cube.gltf",
+        ".glb": FIXTURES / "cube.glb",
+    }
+    original = seeds[suffix].read_bytes()
+    for k in range(40):
+        if k < 10:
+            data = rng.integers(0, 256, int(rng.integers(0, 400)), dtype=np.uint8).tobytes()
+        else:
+            data = bytearray(original)
+            for i in rng.integers(0, len(data), int(rng.integers(1, 8))):
+                data[i] = int(rng.integers(0, 256))
+            data = bytes(data[: int(rng.integers(len(data) // 2, len(data) + 1))])
+        path = tmp_path / f"m{k}{suffix}"
+        path.write_bytes(data)
+        for kwargs in [{}, dict(model="shell"), dict(model="hull", mass=1.0)]:
+            try:
+                kreisel.mass_properties(path, **kwargs)
+            except kreisel.KreiselError as e:
+                assert "internal error" not in str(e) and "\n" not in str(e), (path, str(e))
+
+
+def test_random_arrays_never_panic():
+    rng = np.random.default_rng(16)
+    for k in range(200):
+        n = int(rng.integers(0, 12))
+        v = rng.choice([0.0, 1.0, -1.0, 1e-300, 1e300, np.nan, np.inf], size=(n, 3)) if k % 3 == 0 else rng.normal(size=(n, 3))
+        f = rng.integers(-1, n + 1, size=(int(rng.integers(0, 20)), 3))
+        for kwargs in [{}, dict(model="shell"), dict(model="hull"), dict(units="mm", mass=2.0)]:
+            try:
+                kreisel.mass_properties_from_arrays(v, f, **kwargs)
+            except kreisel.KreiselError as e:
+                assert "internal error" not in str(e), str(e)

@@ -369,3 +369,27 @@ def test_world_refuses_to_go_back_and_keeps_its_state():
             bad()
     assert "bodies=1" in repr(world)
     assert np.array_equal(world.gravity, [0.0, 0.0, 0.0]) and world.dt == 0.1
+
+
+def test_mutated_scenes_never_panic():
+    # Numbers of the scene replaced by extreme ones, lines dropped: a result
+    # or a KreiselError, never a panic caught by the guard.
+    import re
+
+    rng = np.random.default_rng(17)
+    numbers = list(re.finditer(r"-?\d+\.\d+(e-?\d+)?", SCENE))
+    lines = SCENE.splitlines()
+    extremes = ["0.0", "-1.0", "1e300", "-1e300", "1e-300", "nan", "inf", "5e-324", "1e9", "3"]
+    for k in range(150):
+        if k % 2:
+            m = numbers[int(rng.integers(len(numbers)))]
+            text = SCENE[: m.start()] + str(rng.choice(extremes)) + SCENE[m.end():]
+        else:
+            keep = rng.random(len(lines)) > 0.1
+            text = "\n".join(l for l, kept in zip(lines, keep) if kept) + "\n"
+        text = text.replace("duration = 0.5", "duration = 0.05")
+        for method in [None, "rk4", "strang"]:
+            try:
+                kreisel.simulate(text, method=method)
+            except kreisel.KreiselError as e:
+                assert "internal error" not in str(e) and "\n" not in str(e), (text, str(e))

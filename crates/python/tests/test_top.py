@@ -219,3 +219,17 @@ def test_docstring_examples_of_this_part(monkeypatch):
         for test in finder.find(obj, obj.__name__, globs={}):
             runner.run(test)
         assert runner.failures == 0 and runner.tries > 0, obj
+
+
+def test_extreme_parameters_never_panic():
+    rng = np.random.default_rng(18)
+    values = [0.0, -0.0, 1.0, -1.0, 0.5, 2.0, math.pi, 1e-300, 1e300, -1e300, 5e-324, 1e-8, 1e8, float("nan"), float("inf")]
+    for _ in range(400):
+        params = [float(rng.choice(values)) * (1.0 + 0.1 * rng.random()) for _ in range(7)]
+        try:
+            top = kreisel.LagrangeTop(*params)
+            top.euler_at([0.0, 1.0, 1e6])
+            top.world_from_body_at(1e-3)
+            top.omega_body_at(123.4)
+        except kreisel.KreiselError as e:
+            assert "internal error" not in str(e) and "\n" not in str(e), (params, str(e))
