@@ -52,6 +52,7 @@ fn setup(
     thickness: Option<f64>,
     weld: Option<&Bound<'_, PyAny>>,
     merge: bool,
+    scale: Option<f64>,
 ) -> PyResult<Setup> {
     let units = match units {
         "mm" => Units::Mm,
@@ -111,10 +112,19 @@ fn setup(
             }
         },
     };
+    let (units, scale) = match scale {
+        None => (Some(units), units.scale()),
+        Some(_) if units != Units::M => {
+            return Err(error(
+                "scale and units exclude each other: scale is metres per mesh unit",
+            ));
+        }
+        Some(s) => (None, positive(s, "scale (metres per mesh unit)")?),
+    };
     Ok(Setup {
         file,
-        units: Some(units),
-        scale: units.scale(),
+        units,
+        scale,
         model,
         density,
         weld,
@@ -201,7 +211,8 @@ fn report_dict<'py>(py: Python<'py>, report: &Report) -> PyResult<Bound<'py, PyD
 /// "mm", "cm", "m" or "in"; model "solid" (a closed surface), "shell" (a
 /// thin wall of ``thickness`` m, default 0.001) or "hull" (the solid
 /// convex hull). weld: "off" or a tolerance in metres (default 1e-6 x the
-/// bounding-box diagonal); merge=True treats all bodies as one.
+/// bounding-box diagonal); merge=True treats all bodies as one; scale:
+/// metres per mesh unit instead of units (as ``--scale``).
 ///
 /// Raises KreiselError (a ValueError) with the CLI's one-line message: a
 /// missing or unreadable file, an open mesh for the solid model, bad options.
@@ -213,7 +224,7 @@ fn report_dict<'py>(py: Python<'py>, report: &Report) -> PyResult<Bound<'py, PyD
 /// >>> p["inertia"].shape, p["model"]
 /// ((3, 3), 'solid')
 #[pyfunction]
-#[pyo3(signature = (path, density=None, mass=None, units="m", model="solid", thickness=None, *, weld=None, merge=false))]
+#[pyo3(signature = (path, density=None, mass=None, units="m", model="solid", thickness=None, *, weld=None, merge=false, scale=None))]
 #[allow(clippy::too_many_arguments)] // the Python keywords, one each
 fn mass_properties<'py>(
     py: Python<'py>,
@@ -225,9 +236,12 @@ fn mass_properties<'py>(
     thickness: Option<f64>,
     weld: Option<&Bound<'py, PyAny>>,
     merge: bool,
+    scale: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let setup = setup(path, density, mass, units, model, thickness, weld, merge)?;
+        let setup = setup(
+            path, density, mass, units, model, thickness, weld, merge, scale,
+        )?;
         let report = py.detach(|| compute(setup)).map_err(error)?;
         report_dict(py, &report)
     })
@@ -359,7 +373,7 @@ fn body_of(
 /// >>> float(p["mass"])   # 6 kg/m^3 x 1/6 m^3
 /// 1.0
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, density=None, mass=None, units="m", model="solid", thickness=None, *, weld=None, name="mesh"))]
+#[pyo3(signature = (vertices, faces, density=None, mass=None, units="m", model="solid", thickness=None, *, weld=None, name="mesh", scale=None))]
 #[allow(clippy::too_many_arguments)] // the Python keywords, one each
 fn mass_properties_from_arrays<'py>(
     py: Python<'py>,
@@ -372,6 +386,7 @@ fn mass_properties_from_arrays<'py>(
     thickness: Option<f64>,
     weld: Option<&Bound<'py, PyAny>>,
     name: &str,
+    scale: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let setup = setup(
@@ -383,6 +398,7 @@ fn mass_properties_from_arrays<'py>(
             thickness,
             weld,
             false,
+            scale,
         )?;
         let vertices = vertices_of(vertices)?;
         let faces = faces_of(faces, vertices.len())?;

@@ -80,6 +80,8 @@ CASES = [
     (REPO / "assets" / "top_ascii.stl", dict(density=1200.0, weld=1e-9),
      ["--density", "1200", "--weld", "1e-9"]),
     (OPEN_SHEET, dict(model="shell", thickness=1e-3), ["--shell", "--thickness", "1e-3"]),
+    (T_HANDLE, dict(scale=0.5, density=10.0), ["--scale", "0.5", "--density", "10"]),
+    (T_HANDLE, dict(scale=1000.0), ["--scale", "1000"]),
 ]  # fmt: skip
 
 
@@ -252,6 +254,8 @@ def test_garbage_and_truncated_files(tmp_path):
         (dict(model="shell", thickness=-0.1), "thickness (m) must be a positive finite number"),
         (dict(weld=-1.0), "weld must be \"off\" or a non-negative finite number"),
         (dict(weld="sometimes"), "weld must be \"off\""),
+        (dict(scale=0.0), "scale (metres per mesh unit) must be a positive finite number"),
+        (dict(scale=2.0, units="mm"), "scale and units exclude each other"),
     ],
 )
 def test_bad_options(kwargs, fragment):

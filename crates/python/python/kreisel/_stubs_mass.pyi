@@ -31,6 +31,7 @@ def mass_properties(
     *,
     weld: Union[None, float, Literal["off"]] = None,
     merge: bool = False,
+    scale: Optional[float] = None,
 ) -> dict[str, Any]: ...
 def mass_properties_from_arrays(
     vertices: npt.ArrayLike,
@@ -43,6 +44,7 @@ def mass_properties_from_arrays(
     *,
     weld: Union[None, float, Literal["off"]] = None,
     name: str = "mesh",
+    scale: Optional[float] = None,
 ) -> dict[str, Any]: ...
 
 # --- simulation: the rows of `kreisel simulate` by CSV column name
