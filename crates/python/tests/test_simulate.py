@@ -393,3 +393,22 @@ def test_mutated_scenes_never_panic():
                 kreisel.simulate(text, method=method)
             except kreisel.KreiselError as e:
                 assert "internal error" not in str(e) and "\n" not in str(e), (text, str(e))
+
+
+def test_mesh_bodies_relative_to_the_scene_or_the_working_directory(tmp_path, monkeypatch):
+    # A scene file finds its mesh relative to its folder (as the CLI); a
+    # scene given as text, relative to the working directory.
+    mesh = REPO / "assets" / "t_handle.obj"
+    body = ('[simulation]\nduration = 0.2\ndt = 0.01\n[[body]]\nname = "handle"\n'
+            'mesh = "{}"\ndensity = 2700.0\nangular_velocity = [0.1, 3.0, 0.2]\n')  # fmt: skip
+    (tmp_path / "assets").mkdir()
+    (tmp_path / "assets" / "t_handle.obj").write_bytes(mesh.read_bytes())
+    path = tmp_path / "scene.toml"
+    path.write_text(body.format("assets/t_handle.obj"))
+    columns = cli_csv(path, "--columns", ",".join(ALL_COLUMNS))
+    assert_same_as_csv(columns, kreisel.simulate(path))
+    monkeypatch.chdir(REPO)
+    assert_same_as_csv(columns, kreisel.simulate(body.format("assets/t_handle.obj")))
+    monkeypatch.chdir(tmp_path / "assets")
+    with pytest.raises(kreisel.KreiselError, match="t_handle.obj"):
+        kreisel.simulate(body.format("assets/t_handle.obj"))

@@ -233,3 +233,41 @@ def test_extreme_parameters_never_panic():
             top.omega_body_at(123.4)
         except kreisel.KreiselError as e:
             assert "internal error" not in str(e) and "\n" not in str(e), (params, str(e))
+
+
+def test_stubs_fragment_matches_the_module():
+    # Every function and method in _stubs_mass.pyi has the runtime's
+    # parameter names, in order (pyo3's text signatures).
+    import ast
+    import inspect
+    import pathlib
+
+    stubs = pathlib.Path(kreisel.__file__).with_name("_stubs_mass.pyi")
+    tree = ast.parse(stubs.read_text())
+    checked = 0
+
+    def names(fn):
+        a = fn.args
+        return [x.arg for x in a.posonlyargs + a.args + a.kwonlyargs if x.arg != "self"]
+
+    def runtime(obj):
+        return [p for p in inspect.signature(obj).parameters if p != "self"]
+
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef):
+            assert names(node) == runtime(getattr(kreisel, node.name)), node.name
+            checked += 1
+        elif isinstance(node, ast.ClassDef):
+            cls = getattr(kreisel, node.name)
+            for item in node.body:
+                if isinstance(item, ast.FunctionDef) and not any(
+                    isinstance(d, ast.Name) and d.id == "property" for d in item.decorator_list
+                ):
+                    if item.name == "__init__":
+                        assert names(item) == runtime(cls), node.name
+                    elif item.name != "__len__":
+                        assert names(item) == runtime(getattr(cls, item.name)), (node.name, item.name)
+                    checked += 1
+                elif isinstance(item, ast.FunctionDef):
+                    assert isinstance(getattr(cls, item.name), property) or hasattr(cls, item.name)
+    assert checked >= 15
