@@ -26,12 +26,29 @@ impl<'py> Floats<'py> {
     /// # Errors
     /// A `KreiselError` naming the argument when numpy cannot convert it.
     pub fn read(name: &'static str, value: &Bound<'py, PyAny>) -> PyResult<Self> {
-        let array = value.extract().map_err(|e: PyErr| {
+        let py = value.py();
+        let cannot = |e: PyErr| {
             error(format!(
                 "{name}: cannot read as an array of float64 numbers: {}",
-                e.value(value.py())
+                e.value(py)
             ))
-        })?;
+        };
+        let raw = numpy::get_array_module(py)?
+            .getattr("asarray")?
+            .call1((value,))
+            .map_err(cannot)?;
+        let dtype = raw.getattr("dtype")?;
+        let kind: String = dtype.getattr("kind")?.extract()?;
+        // Integers, floats and objects holding numbers convert exactly
+        // enough; complex numbers, booleans, strings and dates would
+        // convert silently (or with a mere warning) into wrong angles.
+        if !matches!(kind.as_str(), "i" | "u" | "f" | "O") {
+            return Err(error(format!(
+                "{name}: cannot read as an array of float64 numbers: dtype {} is not real numbers",
+                dtype.str()?
+            )));
+        }
+        let array = raw.extract().map_err(cannot)?;
         Ok(Self { name, array })
     }
 
