@@ -52,6 +52,28 @@ fn trailing_shape(representation: Representation) -> Vec<usize> {
     }
 }
 
+/// Converts rows of `m` numbers in `input` into rows of `n` numbers in
+/// `output`, stopping at the first bad row (its index in `input`).
+fn convert_rows(
+    input: &[f64],
+    output: &mut [f64],
+    from: Representation,
+    to: Representation,
+    degrees: bool,
+) -> Result<(), (usize, LineProblem)> {
+    let rows = input.chunks_exact(from.count());
+    for (i, (row, slot)) in rows.zip(output.chunks_exact_mut(to.count())).enumerate() {
+        if let Some(problem) = non_finite(row) {
+            return Err((i, problem));
+        }
+        let q = from
+            .quat_from_numbers(&numbers(row), degrees)
+            .map_err(|problem| (i, problem))?;
+        slot.copy_from_slice(to.numbers_from_quat(q, degrees).as_slice());
+    }
+    Ok(())
+}
+
 /// Converts every row of `values` from `from` to `to` (the GIL released).
 ///
 /// ```text
@@ -75,22 +97,9 @@ fn convert_array<'py>(
     let data = values.values();
     let data: &[f64] = &data;
     let (m, n) = (from.count(), to.count());
-    let result = py.detach(|| -> Result<Vec<f64>, (usize, LineProblem)> {
+    let result = py.detach(|| {
         let mut out = vec![0.0; data.len() / m * n];
-        for (i, (row, slot)) in data
-            .chunks_exact(m)
-            .zip(out.chunks_exact_mut(n))
-            .enumerate()
-        {
-            if let Some(problem) = non_finite(row) {
-                return Err((i, problem));
-            }
-            let q = from
-                .quat_from_numbers(&numbers(row), degrees)
-                .map_err(|problem| (i, problem))?;
-            slot.copy_from_slice(to.numbers_from_quat(q, degrees).as_slice());
-        }
-        Ok(out)
+        convert_rows(data, &mut out, from, to, degrees).map(|()| out)
     });
     match result {
         Ok(out) => {
