@@ -8,8 +8,8 @@ from pathlib import Path
 
 import pytest
 
-mpmath = pytest.importorskip("mpmath")
-from mpmath import mp, mpf  # noqa: E402
+import mpmath
+from mpmath import mp, mpf
 
 mp.dps = 50
 
@@ -68,7 +68,7 @@ def f64_quat(q):
 
 def kreisel_binary():
     """The `kreisel` CLI: $KREISEL_BIN, else the workspace's built binary
-    (release, then debug), else None."""
+    (release, then debug), else one built now with cargo, else None."""
     if os.environ.get("KREISEL_BIN"):
         return os.environ["KREISEL_BIN"]
     target = Path(os.environ.get("CARGO_TARGET_DIR", REPO / "target"))
@@ -76,6 +76,10 @@ def kreisel_binary():
         path = target / profile / "kreisel"
         if path.exists():
             return str(path)
+    if shutil.which("cargo"):
+        build = ["cargo", "build", "-q", "--release", "-p", "kreisel-cli"]
+        if subprocess.run(build, cwd=REPO).returncode == 0 and (target / "release" / "kreisel").exists():
+            return str(target / "release" / "kreisel")
     return shutil.which("kreisel")
 
 

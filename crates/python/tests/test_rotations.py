@@ -3,7 +3,8 @@ scipy's Rotation, the CLI bit for bit, and every error path.
 
 Run: pytest crates/python/tests/test_rotations.py  (after `maturin develop`
 or `pip install ./crates/python`; the CLI comparisons need the `kreisel`
-binary, see conftest.kreisel_binary).
+binary, see conftest.kreisel_binary). Needs: pip install -r
+crates/python/tests/requirements.txt.
 """
 
 import csv
@@ -24,7 +25,7 @@ from conftest import (
     f64_quat,
 )
 
-Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
+from scipy.spatial.transform import Rotation
 
 REPRESENTATIONS = ["quat", "quat-xyzw", "matrix", "rotvec", "axis-angle", "euler:ZXZ", "euler:xyz", "euler:YZY"]
 DELTAS = [1e-3, 1e-5, 1e-7, 1e-9, 1e-10, 1e-11, 1e-12]
