@@ -13,7 +13,6 @@ pyo3::create_exception!(
 );
 
 /// A `KreiselError` with `message` (made one line, as the CLI prints it).
-#[allow(dead_code)] // the parts being written use it
 pub fn error(message: impl std::fmt::Display) -> PyErr {
     KreiselError::new_err(kreisel_cli::error::one_line(&message.to_string()))
 }
@@ -21,7 +20,6 @@ pub fn error(message: impl std::fmt::Display) -> PyErr {
 /// Runs `f`, turning a Rust panic into a `KreiselError` ("internal error:
 /// …") instead of pyo3's `PanicException`: no input may raise anything but
 /// a `ValueError` (or a `TypeError` from argument conversion).
-#[allow(dead_code)] // the parts being written use it
 pub fn guard<T>(f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)) {
         Ok(result) => result,

@@ -13,6 +13,8 @@ use pyo3::prelude::*;
 mod errors;
 mod mass;
 mod rotations;
+mod rotations_arrays;
+mod rotations_rates;
 mod simulation;
 mod top;
 

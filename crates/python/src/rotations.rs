@@ -1,8 +1,243 @@
-//! (to be written)
+//! Rotations for Python: `from_euler`, `as_euler` and `convert`, vectorised
+//! over numpy arrays of any leading shape.
+//!
+//! Every function runs the CLI's own conversion (`kreisel convert`,
+//! [`kreisel_cli::representation::Representation`]) row by row, so Python
+//! gets the CLI's numbers bit for bit, its normalisation rules, ranges and
+//! error messages; a bad row is named by its index (`angles[2, 1]: …`)
+//! where the CLI names a line. The GIL is released while the rows are
+//! converted. Euler rates and angular velocity live in `rotations_rates.rs`.
 
+use kreisel_cli::error::LineProblem;
+use kreisel_cli::representation::Representation;
+use kreisel_kinematics::EulerSequence;
+use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
-/// Adds this part's functions and classes to the module.
-pub fn register(_m: &Bound<'_, PyModule>) -> PyResult<()> {
+use crate::errors::{error, guard};
+use crate::rotations_arrays::{Floats, non_finite, numbers, row_name, to_numpy};
+use crate::rotations_rates;
+
+/// The 24 sequence names, for error messages.
+fn sequence_names() -> String {
+    let names: Vec<String> = EulerSequence::all().iter().map(|s| s.to_string()).collect();
+    names.join(" ")
+}
+
+/// Parses a sequence name (`"ZXZ"`, `"xyz"`, …).
+///
+/// # Errors
+/// A `KreiselError` with the library's reason and the valid names.
+pub fn parse_sequence(seq: &str) -> PyResult<EulerSequence> {
+    seq.parse().map_err(|e| {
+        error(format!(
+            "seq: {e}; valid sequences: {} (uppercase intrinsic, lowercase extrinsic)",
+            sequence_names()
+        ))
+    })
+}
+
+/// Parses a representation name as `kreisel convert --from/--to` does.
+fn parse_representation(argument: &str, text: &str) -> PyResult<Representation> {
+    text.parse()
+        .map_err(|e: String| error(format!("{argument} `{text}`: {e}")))
+}
+
+/// The trailing shape of an array of one representation: `(3, 3)` for a
+/// matrix, `(count,)` otherwise.
+fn trailing_shape(representation: Representation) -> Vec<usize> {
+    match representation {
+        Representation::Matrix => vec![3, 3],
+        other => vec![other.count()],
+    }
+}
+
+/// Converts rows of `m` numbers in `input` into rows of `n` numbers in
+/// `output`, stopping at the first bad row (its index in `input`).
+fn convert_rows(
+    input: &[f64],
+    output: &mut [f64],
+    from: Representation,
+    to: Representation,
+    degrees: bool,
+) -> Result<(), (usize, LineProblem)> {
+    let rows = input.chunks_exact(from.count());
+    for (i, (row, slot)) in rows.zip(output.chunks_exact_mut(to.count())).enumerate() {
+        if let Some(problem) = non_finite(row) {
+            return Err((i, problem));
+        }
+        let q = from
+            .quat_from_numbers(&numbers(row), degrees)
+            .map_err(|problem| (i, problem))?;
+        slot.copy_from_slice(to.numbers_from_quat(q, degrees).as_slice());
+    }
     Ok(())
+}
+
+/// Converts every row of `values` from `from` to `to` (the GIL released).
+///
+/// ```text
+/// row (numbers in `from`) → unit quaternion → numbers in `to`
+/// ```
+///
+/// # Errors
+/// A `KreiselError` for a wrong shape, or naming the first bad row with the
+/// CLI's message for it.
+fn convert_array<'py>(
+    py: Python<'py>,
+    values: &Floats<'py>,
+    from: Representation,
+    to: Representation,
+    degrees: bool,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    let leading = values.leading_shape(
+        &trailing_shape(from),
+        &format!("{} numbers for {from}", from.count()),
+    )?;
+    let data = values.values();
+    let data: &[f64] = &data;
+    let (m, n) = (from.count(), to.count());
+    let result = py.detach(|| {
+        let mut out = vec![0.0; data.len() / m * n];
+        convert_rows(data, &mut out, from, to, degrees).map(|()| out)
+    });
+    match result {
+        Ok(out) => {
+            let mut shape = leading;
+            shape.extend(trailing_shape(to));
+            to_numpy(py, shape, out)
+        }
+        Err((row, problem)) => Err(error(format!(
+            "{}: {problem}",
+            row_name(values.name(), &leading, row)
+        ))),
+    }
+}
+
+/// Quaternions of Euler angles: `(..., 3)` angles → `(..., 4)` unit
+/// quaternions `(w, x, y, z)`, canonical (`w ≥ 0`).
+///
+/// `seq` names the convention as scipy does: uppercase is intrinsic
+/// (`"ZXZ"`: about the moving body axes), lowercase extrinsic (`"zxz"`:
+/// about the fixed axes); all 24 (`XYZ XZY YXZ YZX ZXY ZYX XYX XZX YXY YZY
+/// ZXZ ZYZ` and their lowercase forms). Angles in radians, or degrees with
+/// `degrees=True`. The numbers are those of `kreisel convert --from
+/// euler:SEQ --to quat`, bit for bit.
+///
+/// Intrinsic `ABC`: `q = q_A(a0) ⊗ q_B(a1) ⊗ q_C(a2)`; extrinsic `abc`:
+/// `q = q_c(a2) ⊗ q_b(a1) ⊗ q_a(a0)`, `q_n(t) = (cos t/2, sin t/2 e_n)`.
+///
+/// Raises `KreiselError` (a `ValueError`) for an unknown sequence, a last
+/// axis that is not 3 long, or a non-finite angle (naming its index).
+///
+/// >>> import kreisel
+/// >>> kreisel.from_euler("ZXZ", [90.0, 0.0, 0.0], degrees=True).round(12).tolist()
+/// [0.707106781187, 0.0, 0.0, 0.707106781187]
+/// >>> kreisel.from_euler("xyz", [[0.0, 0.0, 0.0], [3.141592653589793, 0.0, 0.0]]).round(12).tolist()
+/// [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]
+#[pyfunction]
+#[pyo3(signature = (seq, angles, degrees = false))]
+fn from_euler<'py>(
+    py: Python<'py>,
+    seq: &str,
+    angles: &Bound<'py, PyAny>,
+    degrees: bool,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    guard(|| {
+        let sequence = parse_sequence(seq)?;
+        let angles = Floats::read("angles", angles)?;
+        convert_array(
+            py,
+            &angles,
+            Representation::Euler(sequence),
+            Representation::Quat,
+            degrees,
+        )
+    })
+}
+
+/// Euler angles of quaternions: `(..., 4)` quaternions `(w, x, y, z)` (any
+/// non-zero length; normalised) → `(..., 3)` angles.
+///
+/// Ranges: first and third angle in `(-π, π]`, middle in `[0, π]` (proper
+/// Euler, e.g. `ZXZ`) or `[-π/2, π/2]` (Tait–Bryan, e.g. `XYZ`); exactly at
+/// gimbal lock the third angle is 0 and the first carries the rotation. The
+/// method (Bernardes & Viollet 2022, atan2 only) keeps ~1e-16 rad next to
+/// the lock. Radians, or degrees with `degrees=True`. The numbers are
+/// those of `kreisel convert --from quat --to euler:SEQ`, bit for bit.
+///
+/// Raises `KreiselError` for an unknown sequence, a last axis that is not 4
+/// long, a non-finite number or a zero quaternion (naming its index).
+///
+/// >>> import kreisel
+/// >>> q = kreisel.from_euler("ZXZ", [10.0, 20.0, 30.0], degrees=True)
+/// >>> kreisel.as_euler("ZXZ", q, degrees=True).round(9).tolist()
+/// [10.0, 20.0, 30.0]
+/// >>> kreisel.as_euler("ZXZ", [1.0, 0.0, 0.0, 0.0]).tolist()
+/// [0.0, 0.0, 0.0]
+#[pyfunction]
+#[pyo3(signature = (seq, quats, degrees = false))]
+fn as_euler<'py>(
+    py: Python<'py>,
+    seq: &str,
+    quats: &Bound<'py, PyAny>,
+    degrees: bool,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    guard(|| {
+        let sequence = parse_sequence(seq)?;
+        let quats = Floats::read("quats", quats)?;
+        convert_array(
+            py,
+            &quats,
+            Representation::Quat,
+            Representation::Euler(sequence),
+            degrees,
+        )
+    })
+}
+
+/// Converts rotations between the representations of `kreisel convert`.
+///
+/// `src` and `dst` are `"quat"` (`w, x, y, z`, last axis 4; any non-zero
+/// length on input, canonical `w ≥ 0` on output), `"quat-xyzw"` (scipy's
+/// and ROS's order), `"matrix"` (active, `v_world = M v_body`, last axes
+/// `(3, 3)`; orthonormal within 1e-6 and `det > 0` on input), `"rotvec"`
+/// (axis · angle, always radians), `"axis-angle"` (`x, y, z, angle`; output
+/// unit axis and angle in `[0, π]`) or `"euler:SEQ"` (e.g. `"euler:ZXZ"`).
+/// With `degrees=True`, Euler angles and the axis–angle angle are in
+/// degrees. The leading shape is kept: `(..., 3, 3)` matrices become
+/// `(..., 4)` quaternions. The numbers are the CLI's, bit for bit.
+///
+/// Raises `KreiselError` with the CLI's message for an unknown
+/// representation, a wrong shape, and the first row that is not a rotation
+/// (naming its index: `values[2]: matrix is a reflection, …`).
+///
+/// >>> import kreisel
+/// >>> kreisel.convert([0.0, 0.0, 1.5707963267948966], "rotvec", "axis-angle", degrees=True).round(12).tolist()
+/// [0.0, 0.0, 1.0, 90.0]
+/// >>> kreisel.convert([[1, 0, 0], [0, 0, -1], [0, 1, 0]], "matrix", "quat-xyzw").round(12).tolist()
+/// [0.707106781187, 0.0, 0.0, 0.707106781187]
+#[pyfunction]
+#[pyo3(signature = (values, src, dst, degrees = false))]
+fn convert<'py>(
+    py: Python<'py>,
+    values: &Bound<'py, PyAny>,
+    src: &str,
+    dst: &str,
+    degrees: bool,
+) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+    guard(|| {
+        let from = parse_representation("src", src)?;
+        let to = parse_representation("dst", dst)?;
+        let values = Floats::read("values", values)?;
+        convert_array(py, &values, from, to, degrees)
+    })
+}
+
+/// Adds this part's functions to the module.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(from_euler, m)?)?;
+    m.add_function(wrap_pyfunction!(as_euler, m)?)?;
+    m.add_function(wrap_pyfunction!(convert, m)?)?;
+    rotations_rates::register(m)
 }

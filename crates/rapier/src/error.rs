@@ -81,3 +81,10 @@ pub enum RapierAdapterError {
         dt: f32,
     },
 }
+
+impl RapierAdapterError {
+    /// The [`RapierAdapterError::Dynamics`] of body `handle`, for `map_err`.
+    pub(crate) fn dynamics(handle: RigidBodyHandle) -> impl Fn(DynamicsError) -> Self {
+        move |source| Self::Dynamics { handle, source }
+    }
+}

@@ -254,13 +254,13 @@ impl ExactRotation {
                 // The same body again: the twin takes the new state.
                 self.world
                     .set_rotation(old.id, q, w)
-                    .map_err(|source| RapierAdapterError::Dynamics { handle, source })?;
+                    .map_err(RapierAdapterError::dynamics(handle))?;
                 old.id
             }
             None => self
                 .world
                 .add(body)
-                .map_err(|source| RapierAdapterError::Dynamics { handle, source })?,
+                .map_err(RapierAdapterError::dynamics(handle))?,
         };
         let written = (*rb.rotation(), rb.angvel());
         let managed = Managed {

@@ -93,7 +93,7 @@ impl ExactRotation {
             }
             let now = (*rb.rotation(), rb.angvel());
             if m.carrier == Carrier::Kreisel && now != m.written {
-                resync(&mut self.world, m, rb)?;
+                take_rapiers(&mut self.world, m, rb, true)?;
                 m.pending = DVec3::ZERO;
             }
             m.omega_before = now.1;
@@ -172,10 +172,7 @@ impl ExactRotation {
                 if j_world != DVec3::ZERO {
                     (self.world)
                         .apply_angular_impulse(m.id, j_world)
-                        .map_err(|source| RapierAdapterError::Dynamics {
-                            handle: m.handle,
-                            source,
-                        })?;
+                        .map_err(RapierAdapterError::dynamics(m.handle))?;
                 }
             }
         }
@@ -197,14 +194,14 @@ impl ExactRotation {
                 (Carrier::Kreisel, Carrier::Rapier) => {
                     // rapier moved it through this step's contact; the twin
                     // rests (costs nothing) until the body is free again.
-                    rest(&mut self.world, m, rb)?;
+                    take_rapiers(&mut self.world, m, rb, false)?;
                     rb.enable_gyroscopic_forces(true);
                     rb.set_allow_fast_rotation(m.fast_rotation);
                 }
                 (Carrier::Rapier, Carrier::Kreisel) => {
                     rb.enable_gyroscopic_forces(false);
                     rb.set_allow_fast_rotation(true);
-                    resync(&mut self.world, m, rb)?;
+                    take_rapiers(&mut self.world, m, rb, true)?;
                 }
                 (Carrier::Rapier, Carrier::Rapier) => {}
             }
@@ -230,36 +227,22 @@ impl ExactRotation {
     }
 }
 
-/// The twin takes rapier's rotation and angular velocity (exact: `f32` →
-/// `f64`).
-fn resync(
+/// The twin takes rapier's rotation and, if `moving`, its angular
+/// velocity (exact: `f32` → `f64`); else it rests there (a plan that costs
+/// nothing).
+fn take_rapiers(
     world: &mut kreisel_dynamics::World,
     m: &Managed,
     rb: &RigidBody,
+    moving: bool,
 ) -> Result<(), RapierAdapterError> {
     let world_from_principal = dquat_from_quat(*rb.rotation()).normalize() * m.local_from_principal;
-    let omega_principal = world_from_principal.conjugate() * dvec3_from_vec3(rb.angvel());
-    (world.set_rotation(m.id, world_from_principal, omega_principal)).map_err(|source| {
-        RapierAdapterError::Dynamics {
-            handle: m.handle,
-            source,
-        }
-    })
-}
-
-/// The twin rests at rapier's rotation (a plan that costs nothing).
-fn rest(
-    world: &mut kreisel_dynamics::World,
-    m: &Managed,
-    rb: &RigidBody,
-) -> Result<(), RapierAdapterError> {
-    let world_from_principal = dquat_from_quat(*rb.rotation()).normalize() * m.local_from_principal;
-    (world.set_rotation(m.id, world_from_principal, DVec3::ZERO)).map_err(|source| {
-        RapierAdapterError::Dynamics {
-            handle: m.handle,
-            source,
-        }
-    })
+    let omega_principal = match moving {
+        true => world_from_principal.conjugate() * dvec3_from_vec3(rb.angvel()),
+        false => DVec3::ZERO,
+    };
+    (world.set_rotation(m.id, world_from_principal, omega_principal))
+        .map_err(RapierAdapterError::dynamics(m.handle))
 }
 
 /// Writes the twin's attitude (turned about the centre of mass rapier moved

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{body_with_moments, free_world};
+use common::{body_with_moments, free_world, managed};
 use kreisel_rapier::{ExactRotation, RapierAdapterError};
 use rapier3d::prelude::*;
 
@@ -147,10 +147,7 @@ fn invalid_mass_properties_no_mass_or_triangle_inequality() {
 fn mass_properties_changed_after_a_collider_is_added() {
     let mut world = free_world();
     let handle = spinning_box(&mut world);
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     exact.step_world(&mut world).unwrap();
     world.insert_collider(
         ColliderBuilder::ball(0.3).translation(Vector::new(0.5, 0.0, 0.0)),
@@ -183,10 +180,7 @@ fn invalid_step_zero_negative_nan() {
     for dt in [0.0f32, -1.0 / 60.0, f32::NAN, f32::INFINITY] {
         let mut world = free_world();
         let handle = spinning_box(&mut world);
-        let mut exact = ExactRotation::new();
-        exact
-            .manage(&mut world.bodies, &world.colliders, handle)
-            .unwrap();
+        let mut exact = managed(&mut world, handle);
         world.integration_parameters.dt = dt;
         let e = exact.step_world(&mut world).unwrap_err();
         match e {
@@ -200,7 +194,7 @@ fn invalid_step_zero_negative_nan() {
     }
 }
 
-/// Bug: `step_world` takes rapier's step before `after_step` refuses the
+/// Regression: `step_world` took rapier's step before `after_step` refuses the
 /// time step. A negative `dt` is harmless (rapier skips steps of
 /// `dt <= 0`), but with `dt` = NaN or ∞ rapier integrates, finds the
 /// body's state non-finite and quarantines it (velocity zeroed, body
@@ -210,10 +204,7 @@ fn invalid_step_leaves_rapier_untouched() {
     for dt in [-1.0 / 60.0, f32::NAN, f32::INFINITY] {
         let mut world = free_world();
         let handle = spinning_box(&mut world);
-        let mut exact = ExactRotation::new();
-        exact
-            .manage(&mut world.bodies, &world.colliders, handle)
-            .unwrap();
+        let mut exact = managed(&mut world, handle);
         let rb = &world.bodies[handle];
         let before = (*rb.position(), rb.angvel(), rb.is_enabled());
         world.integration_parameters.dt = dt;

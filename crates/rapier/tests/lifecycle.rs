@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{angle, attitude, free_world};
+use common::{angle, attitude, free_world, managed};
 use kreisel_rapier::{Carrier, ExactRotation};
 use rapier3d::prelude::*;
 
@@ -59,10 +59,7 @@ fn manage_and_release_switch_rapiers_gyroscopic_term() {
 fn managing_twice_resynchronises_without_a_second_twin() {
     let mut world = free_world();
     let handle = spinning_box(&mut world, 0.0);
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     for _ in 0..10 {
         exact.step_world(&mut world).unwrap();
     }
@@ -84,10 +81,7 @@ fn a_removed_body_is_released_at_the_next_step() {
     let mut world = free_world();
     let a = spinning_box(&mut world, 0.0);
     let b = spinning_box(&mut world, 5.0);
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, a)
-        .unwrap();
+    let mut exact = managed(&mut world, a);
     exact
         .manage(&mut world.bodies, &world.colliders, b)
         .unwrap();
@@ -116,10 +110,7 @@ fn a_jointed_body_is_carried_by_rapier() {
         .local_anchor1(Vector::ZERO)
         .local_anchor2(Vector::new(0.4, 0.0, 0.0));
     world.insert_impulse_joint(anchor, handle, joint);
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     exact.step_world(&mut world).unwrap();
     assert_eq!(exact.carrier(handle), Some(Carrier::Rapier));
     assert!(world.bodies[handle].gyroscopic_forces_enabled());
@@ -164,10 +155,7 @@ fn a_resting_body_falls_asleep_as_in_rapier_alone() {
     let (mut alone, h) = scene();
     let n_alone = steps_to_sleep(&mut alone, h, None, 600).expect("rapier alone sleeps");
     let (mut world, handle) = scene();
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     let n = steps_to_sleep(&mut world, handle, Some(&mut exact), 600).expect("managed sleeps");
     println!("asleep after {n_alone} steps (rapier alone), {n} (managed)");
     assert!(n <= 300, "{n} steps");
@@ -193,10 +181,7 @@ fn a_thrown_body_is_carried_by_kreisel_in_flight_and_by_rapier_after_landing() {
             .angvel(Vector::new(0.5, 4.0, 0.2)),
         ColliderBuilder::cuboid(0.4, 0.2, 0.1),
     );
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     let mut carriers = Vec::new();
     let mut heights = Vec::new();
     for _ in 0..180 {
@@ -226,17 +211,14 @@ fn a_thrown_body_is_carried_by_kreisel_in_flight_and_by_rapier_after_landing() {
     assert!(world.bodies[handle].gyroscopic_forces_enabled());
 }
 
-/// Bug: a disabled body (`RigidBody::set_enabled(false)`) is not moved
+/// Regression: a disabled body (`RigidBody::set_enabled(false)`) is not moved
 /// by rapier, but the adapter sees it as free (awake, no contact, no
 /// joint) and keeps turning it with the exact flow.
 #[test]
 fn a_disabled_body_stays_put() {
     let mut world = free_world();
     let handle = spinning_box(&mut world, 0.0);
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     exact.step_world(&mut world).unwrap();
     world.bodies[handle].set_enabled(false);
     let q = *world.bodies[handle].rotation();
@@ -252,15 +234,12 @@ fn a_disabled_body_stays_put() {
 /// times by rapier alone (released) and with the adapter: the two
 /// bodies' angular velocities.
 fn changed_after_manage(change: fn(&mut RigidBody)) -> [Vector; 2] {
-    [false, true].map(|managed| {
+    [false, true].map(|keep| {
         let mut world = free_world();
         let handle = spinning_box(&mut world, 0.0);
-        let mut exact = ExactRotation::new();
-        exact
-            .manage(&mut world.bodies, &world.colliders, handle)
-            .unwrap();
+        let mut exact = managed(&mut world, handle);
         exact.step_world(&mut world).unwrap();
-        if !managed {
+        if !keep {
             exact.release(&mut world.bodies, handle);
         }
         change(&mut world.bodies[handle]);
@@ -271,7 +250,7 @@ fn changed_after_manage(change: fn(&mut RigidBody)) -> [Vector; 2] {
     })
 }
 
-/// Bug: a managed body made kinematic after `manage` is still carried by
+/// Regression: a managed body made kinematic after `manage` is still carried by
 /// the adapter: its prescribed angular velocity is replaced by the
 /// torque-free flow's (rapier alone keeps it constant). `before_step`
 /// checks the mass properties but not the body type.

@@ -7,8 +7,8 @@
 mod common;
 
 use common::{
-    angle, attitude, body_with_moments, d, exact_attitude, exact_from, exact_from_managed,
-    free_world,
+    angle, attitude, d, exact_attitude, exact_from, exact_from_managed, free_world, managed,
+    tumbling_body,
 };
 use kreisel_rapier::{Carrier, ExactRotation};
 use rapier3d::math::Pose;
@@ -21,18 +21,8 @@ const STEPS: usize = 60;
 /// centre of mass off the origin, tumbling; managed and carried 20 steps.
 fn tumbling() -> (PhysicsWorld, RigidBodyHandle, ExactRotation) {
     let mut world = free_world();
-    let handle = body_with_moments(
-        &mut world,
-        Vector::new(0.2, 0.45, 0.6),
-        Rotation::from_scaled_axis(Vector::new(0.3, -0.2, 0.5)),
-        Vector::new(0.1, -0.05, 0.2),
-        Rotation::from_scaled_axis(Vector::new(-0.4, 1.1, 0.2)),
-        Vector::new(0.4, 2.5, -0.3),
-    );
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let handle = tumbling_body(&mut world);
+    let mut exact = managed(&mut world, handle);
     for _ in 0..20 {
         exact.step_world(&mut world).unwrap();
     }
@@ -174,7 +164,7 @@ fn user_changes_are_followed_and_the_motion_after_them_is_exact() {
     }
 }
 
-/// Bug: `manage` and the re-synchronisation rotate rapier's ω into the
+/// Regression: `manage` and the re-synchronisation rotate rapier's ω into the
 /// principal frame with the `f32` quaternion `rotation ⊗ frame` converted
 /// to `f64` but not normalised; glam's `q * v` assumes `|q| = 1`, so ω and
 /// L come out scaled by `|q|²` (1 ± 1e-7), and the attitude drifts from the

@@ -14,7 +14,7 @@
 
 mod common;
 
-use common::{angle, attitude, body_with_moments, d, free_world, l_world};
+use common::{angle, attitude, body_with_moments, d, free_world, l_world, managed, tumbling_body};
 use glam::{DQuat, DVec3};
 use kreisel_rapier::ExactRotation;
 use rapier3d::prelude::*;
@@ -162,20 +162,10 @@ fn a_torque_across_the_spin_is_second_order_in_dt() {
 fn constant_torque_on_an_asymmetric_body_adds_tau_t_to_l() {
     let mut world = free_world();
     let dt = world.integration_parameters.dt;
-    let handle = body_with_moments(
-        &mut world,
-        Vector::new(0.2, 0.45, 0.6),
-        Rotation::from_scaled_axis(Vector::new(0.3, -0.2, 0.5)),
-        Vector::new(0.1, -0.05, 0.2),
-        Rotation::from_scaled_axis(Vector::new(-0.4, 1.1, 0.2)),
-        Vector::new(0.4, 2.5, -0.3),
-    );
+    let handle = tumbling_body(&mut world);
     let tau = Vector::new(0.3, -0.2, 0.5);
     world.bodies[handle].add_torque(tau, true);
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     let l0 = exact.rotation(handle).unwrap().l_world;
     let steps = 120;
     let mut worst = 0.0f64;
@@ -214,10 +204,7 @@ fn angular_damping_scales_l_by_rapiers_factor() {
         Vector::new(0.4, 2.5, -0.3),
     );
     world.bodies[handle].set_angular_damping(damping);
-    let mut exact = ExactRotation::new();
-    exact
-        .manage(&mut world.bodies, &world.colliders, handle)
-        .unwrap();
+    let mut exact = managed(&mut world, handle);
     let l0: DVec3 = exact.rotation(handle).unwrap().l_world;
     let factor = f64::from(1.0f32 / (1.0f32 + dt * damping));
     let steps = 120;

@@ -8,6 +8,7 @@
 use glam::{DQuat, DVec3};
 use kreisel_dynamics::{ExactSolution, PrincipalState};
 use kreisel_kinematics::glam033_interop::{dquat_from_quat, dvec3_from_vec3};
+use kreisel_rapier::ExactRotation;
 use rapier3d::prelude::*;
 
 /// A rapier world without gravity.
@@ -104,4 +105,26 @@ pub fn exact_from_managed(
     };
     let exact = ExactSolution::try_new(moments, state).expect("a physical body");
     (exact, local_from_principal)
+}
+
+/// An asymmetric body, principal axes tilted against rapier's local axes,
+/// centre of mass off the origin, tumbling.
+pub fn tumbling_body(world: &mut PhysicsWorld) -> RigidBodyHandle {
+    body_with_moments(
+        world,
+        Vector::new(0.2, 0.45, 0.6),
+        Rotation::from_scaled_axis(Vector::new(0.3, -0.2, 0.5)),
+        Vector::new(0.1, -0.05, 0.2),
+        Rotation::from_scaled_axis(Vector::new(-0.4, 1.1, 0.2)),
+        Vector::new(0.4, 2.5, -0.3),
+    )
+}
+
+/// An adapter managing body `handle` of `world`.
+pub fn managed(world: &mut PhysicsWorld, handle: RigidBodyHandle) -> ExactRotation {
+    let mut exact = ExactRotation::new();
+    exact
+        .manage(&mut world.bodies, &world.colliders, handle)
+        .unwrap();
+    exact
 }

@@ -1,0 +1,139 @@
+"""kreisel vs scipy on 10⁶ rotations: from_euler and as_euler, speed and
+accuracy side by side in one run.
+
+    python crates/python/bench/bench_rotations.py [--n 1000000] [--repeat 7]
+
+Speed: median wall time of --repeat runs of
+    kreisel.from_euler(seq, a)              vs  Rotation.from_euler(seq, a).as_quat()
+    kreisel.as_euler(seq, q)                vs  Rotation.from_quat(q).as_euler(seq)
+(both scalar-first where scipy offers it: as_quat(scalar_first=True) and
+from_quat(q, scalar_first=True)), for an intrinsic and an extrinsic,
+a Tait–Bryan and a proper sequence.
+
+Accuracy: rotation angle between the input quaternion and the rotation
+recomposed exactly (mpmath, 50 digits) from each library's f64 angles, on
+random rotations and next to gimbal lock (middle angle 1e-3 .. 1e-12 rad
+from the lock), over a sample of each set (mpmath is slow).
+"""
+
+import argparse
+import math
+import statistics
+import sys
+import time
+
+import numpy as np
+from mpmath import mp, mpf
+import mpmath
+from scipy.spatial.transform import Rotation
+
+import kreisel
+
+mp.dps = 50
+SEQS = ["ZYX", "xyz", "ZXZ", "yxy"]
+PROPER = {"XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ"}
+
+
+def qmul(p, q):
+    pw, px, py, pz = p
+    qw, qx, qy, qz = q
+    return (
+        pw * qw - px * qx - py * qy - pz * qz,
+        pw * qx + px * qw + py * qz - pz * qy,
+        pw * qy - px * qz + py * qw + pz * qx,
+        pw * qz + px * qy - py * qx + pz * qw,
+    )
+
+
+def exact_quat(seq, angles):
+    f = []
+    for letter, t in zip(seq, angles):
+        half = mpf(float(t)) / 2
+        v = [mpf(0)] * 3
+        v["xyz".index(letter.lower())] = mpmath.sin(half)
+        f.append((mpmath.cos(half), *v))
+    return qmul(qmul(f[0], f[1]), f[2]) if seq.isupper() else qmul(qmul(f[2], f[1]), f[0])
+
+
+def exact_error(q, seq, angles):
+    """Rotation angle between the f64 quaternion q and the exact rotation of angles."""
+    p = exact_quat(seq, angles)
+    q = [mpf(float(x)) for x in q]
+    d = qmul((p[0], -p[1], -p[2], -p[3]), q)
+    return float(2 * mpmath.atan2(mpmath.sqrt(d[1] ** 2 + d[2] ** 2 + d[3] ** 2), abs(d[0])))
+
+
+def median_time(f, repeat):
+    times = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        f()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def near_lock(seq, n, rng):
+    locks = [0.0, math.pi] if seq.upper() in PROPER else [-math.pi / 2, math.pi / 2]
+    deltas = 10.0 ** -rng.integers(3, 13, size=n)
+    lock = np.array(locks)[rng.integers(0, 2, size=n)]
+    middle = np.where(lock == 0.0, deltas, np.where(lock == math.pi, lock - deltas, lock - np.sign(lock) * deltas))
+    a = rng.uniform(-math.pi, math.pi, size=(n, 3))
+    a[:, 1] = middle
+    return a
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--n", type=int, default=1_000_000)
+    ap.add_argument("--repeat", type=int, default=7)
+    ap.add_argument("--sample", type=int, default=300, help="rows per set checked in mpmath")
+    args = ap.parse_args()
+    rng = np.random.default_rng(1)
+    import scipy
+
+    print(f"kreisel {kreisel.__version__}, scipy {scipy.__version__}, numpy {np.__version__}, "
+          f"python {sys.version.split()[0]}; n = {args.n}, median of {args.repeat}")
+    print(f"{'seq':4} {'op':10} {'kreisel ms':>10} {'scipy ms':>9} {'ratio':>6}   "
+          f"{'kreisel err random':>18} {'scipy err random':>16} {'kreisel err lock':>16} {'scipy err lock':>14}")
+    worst = {"ratio_from": math.inf, "ratio_as": math.inf, "k_err": 0.0, "s_err": 0.0}
+    for seq in SEQS:
+        angles = rng.uniform(-math.pi, math.pi, size=(args.n, 3))
+        quats = kreisel.from_euler(seq, angles)
+        tk = median_time(lambda: kreisel.from_euler(seq, angles), args.repeat)
+        ts = median_time(lambda: Rotation.from_euler(seq, angles).as_quat(scalar_first=True), args.repeat)
+        # accuracy of from_euler: exact quaternion of the f64 angles
+        idx = rng.integers(0, args.n, size=args.sample)
+        qk = quats[idx]
+        qs = Rotation.from_euler(seq, angles[idx]).as_quat(scalar_first=True)
+        ek = max(exact_error(q, seq, a) for q, a in zip(qk, angles[idx]))
+        es = max(exact_error(q, seq, a) for q, a in zip(qs, angles[idx]))
+        lock_angles = near_lock(seq, args.sample, rng)
+        ekl = max(exact_error(q, seq, a) for q, a in zip(kreisel.from_euler(seq, lock_angles), lock_angles))
+        esl = max(exact_error(q, seq, a) for q, a in
+                  zip(Rotation.from_euler(seq, lock_angles).as_quat(scalar_first=True), lock_angles))
+        print(f"{seq:4} {'from_euler':10} {tk * 1e3:10.1f} {ts * 1e3:9.1f} {ts / tk:6.2f}   "
+              f"{ek:18.1e} {es:16.1e} {ekl:16.1e} {esl:14.1e}")
+        worst["ratio_from"] = min(worst["ratio_from"], ts / tk)
+        worst["k_err"] = max(worst["k_err"], ek, ekl)
+
+        tk = median_time(lambda: kreisel.as_euler(seq, quats), args.repeat)
+        ts = median_time(lambda: Rotation.from_quat(quats, scalar_first=True).as_euler(seq), args.repeat)
+        ak = kreisel.as_euler(seq, quats[idx])
+        as_ = Rotation.from_quat(quats[idx], scalar_first=True).as_euler(seq)
+        ek = max(exact_error(q, seq, a) for q, a in zip(quats[idx], ak))
+        es = max(exact_error(q, seq, a) for q, a in zip(quats[idx], as_))
+        # next to the lock: the f64 quaternion (rounded exact) of near-lock angles
+        ql = kreisel.from_euler(seq, lock_angles)
+        ekl = max(exact_error(q, seq, a) for q, a in zip(ql, kreisel.as_euler(seq, ql)))
+        esl = max(exact_error(q, seq, a) for q, a in zip(ql, Rotation.from_quat(ql, scalar_first=True).as_euler(seq)))
+        print(f"{seq:4} {'as_euler':10} {tk * 1e3:10.1f} {ts * 1e3:9.1f} {ts / tk:6.2f}   "
+              f"{ek:18.1e} {es:16.1e} {ekl:16.1e} {esl:14.1e}")
+        worst["ratio_as"] = min(worst["ratio_as"], ts / tk)
+        worst["k_err"] = max(worst["k_err"], ek, ekl)
+        worst["s_err"] = max(worst["s_err"], es, esl)
+    print(f"\nslowest ratio: from_euler {worst['ratio_from']:.2f}x, as_euler {worst['ratio_as']:.2f}x (goal >= 3x); "
+          f"worst error: kreisel {worst['k_err']:.1e} rad (goal <= 1e-14), scipy as_euler {worst['s_err']:.1e} rad")
+
+
+if __name__ == "__main__":
+    main()
