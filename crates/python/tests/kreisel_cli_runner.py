@@ -1,9 +1,11 @@
 """The `kreisel` binary of this checkout, for tests that compare the Python
 package with the CLI bit for bit.
 
-The binary is `$KREISEL_CLI` if set, else it is built (`cargo build -p
+The binary is `$KREISEL_BIN` if set (as in conftest.py; CI sets it to the
+release build of this checkout), else it is built now (`cargo build -p
 kreisel-cli`, honouring CARGO_TARGET_DIR) from the same workspace the
-package was built from, so both hold the same code.
+package was built from, so both hold the same code (an existing binary
+could be older than the source).
 """
 
 import functools
@@ -18,7 +20,7 @@ REPO = pathlib.Path(__file__).resolve().parents[3]
 @functools.lru_cache(maxsize=None)
 def binary() -> str:
     """Path of the `kreisel` executable."""
-    given = os.environ.get("KREISEL_CLI")
+    given = os.environ.get("KREISEL_BIN")
     if given:
         return given
     subprocess.run(

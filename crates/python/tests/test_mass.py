@@ -110,7 +110,7 @@ def test_keys_are_those_of_the_json():
 
 
 def trimesh_properties(path, density):
-    trimesh = pytest.importorskip("trimesh")
+    import trimesh
     mesh = trimesh.load(str(path), force="mesh")
     mesh.density = density
     return mesh, mesh.mass_properties
@@ -144,7 +144,7 @@ def test_box_closed_form():
 
 
 def test_arrays_agree_with_trimesh_and_the_file():
-    trimesh = pytest.importorskip("trimesh")
+    import trimesh
     mesh = trimesh.load(str(T_HANDLE), force="mesh")
     mesh.density = 2700.0
     ref = mesh.mass_properties
