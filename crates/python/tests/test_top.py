@@ -235,14 +235,14 @@ def test_extreme_parameters_never_panic():
             assert "internal error" not in str(e) and "\n" not in str(e), (params, str(e))
 
 
-def test_stubs_fragment_matches_the_module():
-    # Every function and method in _stubs_mass.pyi has the runtime's
+def test_stubs_match_the_module():
+    # Every function and method in __init__.pyi has the runtime's
     # parameter names, in order (pyo3's text signatures).
     import ast
     import inspect
     import pathlib
 
-    stubs = pathlib.Path(kreisel.__file__).with_name("_stubs_mass.pyi")
+    stubs = pathlib.Path(kreisel.__file__).with_name("__init__.pyi")
     tree = ast.parse(stubs.read_text())
     checked = 0
 

@@ -1,6 +1,7 @@
 """Type stubs of kreisel (the native module kreisel._native, re-exported)."""
 
-from typing import Literal, Union
+import os
+from typing import Any, Literal, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -76,4 +77,135 @@ def omega_from_attitudes(quats: _Floats, t: Union[_Floats, float], frame: _Frame
     """
 
 # --- mass properties, simulation, heavy top ---------------------------------
-# (written by the helper who owns mass.rs, simulation.rs and top.rs)
+
+_Vec3 = Union[Sequence[float], npt.NDArray[np.floating]]
+_Quat = Union[Sequence[float], npt.NDArray[np.floating]]
+_Times = Union[float, Sequence[float], npt.NDArray[np.floating]]
+_Units = Literal["mm", "cm", "m", "in"]
+_Model = Literal["solid", "shell", "hull"]
+
+# --- mass properties: the dict of `kreisel inertia --format json`
+# Keys (assembly): file, units, scale, model, thickness (shell only), density,
+# density_source, frame, mass, volume, area, triangles (int), center_of_mass
+# (3,), inertia (3, 3), principal_moments (3,), principal_axes (3, 3, one axis
+# per row), principal_orientation (4,) w x y z, warnings (list[str]), bodies
+# (list of dicts: name and the same keys but bodies).
+
+def mass_properties(
+    path: Union[str, os.PathLike[str]],
+    density: Optional[float] = None,
+    mass: Optional[float] = None,
+    units: _Units = "m",
+    model: _Model = "solid",
+    thickness: Optional[float] = None,
+    *,
+    weld: Union[None, float, Literal["off"]] = None,
+    merge: bool = False,
+    scale: Optional[float] = None,
+) -> dict[str, Any]: ...
+def mass_properties_from_arrays(
+    vertices: npt.ArrayLike,
+    faces: npt.ArrayLike,
+    density: Optional[float] = None,
+    mass: Optional[float] = None,
+    units: _Units = "m",
+    model: _Model = "solid",
+    thickness: Optional[float] = None,
+    *,
+    weld: Union[None, float, Literal["off"]] = None,
+    name: str = "mesh",
+    scale: Optional[float] = None,
+) -> dict[str, Any]: ...
+
+# --- simulation: the rows of `kreisel simulate` by CSV column name
+# t, body (str array), qw, qx, qy, qz, wx, wy, wz, energy, lx, ly, lz, x, y, z,
+# vx, vy, vz: one entry per body and output time.
+
+def simulate(
+    scene: Union[str, os.PathLike[str]],
+    method: Optional[str] = None,
+    threads: Optional[int] = None,
+) -> dict[str, npt.NDArray[Any]]: ...
+
+class World:
+    """Rigid bodies (free or on a pivot) moved by the engine; SI units, radians."""
+
+    def __init__(self, dt: float, gravity: _Vec3 = ..., method: str = "auto") -> None: ...
+    def add_body(
+        self,
+        mass: float,
+        moments: Optional[_Vec3] = None,
+        inertia: Optional[Union[Sequence[Sequence[float]], npt.NDArray[np.floating]]] = None,
+        *,
+        attitude: Optional[_Quat] = None,
+        omega_body: _Vec3 = ...,
+        position: _Vec3 = ...,
+        velocity: Optional[_Vec3] = None,
+        pivot: Optional[_Vec3] = None,
+        torque: Optional[_Vec3] = None,
+        torque_body: Optional[_Vec3] = None,
+        force: Optional[_Vec3] = None,
+        angular_damping: float = 0.0,
+    ) -> int: ...
+    def set_inputs(
+        self,
+        body: int,
+        *,
+        torque: Optional[_Vec3] = None,
+        torque_body: Optional[_Vec3] = None,
+        force: Optional[_Vec3] = None,
+        angular_damping: float = 0.0,
+    ) -> None: ...
+    def set_rotation(self, body: int, attitude: _Quat, omega_body: _Vec3) -> None: ...
+    def step(self, h: float) -> None: ...
+    def advance_steps(self, n: int) -> None: ...
+    def advance_to(self, t: float) -> None: ...
+    @property
+    def time(self) -> float: ...
+    @property
+    def dt(self) -> float: ...
+    @property
+    def gravity(self) -> npt.NDArray[np.float64]: ...
+    def __len__(self) -> int: ...
+    def plan(self, body: int) -> str: ...
+    def state(self, body: int) -> dict[str, Any]:
+        """time, attitude (4,), omega_body (3,), l_world (3,), energy, position (3,), velocity (3,)."""
+    def states(self) -> dict[str, Any]:
+        """time, and the states of all n bodies stacked: attitude (n, 4), omega_body, l_world,
+        position, velocity (n, 3), energy (n,)."""
+
+# --- the heavy symmetric top: the dict of `kreisel top --format json`
+# i1, i3, mgl, theta0, theta_dot0, phi_dot0, psi_dot0, a, b, alpha, beta,
+# omega3, roots (array), theta_min, theta_max, nutation_period (None when
+# sleeping), mean_precession_rate (None when sleeping), motion ("no_loops",
+# "loops", "cusps" or None), sleeping, sleeping_stable.
+
+def top(
+    i1: float,
+    i3: float,
+    mgl: float,
+    theta0: float,
+    theta_dot0: float = 0.0,
+    phi_dot0: float = 0.0,
+    psi_dot0: float = 0.0,
+) -> dict[str, Any]: ...
+
+class LagrangeTop:
+    def __init__(
+        self,
+        i1: float,
+        i3: float,
+        mgl: float,
+        theta0: float,
+        theta_dot0: float = 0.0,
+        phi_dot0: float = 0.0,
+        psi_dot0: float = 0.0,
+    ) -> None: ...
+    @property
+    def summary(self) -> dict[str, Any]: ...
+    def euler_at(self, t: _Times) -> dict[str, npt.NDArray[np.float64]]:
+        """phi, theta, psi, phi_dot, theta_dot, psi_dot, each of t's shape."""
+    def world_from_body_at(self, t: _Times) -> npt.NDArray[np.float64]:
+        """Shape t.shape + (4,), w x y z."""
+    def omega_body_at(self, t: _Times) -> npt.NDArray[np.float64]:
+        """Shape t.shape + (3,), body axes."""
