@@ -448,3 +448,17 @@ def test_large_arrays_and_other_threads():
     assert np.array_equal(results["other"], q[:1000])
     ref = Rotation.from_euler("zyx", angles[::1000]).as_quat(scalar_first=True)
     assert np.max(np.abs(q[::1000] - np.where(ref[:, :1] < 0, -ref, ref))) < 1e-15
+
+
+def test_large_arrays_split_over_threads_report_the_first_bad_row():
+    # 2**17 rows are converted on up to two threads (blocks of rows): the
+    # numbers are those of one thread, and the error names the first bad row.
+    rng = np.random.default_rng(7)
+    q = rng.normal(size=(1 << 17, 4))
+    whole = kreisel.as_euler("ZYX", q)
+    parts = np.concatenate([kreisel.as_euler("ZYX", q[:1000]), kreisel.as_euler("ZYX", q[1000:])])
+    assert np.array_equal(whole, parts)
+    q[100_000] = 0.0
+    q[40_000] = np.nan
+    with pytest.raises(kreisel.KreiselError, match=r"^quats\[40000\]: "):
+        kreisel.as_euler("ZYX", q)
