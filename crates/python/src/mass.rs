@@ -247,6 +247,27 @@ fn mass_properties<'py>(
     })
 }
 
+/// `array` (already of element type `T`) as an (N, 3) array's rows, or
+/// `bad` naming what is wrong.
+fn rows_of_three<T: numpy::Element + Copy>(
+    array: &Bound<'_, PyAny>,
+    bad: impl Fn(String) -> PyErr,
+) -> PyResult<Vec<[T; 3]>> {
+    let array = array
+        .cast::<PyArray2<T>>()
+        .map_err(|_| bad(format!("got {} dimensions", ndim(array))))?;
+    let view = array.readonly();
+    let rows = view.as_array();
+    if rows.ncols() != 3 {
+        return Err(bad(format!("got shape {:?}", rows.shape())));
+    }
+    Ok(rows
+        .rows()
+        .into_iter()
+        .map(|r| [r[0], r[1], r[2]])
+        .collect())
+}
+
 /// The vertices as an (N, 3) float64 array's rows.
 fn vertices_of(vertices: &Bound<'_, PyAny>) -> PyResult<Vec<DVec3>> {
     let np = vertices.py().import("numpy")?;
@@ -258,17 +279,9 @@ fn vertices_of(vertices: &Bound<'_, PyAny>) -> PyResult<Vec<DVec3>> {
     let array = np
         .call_method1("asarray", (vertices, "float64"))
         .map_err(|e| bad(e.to_string()))?;
-    let array = array
-        .cast::<PyArray2<f64>>()
-        .map_err(|_| bad(format!("got {} dimensions", ndim(&array))))?;
-    let view = array.readonly();
-    let v = view.as_array();
-    if v.ncols() != 3 {
-        return Err(bad(format!("got shape {:?}", v.shape())));
-    }
-    Ok(v.rows()
+    Ok(rows_of_three::<f64>(&array, bad)?
         .into_iter()
-        .map(|r| DVec3::new(r[0], r[1], r[2]))
+        .map(DVec3::from_array)
         .collect())
 }
 
@@ -294,16 +307,9 @@ fn faces_of(faces: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<Vec<[u32;
         return Err(bad(format!("got dtype {dtype}")));
     }
     let array = array.call_method1("astype", ("int64",))?;
-    let array = array
-        .cast::<PyArray2<i64>>()
-        .map_err(|_| bad(format!("got {} dimensions", ndim(&array))))?;
-    let view = array.readonly();
-    let f = view.as_array();
-    if f.ncols() != 3 {
-        return Err(bad(format!("got shape {:?}", f.shape())));
-    }
-    let mut out = Vec::with_capacity(f.nrows());
-    for (i, row) in f.rows().into_iter().enumerate() {
+    let rows = rows_of_three::<i64>(&array, &bad)?;
+    let mut out = Vec::with_capacity(rows.len());
+    for (i, row) in rows.iter().enumerate() {
         let mut tri = [0u32; 3];
         for (j, (&k, slot)) in row.iter().zip(&mut tri).enumerate() {
             *slot = u32::try_from(k)
