@@ -8,9 +8,10 @@
 //! where the CLI names a line. The GIL is released while the rows are
 //! converted. Euler rates and angular velocity live in `rotations_rates.rs`.
 
+use glam::DQuat;
 use kreisel_cli::error::LineProblem;
 use kreisel_cli::representation::Representation;
-use kreisel_kinematics::EulerSequence;
+use kreisel_kinematics::{EulerSequence, try_normalize_quat};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
@@ -61,6 +62,9 @@ fn convert_rows(
     to: Representation,
     degrees: bool,
 ) -> Result<(), (usize, LineProblem)> {
+    if let (Representation::Quat, Representation::Euler(sequence)) = (from, to) {
+        return quat_rows_to_euler(input, output, sequence, degrees);
+    }
     let rows = input.chunks_exact(from.count());
     for (i, (row, slot)) in rows.zip(output.chunks_exact_mut(to.count())).enumerate() {
         if let Some(problem) = non_finite(row) {
@@ -70,6 +74,33 @@ fn convert_rows(
             .quat_from_numbers(&numbers(row), degrees)
             .map_err(|problem| (i, problem))?;
         slot.copy_from_slice(to.numbers_from_quat(q, degrees).as_slice());
+    }
+    Ok(())
+}
+
+/// Quaternion rows `(w, x, y, z)` → Euler angles: the calls of
+/// `Representation::Quat.quat_from_numbers` and
+/// `Representation::Euler(..).numbers_from_quat` in the same order (so the
+/// same bits), without their generic row of numbers — a fifth of the time
+/// of `as_euler` (`perf`).
+fn quat_rows_to_euler(
+    input: &[f64],
+    output: &mut [f64],
+    sequence: EulerSequence,
+    degrees: bool,
+) -> Result<(), (usize, LineProblem)> {
+    for (i, (r, slot)) in (input.chunks_exact(4))
+        .zip(output.chunks_exact_mut(3))
+        .enumerate()
+    {
+        if let Some(problem) = non_finite(r) {
+            return Err((i, problem));
+        }
+        let q = try_normalize_quat(DQuat::from_xyzw(r[1], r[2], r[3], r[0]))
+            .map_err(|e| (i, LineProblem::from(e)))?;
+        let a = sequence.from_quat(q).angles;
+        let angle = |a: f64| if degrees { a.to_degrees() } else { a };
+        slot.copy_from_slice(&[angle(a.x), angle(a.y), angle(a.z)]);
     }
     Ok(())
 }
