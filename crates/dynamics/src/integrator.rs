@@ -6,8 +6,10 @@ use glam::DVec3;
 
 use crate::{DivergenceCheck, DynamicsError, FreeBodyMethod, PrincipalState, RigidBody};
 
-/// A one-step method for the torque-free rigid body in its principal frame.
-pub trait FreeBodyIntegrator {
+/// A one-step method for the torque-free rigid body in its principal frame
+/// (`Sync`: a [`crate::World`] steps its bodies on threads and may be sent
+/// between threads, e.g. by the Python package, which releases the GIL).
+pub trait FreeBodyIntegrator: Sync {
     /// The method's registry name (e.g. `"rk4"`).
     fn name(&self) -> &'static str;
     /// The order of the method (global error `O(hᵖ)`); `u32::MAX` for the
@@ -35,7 +37,8 @@ pub trait FreeBodyIntegrator {
     }
 }
 
-/// One body advanced by an integrator, step after step.
+/// One body advanced by an integrator, step after step (`Send + Sync`, so
+/// that a [`crate::World`] holding it can move between threads).
 ///
 /// ```text
 /// xₙ₊₁ = Φₕ(xₙ)
@@ -52,7 +55,7 @@ pub trait FreeBodyIntegrator {
 /// assert!(kreisel_kinematics::rotation_angle_between(body.state().world_from_principal, DQuat::from_rotation_z(1.0)) < 1e-15);
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
-pub trait Propagator {
+pub trait Propagator: Send + Sync {
     /// Advances the body by `h` seconds (a step the method cannot take
     /// leaves a non-finite state: see [`DivergenceCheck`]).
     fn advance(&mut self, h: f64);

@@ -32,10 +32,8 @@ use crate::errors::{error, guard};
 /// >>> s = w.state(b)
 /// >>> float(s["energy"]), s["attitude"].shape   # 3 * 2^2 / 2
 /// (6.0, (4,))
-// The engine's World is not `Send` (its exact solutions are boxed
-// `dyn Propagator`s): the object stays on the thread that made it (pyo3
-// raises RuntimeError on another), and its methods keep the GIL.
-#[pyclass(module = "kreisel", name = "World", unsendable)]
+// The engine's World is `Send`: its moves release the GIL.
+#[pyclass(module = "kreisel", name = "World")]
 pub struct PyWorld {
     world: World,
     ids: Vec<BodyId>,
@@ -206,20 +204,20 @@ impl PyWorld {
     }
 
     /// One step of ``h`` seconds (exact solutions are evaluated at its end).
-    fn step(&mut self, h: f64) -> PyResult<()> {
-        guard(|| self.world.step(h).map_err(error))
+    fn step(&mut self, py: Python<'_>, h: f64) -> PyResult<()> {
+        guard(|| py.detach(|| self.world.step(h)).map_err(error))
     }
 
     /// ``n`` whole steps of ``dt`` (the grid of ``kreisel simulate``).
-    fn advance_steps(&mut self, n: u64) -> PyResult<()> {
-        guard(|| self.world.advance_steps(n).map_err(error))
+    fn advance_steps(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
+        guard(|| py.detach(|| self.world.advance_steps(n)).map_err(error))
     }
 
     /// Advances to time ``t`` (s): stepping methods take steps of ``dt``,
     /// the last shortened to land on ``t``; exact solutions are evaluated
     /// at ``t`` once.
-    fn advance_to(&mut self, t: f64) -> PyResult<()> {
-        guard(|| self.world.advance_to(t).map_err(error))
+    fn advance_to(&mut self, py: Python<'_>, t: f64) -> PyResult<()> {
+        guard(|| py.detach(|| self.world.advance_to(t)).map_err(error))
     }
 
     /// The world's time, s.

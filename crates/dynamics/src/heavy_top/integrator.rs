@@ -5,7 +5,7 @@ use super::HeavyTop;
 use crate::{DivergenceCheck, DynamicsError, HeavyTopMethod, PrincipalState, Propagator};
 
 /// A one-step method for the heavy top.
-pub trait HeavyTopIntegrator {
+pub trait HeavyTopIntegrator: Sync {
     /// The method's registry name (e.g. `"strang"`).
     fn name(&self) -> &'static str;
     /// The order of the method (global error `O(hᵖ)`).
