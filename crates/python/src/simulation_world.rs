@@ -21,9 +21,9 @@ use crate::errors::{error, guard};
 ///
 /// ``World(dt, gravity=(0, 0, 0), method="auto")``: ``dt`` is the step of
 /// the stepping methods (s), ``gravity`` in world axes (m/s^2), ``method``
-/// a name of ``kreisel simulate --list-methods``. A World is used from the
-/// thread that made it (another thread gets a RuntimeError), and its
-/// methods hold the GIL (the engine's World cannot be sent between threads).
+/// a name of ``kreisel simulate --list-methods``. ``step``,
+/// ``advance_steps`` and ``advance_to`` release the GIL while the bodies
+/// move; a World may be used from any thread.
 ///
 /// >>> import kreisel
 /// >>> w = kreisel.World(dt=0.01)
