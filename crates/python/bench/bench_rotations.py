@@ -21,46 +21,23 @@ import math
 import statistics
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
-from mpmath import mp, mpf
-import mpmath
 from scipy.spatial.transform import Rotation
 
 import kreisel
 
-mp.dps = 50
+# The tests' exact (mpmath) rotations.
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from mp_reference import exact_angle_between, exact_quat_of_euler  # noqa: E402
 SEQS = ["ZYX", "xyz", "ZXZ", "yxy"]
 PROPER = {"XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ"}
 
 
-def qmul(p, q):
-    pw, px, py, pz = p
-    qw, qx, qy, qz = q
-    return (
-        pw * qw - px * qx - py * qy - pz * qz,
-        pw * qx + px * qw + py * qz - pz * qy,
-        pw * qy - px * qz + py * qw + pz * qx,
-        pw * qz + px * qy - py * qx + pz * qw,
-    )
-
-
-def exact_quat(seq, angles):
-    f = []
-    for letter, t in zip(seq, angles):
-        half = mpf(float(t)) / 2
-        v = [mpf(0)] * 3
-        v["xyz".index(letter.lower())] = mpmath.sin(half)
-        f.append((mpmath.cos(half), *v))
-    return qmul(qmul(f[0], f[1]), f[2]) if seq.isupper() else qmul(qmul(f[2], f[1]), f[0])
-
-
 def exact_error(q, seq, angles):
     """Rotation angle between the f64 quaternion q and the exact rotation of angles."""
-    p = exact_quat(seq, angles)
-    q = [mpf(float(x)) for x in q]
-    d = qmul((p[0], -p[1], -p[2], -p[3]), q)
-    return float(2 * mpmath.atan2(mpmath.sqrt(d[1] ** 2 + d[2] ** 2 + d[3] ** 2), abs(d[0])))
+    return exact_angle_between(q, exact_quat_of_euler(seq, angles))
 
 
 def median_time(f, repeat):

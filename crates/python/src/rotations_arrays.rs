@@ -134,6 +134,8 @@ pub fn numbers(row: &[f64]) -> Numbers {
         [a, b, c] => Numbers::from_array([a, b, c]),
         [a, b, c, d] => Numbers::from_array([a, b, c, d]),
         [a, b, c, d, e, f, g, h, i] => Numbers::from_array([a, b, c, d, e, f, g, h, i]),
+        // Every caller cuts rows with `chunks_exact(Representation::count())`,
+        // which is 3, 4 or 9.
         _ => unreachable!("rows have 3, 4 or 9 numbers, not {}", row.len()),
     }
 }

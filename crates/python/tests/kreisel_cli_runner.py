@@ -1,7 +1,7 @@
 """The `kreisel` binary of this checkout, for tests that compare the Python
 package with the CLI bit for bit.
 
-The binary is `$KREISEL_BIN` if set (as in conftest.py; CI sets it to the
+The binary is `$KREISEL_BIN` if set (CI sets it to the
 release build of this checkout), else it is built now (`cargo build -p
 kreisel-cli`, honouring CARGO_TARGET_DIR) from the same workspace the
 package was built from, so both hold the same code (an existing binary

@@ -2,7 +2,6 @@
 block of README.md, each in a fresh namespace, from the repository root
 (so that relative paths such as assets/t_handle.obj resolve)."""
 
-import os
 import re
 from pathlib import Path
 

@@ -3,7 +3,7 @@ scipy's Rotation, the CLI bit for bit, and every error path.
 
 Run: pytest crates/python/tests/test_rotations.py  (after `maturin develop`
 or `pip install ./crates/python`; the CLI comparisons need the `kreisel`
-binary, see conftest.kreisel_binary). Needs: pip install -r
+binary, see kreisel_cli_runner.binary). Needs: pip install -r
 crates/python/tests/requirements.txt.
 """
 
@@ -16,14 +16,8 @@ import numpy as np
 import pytest
 
 import kreisel
-from conftest import (
-    DATA,
-    PROPER,
-    SEQUENCES,
-    exact_angle_between,
-    exact_quat_of_euler,
-    f64_quat,
-)
+from conftest import DATA, PROPER, SEQUENCES
+from mp_reference import exact_angle_between, exact_quat_of_euler, f64_quat
 
 from scipy.spatial.transform import Rotation
 

@@ -5,7 +5,6 @@ the CLI's pipeline; every error path."""
 import csv
 import io
 import math
-import pathlib
 
 import numpy as np
 import pytest

@@ -27,10 +27,10 @@ pub(crate) struct Managed {
     /// The rapier mass properties the twin was made from (to notice changes).
     pub(crate) signature: [f32; 8],
     /// The rotation and angular velocity the adapter last wrote (or read),
-    /// bit for bit: a different value before a step means someone else set it.
+    /// bit for bit: a different value before a step means someone else set
+    /// it. While kreisel carries the body, `written.1` is the angular
+    /// velocity rapier's step starts from (world axes).
     pub(crate) written: (rapier3d::math::Rotation, rapier3d::math::Vector),
-    /// The angular velocity rapier's step started from (world axes).
-    pub(crate) omega_before: rapier3d::math::Vector,
     /// Who carries the rotation now.
     pub(crate) carrier: Carrier,
     /// The body's own `allow_fast_rotation`, in force while rapier carries
@@ -270,7 +270,6 @@ impl ExactRotation {
             moments,
             signature: signature(rb),
             written,
-            omega_before: written.1,
             carrier: Carrier::Kreisel,
             pending: DVec3::ZERO,
             fast_rotation: slot.map_or(rb.is_fast_rotation_allowed(), |k| {

@@ -95,8 +95,8 @@ impl ExactRotation {
             if m.carrier == Carrier::Kreisel && now != m.written {
                 take_rapiers(&mut self.world, m, rb, true)?;
                 m.pending = DVec3::ZERO;
+                m.written = now;
             }
-            m.omega_before = now.1;
         }
         Ok(())
     }
@@ -158,9 +158,8 @@ impl ExactRotation {
                 // Strang: half of this step's kick before the flow (with the
                 // half left over from the step before), half after it.
                 let mut j_world = m.pending;
-                if rb.angvel() != m.omega_before {
-                    let d_omega_world =
-                        dvec3_from_vec3(rb.angvel()) - dvec3_from_vec3(m.omega_before);
+                if rb.angvel() != m.written.1 {
+                    let d_omega_world = dvec3_from_vec3(rb.angvel()) - dvec3_from_vec3(m.written.1);
                     let Some(s) = self.world.state(m.id) else {
                         continue;
                     };
