@@ -10,7 +10,11 @@
 #![forbid(unsafe_code)]
 
 mod compute;
+mod frame_change;
+mod inertial_form;
 mod json;
+mod rounding;
+mod shown;
 mod text;
 mod xml;
 
@@ -22,7 +26,10 @@ use kreisel_inertia::{MassModel, Weld};
 use crate::error::{CliError, one_line};
 
 pub use compute::{DensityChoice, Report, Setup, Summary, compute, compute_scaled};
+pub use frame_change::{OutputFrame, Transform};
+pub use inertial_form::{Inertial, InertialForm, MARGIN_ULPS, is_loadable, rpy_sequence};
 pub use json::FRAME;
+pub use rounding::DIGITS;
 
 /// What `--weld` chooses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -88,7 +95,25 @@ Meshes:
 Examples:
   kreisel inertia part.stl --units mm --density 2700
   kreisel inertia assets/t_handle.obj --format urdf
-  kreisel inertia scan.ply --hull --mass 0.35 --format json";
+  kreisel inertia scan.ply --hull --mass 0.35 --format json
+
+Frames and rounding:
+  --transform \"xyz=X Y Z rpy=R P Y\" gives everything in the frame of a link in
+  which the mesh is placed as by a URDF <origin>: p_link = R p_mesh + xyz,
+  R = Rz(yaw) Ry(pitch) Rx(roll), xyz in metres (after --scale/--units),
+  angles in radians. --about X,Y,Z adds the tensor about that point (text and
+  JSON); the point is in the mesh file's own coordinates and units (the
+  numbers of its vertices, before --scale/--units), shown in metres in the
+  output frame. --principal writes the URDF/SDFormat/MJCF inertial in its
+  principal axes: the origin's rpy (pose, quat) is the principal frame and
+  the tensor is diagonal. --digits N rounds every computed number to N
+  significant digits; products of inertia below the last digit of the
+  largest moment become 0, and the smallest moment is raised where rounding
+  would break A + B >= C, so the rounded tensor still loads.
+
+  kreisel inertia wheel.stl --units mm --transform \"xyz=0 0.1 0 rpy=1.5708 0 0\" --format urdf
+  kreisel inertia part.obj --about 0,0,0 --digits 6
+  kreisel inertia part.obj --principal --digits 8 --format sdf";
 
 /// Arguments of `kreisel inertia`.
 #[derive(Debug, Clone, clap::Args)]
@@ -149,6 +174,60 @@ pub struct InertiaArgs {
     /// Output format
     #[arg(long, value_name = "FORMAT", value_enum, default_value_t = Format::Text)]
     pub format: Format,
+
+    // ---- Frames and rounding (issue 16: single meshes in any frame) ----
+    /// Also give the tensor about the point X,Y,Z, in the mesh file's coordinates and units (text and json)
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_point, allow_hyphen_values = true)]
+    pub about: Option<glam::DVec3>,
+
+    /// Give everything in a link frame the mesh is placed in: p_link = R p_mesh + xyz, R = Rz(yaw) Ry(pitch) Rx(roll); metres, radians
+    #[arg(
+        long,
+        value_name = "xyz=X Y Z rpy=R P Y",
+        value_parser = parse_transform,
+        allow_hyphen_values = true
+    )]
+    pub transform: Option<Transform>,
+
+    /// Write the URDF/SDFormat/MJCF inertial in principal form: origin rotated onto the principal axes, diagonal tensor
+    #[arg(long)]
+    pub principal: bool,
+
+    /// Round every computed number to N significant digits (1-17); tiny products of inertia become 0
+    #[arg(long, value_name = "N", value_parser = parse_digits)]
+    pub digits: Option<u32>,
+}
+
+/// How the results are presented: their frame, the `--about` point, and
+/// the form and rounding of the numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct View {
+    /// `--transform` and `--about`.
+    pub frame: OutputFrame,
+    /// `--principal` and `--digits`.
+    pub form: InertialForm,
+}
+
+/// `--about`: three finite numbers.
+fn parse_point(text: &str) -> Result<glam::DVec3, String> {
+    frame_change::three(text).map_err(|e| format!("point X,Y,Z: {e}"))
+}
+
+/// `--transform`: `xyz=X Y Z rpy=R P Y`.
+fn parse_transform(text: &str) -> Result<Transform, String> {
+    text.parse()
+}
+
+/// `--digits`: an integer from 1 to 17.
+fn parse_digits(text: &str) -> Result<u32, String> {
+    match text.trim().parse::<u32>() {
+        Ok(n) if DIGITS.contains(&n) => Ok(n),
+        _ => Err(format!(
+            "digits must be an integer from {} to {} (17 keep every f64)",
+            DIGITS.start(),
+            DIGITS.end()
+        )),
+    }
 }
 
 /// The length unit of the mesh coordinates (`--units`).
@@ -243,6 +322,38 @@ fn parse_weld(text: &str) -> Result<WeldChoice, String> {
 }
 
 impl InertiaArgs {
+    /// The frame and form these options choose.
+    ///
+    /// # Errors
+    /// [`CliError::Argument`] for `--about` with an `<inertial>` format
+    /// (always about the centre of mass) and `--principal` with text or JSON
+    /// (which always give the principal axes).
+    pub fn view(&self) -> Result<View, CliError> {
+        let xml = matches!(self.format, Format::Urdf | Format::Sdf | Format::Mjcf);
+        if self.about.is_some() && xml {
+            return Err(CliError::Argument {
+                argument: "--about".into(),
+                message: "applies to --format text and json; a URDF, SDFormat or MJCF inertial is always about the centre of mass".into(),
+            });
+        }
+        if self.principal && !xml {
+            return Err(CliError::Argument {
+                argument: "--principal".into(),
+                message: "applies to --format urdf, sdf and mjcf; text and json always give the principal moments and axes".into(),
+            });
+        }
+        Ok(View {
+            frame: OutputFrame {
+                transform: self.transform,
+                about: self.about,
+            },
+            form: InertialForm {
+                principal: self.principal,
+                digits: self.digits,
+            },
+        })
+    }
+
     /// The units, model and material these options choose.
     pub fn setup(&self) -> Setup {
         let (units, scale) = match (self.units, self.scale) {
@@ -282,9 +393,11 @@ impl InertiaArgs {
 /// [`CliError::LoadMesh`] for a file that cannot be read or parsed,
 /// [`CliError::Body`] for a body without mass properties (an open mesh
 /// without `--shell` or `--hull`, …), [`CliError::DerivedDensity`],
+/// [`CliError::Argument`] for options that do not go together,
 /// [`CliError::Write`] when standard output fails.
 pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
-    let report = compute(args.setup())?;
+    let view = args.view()?;
+    let report = view.frame.place(compute(args.setup())?);
     let mut stderr = std::io::stderr();
     for warning in &report.file_warnings {
         let _ = writeln!(
@@ -307,11 +420,11 @@ pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
         }
     }
     let output = match args.format {
-        Format::Text => text::render(&report),
-        Format::Json => json::render(&report),
-        Format::Urdf => xml::urdf(&report),
-        Format::Sdf => xml::sdf(&report),
-        Format::Mjcf => xml::mjcf(&report),
+        Format::Text => text::render(&report, &view),
+        Format::Json => json::render(&report, &view),
+        Format::Urdf => xml::urdf(&report, &view),
+        Format::Sdf => xml::sdf(&report, &view),
+        Format::Mjcf => xml::mjcf(&report, &view),
     };
     crate::convert::print_stdout(&output)
 }

@@ -8,17 +8,21 @@ use core::fmt::Write;
 
 use glam::{DMat3, DVec3};
 
-use super::{Report, Setup, Summary};
+use super::shown::Shown;
+use super::{Report, Setup, Summary, View};
 use crate::numbers::Shortest;
 
 /// The frame every tensor and axis is given in.
 pub const FRAME: &str = "center of mass, mesh axes";
 
+/// The frame with `--transform`.
+pub const LINK_FRAME: &str = "center of mass, link axes";
+
 /// The JSON report, ending with a newline.
-pub fn render(report: &Report) -> String {
+pub fn render(report: &Report, view: &View) -> String {
     let mut out = String::from("{\n");
     let mut top = Object::new(&mut out, 1);
-    fields(&mut top, &report.setup, &report.assembly);
+    fields(&mut top, &report.setup, &report.assembly, view);
     top.key("bodies");
     top.out.push('[');
     for (i, body) in report.bodies.iter().enumerate() {
@@ -28,7 +32,7 @@ pub fn render(report: &Report) -> String {
         let mut obj = Object::new(top.out, 3);
         obj.key("name");
         string(obj.out, &body.name);
-        fields(&mut obj, &report.setup, body);
+        fields(&mut obj, &report.setup, body, view);
         top.out.push('\n');
         top.out.push_str(&"  ".repeat(2));
         top.out.push('}');
@@ -37,8 +41,10 @@ pub fn render(report: &Report) -> String {
     out
 }
 
-/// The fields of one body or of the assembly.
-fn fields(obj: &mut Object<'_>, setup: &Setup, s: &Summary) {
+/// The fields of one body or of the assembly; those of `--transform`,
+/// `--about` and `--digits` only when given.
+fn fields(obj: &mut Object<'_>, setup: &Setup, s: &Summary, view: &View) {
+    let shown = Shown::new(s, &view.frame, setup.scale, view.form.digits);
     obj.key("file");
     string(obj.out, &setup.file.display().to_string());
     obj.key("units");
@@ -49,26 +55,33 @@ fn fields(obj: &mut Object<'_>, setup: &Setup, s: &Summary) {
     if let Some(t) = setup.thickness() {
         obj.number("thickness", t);
     }
-    obj.number("density", s.density);
+    obj.number("density", shown.density);
     obj.key("density_source");
     string(obj.out, setup.density_source());
     obj.key("frame");
-    string(obj.out, FRAME);
-    obj.number("mass", s.properties.mass);
-    obj.number("volume", s.volume);
-    obj.number("area", s.area);
+    string(
+        obj.out,
+        if view.frame.transform.is_some() {
+            LINK_FRAME
+        } else {
+            FRAME
+        },
+    );
+    obj.number("mass", shown.mass);
+    obj.number("volume", shown.volume);
+    obj.number("area", shown.area);
     obj.key("triangles");
     let _ = write!(obj.out, "{}", s.triangles);
     obj.key("center_of_mass");
-    vector(obj.out, s.properties.center_of_mass);
+    vector(obj.out, shown.center_of_mass);
     obj.key("inertia");
-    matrix_rows(obj.out, s.properties.inertia);
+    matrix_rows(obj.out, shown.inertia);
     obj.key("principal_moments");
-    vector(obj.out, s.principal.moments);
+    vector(obj.out, shown.principal.moments);
     obj.key("principal_axes");
     // Rows of the output = columns of the rotation matrix = the axes.
-    matrix_rows(obj.out, s.principal.axes.transpose());
-    let q = s.principal.orientation;
+    matrix_rows(obj.out, shown.principal.axes.transpose());
+    let q = shown.principal.orientation;
     obj.key("principal_orientation");
     list(obj.out, &[q.w, q.x, q.y, q.z]);
     obj.key("warnings");
@@ -80,6 +93,24 @@ fn fields(obj: &mut Object<'_>, setup: &Setup, s: &Summary) {
         string(obj.out, w);
     }
     obj.out.push(']');
+    if let Some(t) = view.frame.transform {
+        obj.key("transform_xyz");
+        vector(obj.out, t.xyz);
+        obj.key("transform_rpy");
+        vector(obj.out, t.rpy);
+    }
+    if let Some((point, tensor)) = shown.about {
+        obj.key("about_point_mesh");
+        vector(obj.out, view.frame.about.unwrap_or(point));
+        obj.key("about_point");
+        vector(obj.out, point);
+        obj.key("inertia_about_point");
+        matrix_rows(obj.out, tensor);
+    }
+    if let Some(n) = view.form.digits {
+        obj.key("digits");
+        let _ = write!(obj.out, "{n}");
+    }
 }
 
 /// Writes the members of an object, one per line, with commas between.

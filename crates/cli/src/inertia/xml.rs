@@ -14,17 +14,11 @@
 //!   principal form `quat` (w x y z) rotates the inertial frame into the body
 //!   frame, which is what the principal orientation does.
 //!
-//! Loadable by construction: MuJoCo (and Gazebo) refuse a tensor whose
-//! principal moments break `A + B ≥ C`, and MuJoCo computes them itself from
-//! `fullinertia`. A flat body (a sheet, a shell of a plane polygon) has
-//! `A + B = C` exactly, so rounding alone puts it on either side: measured
-//! on 40 tilted sheets, 10 were refused with `A + B − C ≈ −3e-16`. Before
-//! printing, [`loadable`] raises the smallest principal moment until
-//! `A + B − C` is at least [`MARGIN_ULPS`] ulps of `C` (never more than that
-//! beyond the rounding it undoes: a relative change of ~1e-14), so that any
-//! eigen-solver's own rounding keeps the inequality; other tensors are
-//! printed unchanged. The numbers are printed in shortest round-trip form,
-//! so the file holds exactly these values.
+//! The numbers come from [`InertialForm`](super::InertialForm): loadable by construction (the
+//! smallest moment of a flat body raised by a few ulps), in full or
+//! principal form (`--principal`), rounded by `--digits`; they are printed
+//! in shortest round-trip form, so the file holds exactly these values.
+//! With `--transform` everything is in the link frame.
 //!
 //! Names from the mesh file (object names, the path) appear only inside
 //! comments, with every character XML 1.0 forbids (control characters) and
@@ -32,54 +26,36 @@
 
 use core::fmt::Write;
 
-use glam::{DMat3, DVec3};
-use kreisel_inertia::PrincipalAxes;
+use glam::DMat3;
 
-use super::{Report, Summary};
+use super::inertial_form::Inertial;
+use super::{Report, View};
 use crate::numbers::Shortest;
 
-/// How far (in ulps of the largest moment) `A + B` must exceed `C` in the
-/// printed tensor: covers the rounding of rebuilding the tensor and of the
-/// reader's eigen-decomposition (a few ulps each).
-const MARGIN_ULPS: f64 = 64.0;
+/// The assembly's inertial as written.
+fn written(report: &Report, view: &View) -> Inertial {
+    let p = &report.assembly.properties;
+    view.form.inertial(p.mass, p.center_of_mass, p.inertia)
+}
 
-/// The tensor and its principal moments as they are printed: unchanged, or
-/// with the smallest moment raised so that `A + B − C ≥ MARGIN_ULPS` ulps of C.
-fn loadable(s: &Summary) -> (DMat3, PrincipalAxes) {
-    let p = s.principal;
-    let m = p.moments;
-    let margin = MARGIN_ULPS * f64::EPSILON * m.z;
-    let lift = (m.z - m.x - m.y + margin).max(-m.x + margin);
-    if lift <= 0.0 {
-        return (s.properties.inertia, p);
-    }
-    let moments = DVec3::new(m.x + lift, m.y, m.z);
-    let r = p.axes;
-    let t = r * DMat3::from_diagonal(moments) * r.transpose();
-    let tensor = (t + t.transpose()) * 0.5;
-    let principal = PrincipalAxes {
-        moments,
-        axes: r,
-        orientation: p.orientation,
-    };
-    (tensor, principal)
+/// Three numbers separated by spaces.
+fn three(v: glam::DVec3) -> String {
+    format!("{} {} {}", Shortest(v.x), Shortest(v.y), Shortest(v.z))
 }
 
 /// The URDF `<inertial>` element.
-pub fn urdf(report: &Report) -> String {
-    let s = &report.assembly;
-    let c = s.properties.center_of_mass;
-    let mut out = comment(report, "urdf");
+pub fn urdf(report: &Report, view: &View) -> String {
+    let w = written(report, view);
+    let mut out = comment(report, view, "urdf");
     let _ = writeln!(out, "<inertial>");
     let _ = writeln!(
         out,
-        "  <origin xyz=\"{} {} {}\" rpy=\"0 0 0\"/>",
-        Shortest(c.x),
-        Shortest(c.y),
-        Shortest(c.z)
+        "  <origin xyz=\"{}\" rpy=\"{}\"/>",
+        three(w.xyz),
+        three(w.rpy)
     );
-    let _ = writeln!(out, "  <mass value=\"{}\"/>", Shortest(s.properties.mass));
-    let [ixx, ixy, ixz, iyy, iyz, izz] = six(loadable(s).0);
+    let _ = writeln!(out, "  <mass value=\"{}\"/>", Shortest(w.mass));
+    let [ixx, ixy, ixz, iyy, iyz, izz] = six(w.inertia);
     let _ = writeln!(
         out,
         "  <inertia ixx=\"{ixx}\" ixy=\"{ixy}\" ixz=\"{ixz}\" iyy=\"{iyy}\" iyz=\"{iyz}\" izz=\"{izz}\"/>"
@@ -89,23 +65,16 @@ pub fn urdf(report: &Report) -> String {
 }
 
 /// The SDFormat `<inertial>` element.
-pub fn sdf(report: &Report) -> String {
-    let s = &report.assembly;
-    let c = s.properties.center_of_mass;
-    let mut out = comment(report, "sdf");
+pub fn sdf(report: &Report, view: &View) -> String {
+    let w = written(report, view);
+    let mut out = comment(report, view, "sdf");
     let _ = writeln!(out, "<inertial>");
-    let _ = writeln!(
-        out,
-        "  <pose>{} {} {} 0 0 0</pose>",
-        Shortest(c.x),
-        Shortest(c.y),
-        Shortest(c.z)
-    );
-    let _ = writeln!(out, "  <mass>{}</mass>", Shortest(s.properties.mass));
+    let _ = writeln!(out, "  <pose>{} {}</pose>", three(w.xyz), three(w.rpy));
+    let _ = writeln!(out, "  <mass>{}</mass>", Shortest(w.mass));
     let _ = writeln!(out, "  <inertia>");
     for (name, value) in ["ixx", "ixy", "ixz", "iyy", "iyz", "izz"]
         .iter()
-        .zip(six(loadable(s).0))
+        .zip(six(w.inertia))
     {
         let _ = writeln!(out, "    <{name}>{value}</{name}>");
     }
@@ -114,31 +83,42 @@ pub fn sdf(report: &Report) -> String {
     out
 }
 
-/// The MJCF `<inertial>` element, with the principal form in a comment.
-pub fn mjcf(report: &Report) -> String {
-    let s = &report.assembly;
-    let c = s.properties.center_of_mass;
-    let pos = format!("{} {} {}", Shortest(c.x), Shortest(c.y), Shortest(c.z));
-    let mass = Shortest(s.properties.mass);
-    let (tensor, principal) = loadable(s);
-    let [ixx, ixy, ixz, iyy, iyz, izz] = six(tensor);
-    let mut out = comment(report, "mjcf");
-    let _ = writeln!(
-        out,
-        "<inertial pos=\"{pos}\" mass=\"{mass}\" fullinertia=\"{ixx} {iyy} {izz} {ixy} {ixz} {iyz}\"/>"
-    );
-    let (q, m) = (principal.orientation, principal.moments);
-    let _ = writeln!(
-        out,
-        "<!-- principal form: <inertial pos=\"{pos}\" quat=\"{} {} {} {}\" mass=\"{mass}\" diaginertia=\"{} {} {}\"/> -->",
+/// The MJCF `<inertial>` element: `fullinertia` with the principal form in
+/// a comment, or with `--principal` the principal form (`quat`, `diaginertia`).
+pub fn mjcf(report: &Report, view: &View) -> String {
+    let principal_form = super::InertialForm {
+        principal: true,
+        ..view.form
+    };
+    let p = &report.assembly.properties;
+    let d = principal_form.inertial(p.mass, p.center_of_mass, p.inertia);
+    let (q, m) = (d.quat, d.inertia);
+    let principal = format!(
+        "<inertial pos=\"{}\" quat=\"{} {} {} {}\" mass=\"{}\" diaginertia=\"{} {} {}\"/>",
+        three(d.xyz),
         Shortest(q.w),
         Shortest(q.x),
         Shortest(q.y),
         Shortest(q.z),
-        Shortest(m.x),
-        Shortest(m.y),
-        Shortest(m.z)
+        Shortest(d.mass),
+        Shortest(m.x_axis.x),
+        Shortest(m.y_axis.y),
+        Shortest(m.z_axis.z)
     );
+    let mut out = comment(report, view, "mjcf");
+    if view.form.principal {
+        let _ = writeln!(out, "{principal}");
+        return out;
+    }
+    let w = written(report, view);
+    let [ixx, ixy, ixz, iyy, iyz, izz] = six(w.inertia);
+    let _ = writeln!(
+        out,
+        "<inertial pos=\"{}\" mass=\"{}\" fullinertia=\"{ixx} {iyy} {izz} {ixy} {ixz} {iyz}\"/>",
+        three(w.xyz),
+        Shortest(w.mass)
+    );
+    let _ = writeln!(out, "<!-- principal form: {principal} -->");
     out
 }
 
@@ -151,16 +131,29 @@ fn six(i: DMat3) -> [Shortest; 6] {
 
 /// The comment lines before the element: what was assumed, and which bodies
 /// the assembly sums.
-fn comment(report: &Report, format: &str) -> String {
+fn comment(report: &Report, view: &View, format: &str) -> String {
     let setup = &report.setup;
+    let axes = match (view.form.principal, view.frame.transform) {
+        (true, None) => "principal axes (the origin's orientation, in mesh axes)".to_owned(),
+        (true, Some(t)) => {
+            format!("principal axes (the origin's orientation, in link axes; mesh placed at {t})")
+        }
+        (false, None) => "mesh axes".to_owned(),
+        (false, Some(t)) => format!("link axes (mesh placed at {t})"),
+    };
     let mut text = format!(
-        "kreisel inertia {}: mesh units {}, density {}, {}; inertia about the centre of mass in mesh axes",
+        "kreisel inertia {}: mesh units {}, density {}, {}; inertia about the centre of mass in {axes}",
         setup.file.display(),
         setup.units_text(),
         setup.density_text(report.assembly.density),
         setup.model_text(),
     );
-    if format == "mjcf" {
+    if let Some(n) = view.form.digits {
+        text.push_str(&format!(
+            "; {n} significant digits, products of inertia below the last digit set to 0"
+        ));
+    }
+    if format == "mjcf" && !view.form.principal {
         text.push_str(" (fullinertia order: ixx iyy izz ixy ixz iyz)");
     }
     let mut out = format!("<!-- {} -->\n", comment_text(&text));
