@@ -194,7 +194,7 @@ pub struct InertiaArgs {
     pub principal: bool,
 
     /// Round every computed number to N significant digits (1-17); tiny products of inertia become 0
-    #[arg(long, value_name = "N", value_parser = parse_digits)]
+    #[arg(long, value_name = "N", value_parser = parse_digits, allow_hyphen_values = true)]
     pub digits: Option<u32>,
 }
 

@@ -6,6 +6,7 @@
 mod assets;
 mod closed_in_practice;
 mod errors;
+mod frames;
 mod meshes;
 mod options;
 mod reference;
