@@ -101,7 +101,8 @@ Frames and rounding:
   --transform \"xyz=X Y Z rpy=R P Y\" gives everything in the frame of a link in
   which the mesh is placed as by a URDF <origin>: p_link = R p_mesh + xyz,
   R = Rz(yaw) Ry(pitch) Rx(roll), xyz in metres (after --scale/--units),
-  angles in radians. --about X,Y,Z adds the tensor about that point (text and
+  angles in radians (a URDF origin's quoted xyz=\"...\" rpy=\"...\" is accepted
+  as pasted). --about X,Y,Z adds the tensor about that point (text and
   JSON); the point is in the mesh file's own coordinates and units (the
   numbers of its vertices, before --scale/--units), shown in metres in the
   output frame. --principal writes the URDF/SDFormat/MJCF inertial in its

@@ -60,13 +60,16 @@ impl FromStr for Transform {
     type Err = String;
 
     /// `xyz=X Y Z rpy=R P Y`: either part may be left out (zero), in any
-    /// order; the numbers are separated by spaces or commas.
+    /// order; the numbers are separated by spaces or commas, and may be
+    /// quoted as in a URDF `<origin xyz="…" rpy="…"/>` pasted as it is.
     fn from_str(text: &str) -> Result<Self, Self::Err> {
+        let text = text.replace(['"', '\''], " ");
         const FORM: &str = "expected \"xyz=X Y Z rpy=ROLL PITCH YAW\" (metres, radians)";
         let (mut xyz, mut rpy) = (None, None);
         // Split before each `key=`: "xyz=1 2 3 rpy=0 0 1" → ["xyz=1 2 3", "rpy=0 0 1"].
         let mut parts = Vec::new();
         for token in text.split_whitespace() {
+            // `xyz= 1 2 3` (a space after `=`, e.g. from a quote) is `xyz=1 2 3`.
             match token.split_once('=') {
                 Some(_) => parts.push(token.to_owned()),
                 None => match parts.last_mut() {
@@ -176,6 +179,8 @@ mod tests {
         assert_eq!(t.rpy, DVec3::new(0.1, 0.2, 0.3));
         let t: Transform = " rpy=0 0 1.5  xyz=-1e-3,0,0 ".parse().unwrap();
         assert_eq!((t.xyz.x, t.rpy.z), (-1e-3, 1.5));
+        let t: Transform = r#"xyz="0 0 0.1" rpy='0 0 1'"#.parse().unwrap();
+        assert_eq!((t.xyz.z, t.rpy.z), (0.1, 1.0));
         let t: Transform = "rpy=0 0 1".parse().unwrap();
         assert_eq!(t.xyz, DVec3::ZERO);
         assert_eq!(t.to_string(), "xyz=0 0 0 rpy=0 0 1");
