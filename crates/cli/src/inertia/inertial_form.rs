@@ -67,7 +67,9 @@ pub struct Inertial {
     /// The same orientation as MJCF's `quat` (w, x, y, z; `output_from_inertial`).
     pub quat: DQuat,
     /// The tensor about the centre of mass in the inertial frame's axes,
-    /// kg m² (diagonal, ascending, in principal form).
+    /// kg m² (diagonal in principal form: the principal moments ascending,
+    /// except where the smallest was raised past the middle one to keep
+    /// `A + B ≥ C`, which needs the two smallest equal to the precision written).
     pub inertia: DMat3,
 }
 

@@ -29,6 +29,7 @@ use core::fmt::Write;
 use glam::DMat3;
 
 use super::inertial_form::Inertial;
+use super::rounding::significant;
 use super::{Report, View};
 use crate::numbers::Shortest;
 
@@ -36,6 +37,11 @@ use crate::numbers::Shortest;
 fn written(report: &Report, view: &View) -> Inertial {
     let p = &report.assembly.properties;
     view.form.inertial(p.mass, p.center_of_mass, p.inertia)
+}
+
+/// `x` rounded as `--digits` asks (unchanged without it).
+fn rounded(x: f64, view: &View) -> f64 {
+    view.form.digits.map_or(x, |n| significant(x, n))
 }
 
 /// Three numbers separated by spaces.
@@ -145,7 +151,7 @@ fn comment(report: &Report, view: &View, format: &str) -> String {
         "kreisel inertia {}: mesh units {}, density {}, {}; inertia about the centre of mass in {axes}",
         setup.file.display(),
         setup.units_text(),
-        setup.density_text(report.assembly.density),
+        setup.density_text(rounded(report.assembly.density, view)),
         setup.model_text(),
     );
     if let Some(n) = view.form.digits {
@@ -161,7 +167,10 @@ fn comment(report: &Report, view: &View, format: &str) -> String {
         let parts: Vec<String> = report
             .bodies
             .iter()
-            .map(|b| format!("'{}' (mass {} kg)", b.name, Shortest(b.properties.mass)))
+            .map(|b| {
+                let mass = Shortest(rounded(b.properties.mass, view));
+                format!("'{}' (mass {mass} kg)", b.name)
+            })
             .collect();
         let text = format!(
             "assembly of {} bodies, one rigid inertial: {}",

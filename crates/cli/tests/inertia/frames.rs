@@ -501,3 +501,57 @@ fn options_for_other_formats_are_errors() {
         );
     }
 }
+
+#[test]
+fn transform_places_every_body_and_the_assembly() {
+    // Two unit cubes, at x ∈ [0, 1] and [2, 3].
+    let text = cube_obj("left", 0.0, 1, false, false) + &cube_obj("right", 2.0, 9, false, false);
+    let path = scratch("two_cubes_placed.obj", text);
+    let rpy = DVec3::new(-0.6, 0.25, 2.0);
+    let xyz = DVec3::new(1.0, -2.0, 0.5);
+    let spec = format!("xyz=1 -2 0.5 rpy={} {} {}", rpy.x, rpy.y, rpy.z);
+    let run = inertia(&path, &["--transform", &spec, "--format", "json"]);
+    let json = run.json();
+    let r = rpy_matrix(rpy);
+    let (m, ic) = box_closed_form(1000.0, DVec3::ONE);
+    let centres = [DVec3::new(0.5, 0.5, 0.5), DVec3::new(2.5, 0.5, 0.5)].map(|c| r * c + xyz);
+    let mut worst: f64 = 0.0;
+    for (k, c) in centres.iter().enumerate() {
+        let body = &json["bodies"][k];
+        assert_eq!(body["frame"], "center of mass, link axes");
+        let found = crate::support::vec3(&body["center_of_mass"]);
+        worst = worst.max((found - *c).abs().max_element() / c.abs().max_element());
+        let i = crate::support::rows(&body["inertia"]);
+        worst = worst.max(rel_matrix(i, r * ic * r.transpose()));
+    }
+    // The assembly: both cubes about their common centre.
+    let c = (centres[0] + centres[1]) / 2.0;
+    let expect = (r * ic * r.transpose()) * 2.0
+        + parallel_axis(m, centres[0] - c)
+        + parallel_axis(m, centres[1] - c);
+    worst = worst.max(rel_matrix(raw_rows(&run.stdout, "inertia"), expect));
+    println!("--transform: two bodies and their assembly, max rel. error {worst:.1e}");
+    assert!(worst <= 1e-13, "{worst:e}");
+    // The comment's body masses are rounded with the rest.
+    let urdf = inertia(
+        &path,
+        &[
+            "--transform",
+            &spec,
+            "--format",
+            "urdf",
+            "--digits",
+            "2",
+            "--density",
+            "1234.5",
+        ],
+    )
+    .stdout;
+    for words in [
+        "density 1200 kg/m^3",
+        "'left' (mass 1200 kg), 'right' (mass 1200 kg)",
+        "<mass value=\"2500\"/>",
+    ] {
+        assert!(urdf.contains(words), "{words} in {urdf}");
+    }
+}
