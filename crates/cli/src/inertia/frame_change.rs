@@ -19,6 +19,15 @@ use crate::numbers::{Shortest, parse_numbers};
 /// ```text
 /// p_link = R · p_mesh + xyz,   R = Rz(yaw) · Ry(pitch) · Rx(roll)
 /// ```
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_cli::inertia::Transform;
+/// let t: Transform = "xyz=0 0 1 rpy=0 0 1.5707963267948966".parse()?;
+/// // Yaw by 90°: the mesh's x axis is the link's y axis.
+/// assert!((t.apply(DVec3::X) - DVec3::new(0.0, 1.0, 1.0)).length() < 1e-15);
+/// # Ok::<(), String>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Transform {
     /// Translation, m (after the mesh is scaled to metres).

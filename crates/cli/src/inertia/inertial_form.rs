@@ -159,6 +159,18 @@ pub fn shortfall(moments: DVec3) -> f64 {
 }
 
 /// Whether a tensor's principal moments pass [`shortfall`].
+///
+/// ```text
+/// A ≥ 64 ulp(C),   A + B − C ≥ 64 ulp(C)
+/// ```
+///
+/// ```
+/// use glam::{DMat3, DVec3};
+/// use kreisel_cli::inertia::is_loadable;
+/// assert!(is_loadable(DMat3::from_diagonal(DVec3::new(1.0, 1.0, 1.9))));
+/// // A flat body exactly at A + B = C is too close to call for a reader.
+/// assert!(!is_loadable(DMat3::from_diagonal(DVec3::new(1.0, 1.0, 2.0))));
+/// ```
 pub fn is_loadable(tensor: DMat3) -> bool {
     shortfall(PrincipalAxes::from_tensor(tensor).moments) <= 0.0
 }
