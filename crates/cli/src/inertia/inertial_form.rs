@@ -133,10 +133,11 @@ impl InertialForm {
         let (rpy, quat) = match digits {
             None => (rpy, exact),
             Some(n) => {
-                // The quaternion of the rounded angles, so both say the same.
+                // Each rounded from the exact orientation: the closest
+                // N-digit angles, and the closest N-digit quaternion (which
+                // readers normalise).
                 let rpy = rpy.map(|a| snapped(a, core::f64::consts::PI, n));
-                let q = rpy_sequence().to_quat(rpy);
-                let q = if q.w < 0.0 { -q } else { q };
+                let q = exact;
                 let [w, x, y, z] = snapped_all([q.w, q.x, q.y, q.z], 1.0, n);
                 (rpy, DQuat::from_xyzw(x, y, z, w))
             }

@@ -555,3 +555,44 @@ fn transform_places_every_body_and_the_assembly() {
         assert!(urdf.contains(words), "{words} in {urdf}");
     }
 }
+
+#[test]
+fn rounded_principal_form_is_the_tensor_to_its_digits() {
+    let path = box_obj(
+        "principal_digits_box.obj",
+        DVec3::ZERO,
+        DVec3::new(2.0, 1.0, 3.0),
+    );
+    let mut worst = [0.0_f64; 2];
+    for spec in [
+        "rpy=0.3 -0.4 1.1",
+        "rpy=2.5 1.5707963267948966 -0.7",
+        "rpy=1e-9 0 0",
+    ] {
+        let exact = urdf_tensor(&inertia(&path, &["--transform", spec, "--format", "urdf"]).stdout);
+        for (k, digits) in ["4", "8"].into_iter().enumerate() {
+            let args = ["--transform", spec, "--principal", "--digits", digits];
+            let urdf = inertia(&path, &[&args[..], &["--format", "urdf"]].concat()).stdout;
+            let r = rpy_matrix(DVec3::from_slice(&numbers(attribute(&urdf, "rpy"))));
+            let diag = urdf_tensor(&urdf);
+            worst[k] = worst[k].max(rel_matrix(r * diag * r.transpose(), exact));
+            let mjcf = inertia(&path, &[&args[..], &["--format", "mjcf"]].concat()).stdout;
+            let q = numbers(attribute(&mjcf, "quat"));
+            let r = DMat3::from_quat(DQuat::from_xyzw(q[1], q[2], q[3], q[0]).normalize());
+            let d =
+                DMat3::from_diagonal(DVec3::from_slice(&numbers(attribute(&mjcf, "diaginertia"))));
+            worst[k] = worst[k].max(rel_matrix(r * d * r.transpose(), exact));
+        }
+    }
+    println!(
+        "--principal --digits 4 and 8: rebuilt vs exact tensor, max rel. error {:.1e} and {:.1e}",
+        worst[0], worst[1]
+    );
+    // Each angle (|a| < 10) is within half a unit of its last digit, so the
+    // rotation within δ ≤ 3 · 0.5 · 10^(1−N) rad, which moves the tensor by
+    // ≤ 2δ of its largest element; the moments add half a unit.
+    for (k, n) in [4, 8].into_iter().enumerate() {
+        let bound = 3.5 * 10f64.powi(1 - n);
+        assert!(worst[k] <= bound, "{n} digits: {:e} > {bound:e}", worst[k]);
+    }
+}
