@@ -14,6 +14,16 @@ mod json;
 mod text;
 mod xml;
 
+// Whole robots: `--urdf` (issue 16).
+mod urdf_args;
+mod urdf_check;
+mod urdf_document;
+mod urdf_fill;
+mod urdf_inertial;
+mod urdf_links;
+mod urdf_paths;
+mod urdf_table;
+
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -23,6 +33,7 @@ use crate::error::{CliError, one_line};
 
 pub use compute::{DensityChoice, Report, Setup, Summary, compute, compute_scaled};
 pub use json::FRAME;
+pub use urdf_args::{GeometrySource, PackageDir, UrdfArgs};
 
 /// What `--weld` chooses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -92,11 +103,11 @@ Examples:
 
 /// Arguments of `kreisel inertia`.
 #[derive(Debug, Clone, clap::Args)]
-#[command(after_long_help = AFTER_LONG_HELP)]
+#[command(after_long_help = format!("{AFTER_LONG_HELP}\n\n{}", urdf_args::URDF_HELP))]
 pub struct InertiaArgs {
     /// Mesh file: .stl (binary or ASCII), .obj, .ply, .gltf or .glb
-    #[arg(value_name = "MESH")]
-    pub mesh: PathBuf,
+    #[arg(value_name = "MESH", required_unless_present = "urdf")]
+    pub mesh: Option<PathBuf>,
 
     /// Uniform density in kg/m^3 [default: 1000, water]
     #[arg(long, value_name = "RHO", value_parser = parse_density, allow_hyphen_values = true)]
@@ -149,6 +160,11 @@ pub struct InertiaArgs {
     /// Output format
     #[arg(long, value_name = "FORMAT", value_enum, default_value_t = Format::Text)]
     pub format: Format,
+
+    // Whole robots: --urdf, --output, --from, --package, --check (urdf_args.rs).
+    #[command(flatten)]
+    #[allow(missing_docs)]
+    pub robot: UrdfArgs,
 }
 
 /// The length unit of the mesh coordinates (`--units`).
@@ -265,7 +281,7 @@ impl InertiaArgs {
             (None, None) => DensityChoice::Default,
         };
         Setup {
-            file: self.mesh.clone(),
+            file: self.mesh.clone().unwrap_or_default(),
             units,
             scale,
             model,
@@ -284,6 +300,9 @@ impl InertiaArgs {
 /// without `--shell` or `--hull`, …), [`CliError::DerivedDensity`],
 /// [`CliError::Write`] when standard output fails.
 pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
+    if let Some(urdf) = &args.robot.urdf {
+        return urdf_fill::run(urdf, args);
+    }
     let report = compute(args.setup())?;
     let mut stderr = std::io::stderr();
     for warning in &report.file_warnings {

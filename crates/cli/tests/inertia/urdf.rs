@@ -1,0 +1,283 @@
+//! `kreisel inertia --urdf` on the committed toy robot
+//! (tests/data/robot/, from tests/data/gen/urdf_robot.py): every filled
+//! inertial against the exact reference, the rest of the file byte for
+//! byte, and `--check` on the filled file and on one with a wrong inertial.
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+use serde_json::Value;
+
+use super::support::{Run, num, run, workspace};
+
+/// Largest relative error accepted against the exact reference.
+const TOLERANCE: f64 = 1e-12;
+
+/// A fresh copy of the toy robot package in the scratch directory `name`;
+/// returns the copied URDF.
+pub fn robot_copy(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("kreisel-cli-urdf")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    let source = workspace("tests/data/robot/toy_robot");
+    for sub in ["urdf", "meshes"] {
+        let to = dir.join("toy_robot").join(sub);
+        std::fs::create_dir_all(&to).expect("scratch dir");
+        for entry in std::fs::read_dir(source.join(sub)).expect("robot files") {
+            let entry = entry.expect("robot file");
+            std::fs::copy(entry.path(), to.join(entry.file_name())).expect("copy");
+        }
+    }
+    dir.join("toy_robot/urdf/toy.urdf")
+}
+
+/// Runs `kreisel inertia --urdf URDF ARGS...`.
+pub fn urdf(path: &Path, args: &[&str]) -> Run {
+    let path = path.to_str().expect("test paths are UTF-8");
+    let mut all = vec!["inertia", "--urdf", path];
+    all.extend_from_slice(args);
+    run::kreisel(&all, Vec::new())
+}
+
+/// The numbers of an attribute.
+fn numbers(node: roxmltree::Node, name: &str) -> Vec<f64> {
+    node.attribute(name)
+        .unwrap_or_else(|| panic!("no {name}"))
+        .split_whitespace()
+        .map(|w| w.parse().expect("a number"))
+        .collect()
+}
+
+/// The `<inertial>` of link `name`: (mass, com, [ixx ixy ixz iyy iyz izz]).
+fn inertial(doc: &roxmltree::Document, name: &str) -> Option<(f64, DVec3, Vec<f64>)> {
+    let link = doc
+        .descendants()
+        .find(|n| n.has_tag_name("link") && n.attribute("name") == Some(name))
+        .unwrap_or_else(|| panic!("no link {name}"));
+    let inertial = link.children().find(|n| n.has_tag_name("inertial"))?;
+    let child = |tag: &str| {
+        inertial
+            .children()
+            .find(|n| n.has_tag_name(tag))
+            .unwrap_or_else(|| panic!("{name}: no <{tag}>"))
+    };
+    let origin = child("origin");
+    assert_eq!(numbers(origin, "rpy"), [0.0; 3], "{name}");
+    let c = numbers(origin, "xyz");
+    let i = child("inertia");
+    let six = ["ixx", "ixy", "ixz", "iyy", "iyz", "izz"]
+        .iter()
+        .map(|k| numbers(i, k)[0])
+        .collect();
+    Some((
+        numbers(child("mass"), "value")[0],
+        DVec3::new(c[0], c[1], c[2]),
+        six,
+    ))
+}
+
+/// The text without its `<inertial>` elements (and the whitespace before
+/// each, back to the line break).
+fn without_inertials(text: &str) -> String {
+    let doc = roxmltree::Document::parse(text).expect("valid XML");
+    let mut ranges: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("inertial"))
+        .map(|n| n.range())
+        .collect();
+    ranges.sort_by_key(|r| r.start);
+    let mut out = String::new();
+    let mut done = 0;
+    for r in ranges {
+        let before = &text[done..r.start];
+        let trimmed = before.trim_end_matches([' ', '\t']);
+        out.push_str(trimmed.strip_suffix('\n').unwrap_or(trimmed));
+        done = r.end;
+    }
+    out.push_str(&text[done..]);
+    out
+}
+
+fn expected() -> Value {
+    let text = std::fs::read_to_string(workspace("tests/data/robot/expected.json"))
+        .expect("expected.json");
+    serde_json::from_str(&text).expect("valid JSON")
+}
+
+/// Fills the toy robot into `filled.urdf` beside it; returns its path and the run.
+fn fill(name: &str) -> (PathBuf, Run) {
+    let input = robot_copy(name);
+    let output = input.with_file_name("filled.urdf");
+    let run = urdf(&input, &["--output", output.to_str().unwrap()]);
+    (output, run)
+}
+
+#[test]
+fn filled_inertials_equal_the_exact_reference() {
+    let (output, run) = fill("exact");
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    assert!(run.stdout.is_empty());
+    let text = std::fs::read_to_string(&output).expect("output written");
+    let doc = roxmltree::Document::parse(&text).expect("the output is XML");
+    let reference = expected();
+    let links = reference["links"].as_object().expect("links");
+    assert_eq!(links.len(), 4);
+    for (name, want) in links {
+        let (mass, com, six) =
+            inertial(&doc, name).unwrap_or_else(|| panic!("{name}: no inertial"));
+        let want_com = DVec3::from_slice(
+            &want["com"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(num)
+                .collect::<Vec<_>>(),
+        );
+        let want_six: Vec<f64> = want["inertia"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(num)
+            .collect();
+        let scale = want_six.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+        let e_mass = (mass - num(&want["mass"])).abs() / num(&want["mass"]);
+        let e_com = (com - want_com).length() / want_com.length();
+        let e_tensor = six
+            .iter()
+            .zip(&want_six)
+            .fold(0.0_f64, |a, (x, y)| a.max((x - y).abs()))
+            / scale;
+        println!(
+            "{name}: relative errors mass {e_mass:.1e}, com {e_com:.1e}, tensor {e_tensor:.1e}"
+        );
+        assert!(
+            e_mass <= TOLERANCE && e_com <= TOLERANCE && e_tensor <= TOLERANCE,
+            "{name}: mass {e_mass:e}, com {e_com:e}, tensor {e_tensor:e}"
+        );
+        // The table names the link's mass source.
+        let line = run
+            .stderr
+            .lines()
+            .find(|l| l.starts_with(name.as_str()))
+            .expect("a table row");
+        assert_eq!(
+            line.contains("mass kept, density derived"),
+            want["mass_source"] == "kept",
+            "{line}"
+        );
+    }
+}
+
+#[test]
+fn only_the_inertials_change() {
+    let (output, run) = fill("bytes");
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let input = std::fs::read_to_string(output.with_file_name("toy.urdf")).unwrap();
+    let text = std::fs::read_to_string(&output).unwrap();
+    assert_eq!(without_inertials(&text), without_inertials(&input));
+    // The links without collision geometry keep their inertial (or none).
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let before = roxmltree::Document::parse(&input).unwrap();
+    for name in expected()["untouched"].as_array().unwrap() {
+        let name = name.as_str().unwrap();
+        let find = |d: &roxmltree::Document| {
+            d.descendants()
+                .find(|n| n.has_tag_name("link") && n.attribute("name") == Some(name))
+                .map(|n| text_of(d, n))
+        };
+        assert_eq!(find(&doc), find(&before), "{name}");
+    }
+    // Filling the filled file again changes nothing but the last digits of
+    // the kept masses' links (the masses are now all kept).
+    let again = urdf(&output, &[]);
+    assert_eq!(again.code, Some(0), "{}", again.stderr);
+    let doc2 = roxmltree::Document::parse(&again.stdout).unwrap();
+    for name in ["base_link", "arm", "forearm", "hand"] {
+        let (m1, c1, _) = inertial(&doc, name).unwrap();
+        let (m2, c2, _) = inertial(&doc2, name).unwrap();
+        assert!(
+            (m1 - m2).abs() <= 1e-15 * m1 && (c1 - c2).length() <= 1e-15,
+            "{name}"
+        );
+    }
+}
+
+/// The source text of a node.
+fn text_of(doc: &roxmltree::Document, node: roxmltree::Node) -> String {
+    doc.input_text()[node.range()].to_owned()
+}
+
+#[test]
+fn stdout_output_equals_the_file() {
+    let (output, _) = fill("stdout");
+    let run = urdf(&output.with_file_name("toy.urdf"), &["--from", "collision"]);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    assert_eq!(run.stdout, std::fs::read_to_string(&output).unwrap());
+}
+
+#[test]
+fn check_passes_on_the_filled_file_and_names_a_wrong_link() {
+    let (output, run) = fill("check");
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let ok = urdf(&output, &["--check"]);
+    assert_eq!(ok.code, Some(0), "{}", ok.stderr);
+    assert!(ok.stdout.is_empty());
+    for name in ["base_link", "arm", "forearm", "hand"] {
+        let line = ok.stderr.lines().find(|l| l.starts_with(name)).unwrap();
+        assert!(line.split_whitespace().any(|w| w == "ok"), "{line}");
+    }
+    // One wrong tensor element: the arm's ixx doubled.
+    let text = std::fs::read_to_string(&output).unwrap();
+    let doc = roxmltree::Document::parse(&text).unwrap();
+    let (_, _, six) = inertial(&doc, "arm").unwrap();
+    let arm = doc
+        .descendants()
+        .find(|n| n.has_tag_name("link") && n.attribute("name") == Some("arm"))
+        .unwrap();
+    let ixx = arm
+        .descendants()
+        .find(|n| n.has_tag_name("inertia"))
+        .and_then(|n| n.attribute("ixx"))
+        .unwrap();
+    let old = format!("ixx=\"{ixx}\"");
+    assert_eq!(text.matches(&old).count(), 1, "{old}");
+    let wrong = output.with_file_name("wrong.urdf");
+    std::fs::write(
+        &wrong,
+        text.replace(&old, &format!("ixx=\"{}\"", 2.0 * six[0])),
+    )
+    .unwrap();
+    let bad = urdf(&wrong, &["--check"]);
+    assert_eq!(bad.code, Some(1), "{}", bad.stderr);
+    let last = bad.stderr.lines().last().unwrap();
+    assert_eq!(last, "kreisel: error: 1 link(s) fail the check: arm");
+    let row = bad.stderr.lines().find(|l| l.starts_with("arm")).unwrap();
+    assert!(
+        row.contains("FAIL") && row.contains("tensor differs by"),
+        "{row}"
+    );
+    // With an explicit density the kept mass of the forearm (2.5 kg on a few
+    // cm^3) is far from density x volume.
+    let dense = urdf(&output, &["--check", "--density", "1000"]);
+    assert_eq!(
+        dense.stderr.lines().last().unwrap(),
+        "kreisel: error: 1 link(s) fail the check: forearm",
+        "{}",
+        dense.stderr
+    );
+}
+
+#[test]
+fn check_states_its_tolerances_in_the_help() {
+    let help = run::kreisel(&["inertia", "--help"], Vec::new());
+    assert_eq!(help.code, Some(0));
+    for text in [
+        "more than 10%",
+        "5% of the geometry's bounding-box",
+        "> 0.2",
+        "--urdf <ROBOT.urdf>",
+    ] {
+        assert!(help.stdout.contains(text), "{text}: {}", help.stdout);
+    }
+}
