@@ -341,6 +341,13 @@ LINKS = {
 }
 
 
+# The same for --from visual (forearm, hand: no visual geometry).
+LINKS_VISUAL = {
+    "base_link": ([("box", (0.31, 0.2, 0.1), ("0", "0", "0"), ("0", "0", "0"))], None),
+    "arm": ([("mesh", ("octa", MM), ("0", "0", "0"), ("0", "0", "0"))], None),
+}
+
+
 def part(kind, args):
     if kind == "box":
         return box(args)
@@ -373,8 +380,25 @@ def main():
     write_obj(os.path.join(PKG, "meshes", "pyramid.obj"), "pyramid", *MESHES["pyramid"])
     with open(os.path.join(PKG, "urdf", "toy.urdf"), "w", newline="\n") as f:
         f.write(URDF.replace("\\t", "\t"))
+    out = {
+        "about": "Exact inertials of tests/data/robot/toy_robot/urdf/toy.urdf (collision geometry, "
+                 "density 1000 kg/m^3 unless the mass is kept; under 'visual': --from visual); "
+                 "from tests/data/gen/urdf_robot.py. "
+                 "inertia: ixx ixy ixz iyy iyz izz about the centre of mass, link axes.",
+        "mpmath": mpmath.__version__,
+        "untouched": ["tool_tip", "sensor"],
+        "links": filled(LINKS),
+        "visual": filled(LINKS_VISUAL),
+    }
+    with open(os.path.join(ROBOT, "expected.json"), "w", newline="\n") as f:
+        json.dump(out, f, indent=1)
+        f.write("\n")
+
+
+def filled(links):
+    """The reference inertial of every link in `links`."""
     expected = {}
-    for link, (parts, kept) in LINKS.items():
+    for link, (parts, kept) in links.items():
         unit = compound([placed(part(kind, args), xyz, rpy) for kind, args, xyz, rpy in parts])
         volume = unit[0]
         mass = mpf(float(kept)) if kept else DENSITY * volume
@@ -387,17 +411,7 @@ def main():
             "com": [f64(x) for x in c],
             "inertia": [f64(i[0, 0]), f64(i[0, 1]), f64(i[0, 2]), f64(i[1, 1]), f64(i[1, 2]), f64(i[2, 2])],
         }
-    out = {
-        "about": "Exact inertials of tests/data/robot/toy_robot/urdf/toy.urdf (collision geometry, "
-                 "density 1000 kg/m^3 unless the mass is kept); from tests/data/gen/urdf_robot.py. "
-                 "inertia: ixx ixy ixz iyy iyz izz about the centre of mass, link axes.",
-        "mpmath": mpmath.__version__,
-        "untouched": ["tool_tip", "sensor"],
-        "links": expected,
-    }
-    with open(os.path.join(ROBOT, "expected.json"), "w", newline="\n") as f:
-        json.dump(out, f, indent=1)
-        f.write("\n")
+    return expected
 
 
 if __name__ == "__main__":

@@ -22,6 +22,8 @@ Whole robots (--urdf):
   relative paths are relative to the URDF. Only the <inertial> elements
   change: the rest of the file is copied byte for byte, to --output (written
   whole or not at all) or standard output; a table goes to standard error.
+  With --hull every mesh is the solid convex hull of its vertices (for open
+  meshes, common in published robots); --weld applies as for one mesh.
   A link whose meshes cannot be integrated (open, unsupported format) keeps
   its old inertial: the file is still written, and the exit status is 1,
   naming the links. A missing mesh or package, a malformed URDF or an unknown
@@ -94,7 +96,7 @@ pub struct UrdfArgs {
     #[arg(
         long,
         value_name = "ROBOT.urdf",
-        conflicts_with_all = ["mesh", "mass", "scale", "units", "shell", "thickness", "hull", "merge", "format"]
+        conflicts_with_all = ["mesh", "mass", "scale", "units", "shell", "thickness", "merge", "format"]
     )]
     pub urdf: Option<PathBuf>,
 

@@ -15,12 +15,12 @@
 use std::io::Write;
 use std::path::Path;
 
-use kreisel_inertia::MassProperties;
+use kreisel_inertia::{MassModel, MassProperties};
 
 use super::urdf_args::GeometrySource;
 use super::urdf_document::{Link, UrdfDocument};
 use super::urdf_inertial::{Layout, inertial_element};
-use super::urdf_links::{LinkOutcome, LinkSolid, integrate};
+use super::urdf_links::{LinkOutcome, LinkSolid, MeshModel, integrate};
 use super::urdf_paths::MeshPaths;
 use super::urdf_table::{render, sig, sig3};
 use super::{DEFAULT_DENSITY, InertiaArgs, WeldChoice};
@@ -75,11 +75,18 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
     let doc = UrdfDocument::parse(urdf, text)?;
     let paths = MeshPaths::new(urdf, &args.robot.package);
     let source = args.robot.from.unwrap_or(GeometrySource::Collision);
-    let weld = args.weld.unwrap_or(WeldChoice::Default);
+    let how = MeshModel {
+        weld: args.weld.unwrap_or(WeldChoice::Default),
+        model: if args.hull {
+            MassModel::ConvexHull
+        } else {
+            MassModel::Solid
+        },
+    };
     let outcomes = doc
         .links
         .iter()
-        .map(|link| integrate(urdf, link, source, &paths, weld))
+        .map(|link| integrate(urdf, link, source, &paths, how))
         .collect::<Result<Vec<_>, _>>()?;
     if args.robot.check {
         return super::urdf_check::run(urdf, &doc, &outcomes, source, args.density);

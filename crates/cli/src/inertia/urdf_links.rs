@@ -89,8 +89,17 @@ fn primitive(shape: &Shape) -> Part {
     Ok((props, corners(half), name, Vec::new()))
 }
 
+/// How meshes are loaded and modelled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshModel {
+    /// Vertex welding (`--weld`).
+    pub weld: WeldChoice,
+    /// Solid, or the solid convex hull (`--hull`).
+    pub model: MassModel,
+}
+
 /// A mesh file's bodies, scaled per axis, at unit density.
-fn mesh(path: &Path, scale: DVec3, weld: WeldChoice) -> Part {
+fn mesh(path: &Path, scale: DVec3, how: MeshModel) -> Part {
     let name = path.file_name().map_or_else(
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
@@ -103,7 +112,7 @@ fn mesh(path: &Path, scale: DVec3, weld: WeldChoice) -> Part {
         ));
     }
     let load = LoadOptions {
-        weld: weld.weld(scale.abs().max_element()),
+        weld: how.weld.weld(scale.abs().max_element()),
         merge: false,
     };
     let bodies = load.load(path).map_err(|e| fail(&e))?;
@@ -126,10 +135,17 @@ fn mesh(path: &Path, scale: DVec3, weld: WeldChoice) -> Part {
     let options = SolidOptions {
         load,
         scale: 1.0,
-        model: MassModel::Solid,
+        model: how.model,
         material: Material::Density(1.0),
     };
-    let solid = options.solid(path, bodies).map_err(|e| fail(&e))?;
+    let solid = options.solid(path, bodies).map_err(|e| {
+        let hint = if how.model == MassModel::Solid {
+            " (--hull models each mesh as its solid convex hull)"
+        } else {
+            ""
+        };
+        format!("{}{hint}", fail(&e))
+    })?;
     let warnings = solid
         .warnings()
         .map(|(body, w)| {
@@ -148,7 +164,7 @@ fn part(
     urdf: &Path,
     geometry: &Geometry,
     paths: &MeshPaths,
-    weld: WeldChoice,
+    how: MeshModel,
 ) -> Result<Part, CliError> {
     let local = match &geometry.shape {
         Shape::Mesh { filename, scale } => {
@@ -157,7 +173,7 @@ fn part(
                 line: Some(geometry.line),
                 message,
             })?;
-            mesh(&file, *scale, weld)
+            mesh(&file, *scale, how)
         }
         shape => primitive(shape),
     };
@@ -179,7 +195,7 @@ pub fn integrate(
     link: &Link,
     source: GeometrySource,
     paths: &MeshPaths,
-    weld: WeldChoice,
+    how: MeshModel,
 ) -> Result<LinkOutcome, CliError> {
     let geometries = match source {
         GeometrySource::Collision => &link.collision,
@@ -197,7 +213,7 @@ pub fn integrate(
     let mut placed = Vec::with_capacity(geometries.len());
     let mut failures = Vec::new();
     for geometry in geometries {
-        match part(urdf, geometry, paths, weld)? {
+        match part(urdf, geometry, paths, how)? {
             Ok((props, points, name, warnings)) => {
                 placed.push(props);
                 solid.hull_points.extend(points);

@@ -113,36 +113,25 @@ fn fill(name: &str) -> (PathBuf, Run) {
     (output, run)
 }
 
-#[test]
-fn filled_inertials_equal_the_exact_reference() {
-    let (output, run) = fill("exact");
-    assert_eq!(run.code, Some(0), "{}", run.stderr);
-    assert!(run.stdout.is_empty());
-    let text = std::fs::read_to_string(&output).expect("output written");
-    let doc = roxmltree::Document::parse(&text).expect("the output is XML");
-    let reference = expected();
-    let links = reference["links"].as_object().expect("links");
-    assert_eq!(links.len(), 4);
-    for (name, want) in links {
+/// Asserts that the links `names` of the filled `text` hold the reference
+/// inertials `want` (to [`TOLERANCE`]) and that the table on `stderr` names
+/// their mass source.
+fn assert_reference(text: &str, stderr: &str, want: &Value, names: &[&str]) {
+    let doc = roxmltree::Document::parse(text).expect("the output is XML");
+    for &name in names {
+        let want = &want[name];
         let (mass, com, six) =
             inertial(&doc, name).unwrap_or_else(|| panic!("{name}: no inertial"));
-        let want_com = DVec3::from_slice(
-            &want["com"]
-                .as_array()
-                .unwrap()
-                .iter()
-                .map(num)
-                .collect::<Vec<_>>(),
-        );
-        let want_six: Vec<f64> = want["inertia"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(num)
-            .collect();
+        let list =
+            |key: &str| -> Vec<f64> { want[key].as_array().unwrap().iter().map(num).collect() };
+        let want_com = DVec3::from_slice(&list("com"));
+        let want_six = list("inertia");
+        let want_mass = num(&want["mass"]);
+        // Lengths relative to the body's size (its centre of mass may be at 0).
+        let size = (want_mass / num(&want["density"])).cbrt();
         let scale = want_six.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-        let e_mass = (mass - num(&want["mass"])).abs() / num(&want["mass"]);
-        let e_com = (com - want_com).length() / want_com.length();
+        let e_mass = (mass - want_mass).abs() / want_mass;
+        let e_com = (com - want_com).length() / want_com.length().max(size);
         let e_tensor = six
             .iter()
             .zip(&want_six)
@@ -155,11 +144,9 @@ fn filled_inertials_equal_the_exact_reference() {
             e_mass <= TOLERANCE && e_com <= TOLERANCE && e_tensor <= TOLERANCE,
             "{name}: mass {e_mass:e}, com {e_com:e}, tensor {e_tensor:e}"
         );
-        // The table names the link's mass source.
-        let line = run
-            .stderr
+        let line = stderr
             .lines()
-            .find(|l| l.starts_with(name.as_str()))
+            .find(|l| l.starts_with(name))
             .expect("a table row");
         assert_eq!(
             line.contains("mass kept, density derived"),
@@ -167,6 +154,67 @@ fn filled_inertials_equal_the_exact_reference() {
             "{line}"
         );
     }
+}
+
+#[test]
+fn filled_inertials_equal_the_exact_reference() {
+    let (output, run) = fill("exact");
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    assert!(run.stdout.is_empty());
+    let text = std::fs::read_to_string(&output).expect("output written");
+    let reference = expected();
+    let names: Vec<&str> = reference["links"]
+        .as_object()
+        .expect("links")
+        .keys()
+        .map(String::as_str)
+        .collect();
+    assert_eq!(names.len(), 4);
+    assert_reference(&text, &run.stderr, &reference["links"], &names);
+}
+
+#[test]
+fn visual_geometry_on_request() {
+    let input = robot_copy("visual");
+    let run = urdf(&input, &["--from", "visual"]);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let reference = expected();
+    assert_reference(
+        &run.stdout,
+        &run.stderr,
+        &reference["visual"],
+        &["base_link", "arm"],
+    );
+    // The forearm has no visual geometry: its inertial is unchanged.
+    assert!(
+        run.stdout
+            .contains("<inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\"")
+    );
+    let row = run
+        .stderr
+        .lines()
+        .find(|l| l.starts_with("forearm"))
+        .unwrap();
+    assert!(
+        row.ends_with("no <visual> geometry: inertial unchanged"),
+        "{row}"
+    );
+}
+
+#[test]
+fn convex_meshes_are_their_own_hulls() {
+    // The wedge and the pyramid (mirrored, stretched) are convex: --hull
+    // gives their exact values too.
+    let input = robot_copy("hull");
+    let run = urdf(&input, &["--hull"]);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let reference = expected();
+    assert_reference(
+        &run.stdout,
+        &run.stderr,
+        &reference["links"],
+        &["base_link", "arm", "hand"],
+    );
 }
 
 #[test]
