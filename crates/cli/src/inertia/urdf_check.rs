@@ -11,8 +11,8 @@
 //! ```
 //!
 //! Without `--density` the mesh gets the link's own mass, so a mass ratio
-//! would be 1 by construction and is not shown. A link without an inertial
-//! is massless in URDF: listed, not failed. A link whose geometry cannot be
+//! would be 1 by construction and is not shown. A link without an inertial,
+//! or with mass 0, is massless (or static) in URDF: listed, not failed. A link whose geometry cannot be
 //! integrated is listed as not compared (its physics still checked).
 
 use std::io::Write;
@@ -181,6 +181,10 @@ pub fn run(
         let mut row = vec![link.name.clone()];
         let (cells, verdict, notes) = match &link.inertial {
             None => (vec![], "-", vec!["no inertial (massless)".to_owned()]),
+            // URDF's (and pybullet's) convention for a static or massless link.
+            Some(i) if i.mass == Some(0.0) => {
+                (vec![], "-", vec!["mass 0 (massless or static)".to_owned()])
+            }
             Some(inertial) => {
                 let tensor = inertial.tensor_in_link().unwrap_or(DMat3::ZERO);
                 let mut fails = physics(inertial, tensor);
