@@ -92,16 +92,6 @@ fn outside_hull(points: &[DVec3], point: DVec3) -> Option<f64> {
     Some(distance)
 }
 
-/// The diagonal of the bounding box of `points`.
-fn diagonal(points: &[DVec3]) -> f64 {
-    let (lo, hi) = points
-        .iter()
-        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
-            (lo.min(p), hi.max(p))
-        });
-    (hi - lo).length()
-}
-
 /// One link's comparison: the table cells and the reasons it fails.
 fn compare(
     inertial: &Inertial,
@@ -132,7 +122,7 @@ fn compare(
         volume
     };
     let mesh_inertia = solid.unit.inertia * (mesh_mass / volume);
-    let size = diagonal(&solid.hull_points);
+    let size = solid.size();
     let offset = (inertial.origin.xyz - solid.unit.center_of_mass).length();
     if !within(offset, COM_TOLERANCE * size) {
         fails.push(format!(
@@ -224,6 +214,10 @@ pub fn run(
         if verdict == "FAIL" {
             failed.push(link.name.clone());
         }
+        let mut notes = notes;
+        if let LinkOutcome::Solid(solid) = outcome {
+            notes.extend(solid.size_warning());
+        }
         let mut cells = cells;
         cells.resize(3, "-".into());
         row.extend(cells);
@@ -287,6 +281,5 @@ mod tests {
         assert!(outside_hull(&cube, DVec3::splat(0.5)).unwrap() < 0.0);
         let d = outside_hull(&cube, DVec3::new(0.5, 0.5, 1.25)).unwrap();
         assert!((d - 0.25).abs() < 1e-15, "{d}");
-        assert_eq!(diagonal(&cube), 3f64.sqrt());
     }
 }

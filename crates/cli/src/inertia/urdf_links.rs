@@ -21,6 +21,7 @@ use super::WeldChoice;
 use super::urdf_args::GeometrySource;
 use super::urdf_document::{Geometry, Link, Shape};
 use super::urdf_paths::MeshPaths;
+use super::urdf_table::sig;
 use crate::error::{CliError, one_line};
 
 /// A link's geometry integrated at unit density (1 kg/m³).
@@ -35,6 +36,35 @@ pub struct LinkSolid {
     /// Points whose convex hull holds the geometry (mesh vertices, primitive
     /// bounding-box corners), link frame.
     pub hull_points: Vec<DVec3>,
+}
+
+/// Smallest and largest plausible size of a link's geometry, m: outside,
+/// a mesh's scale was likely left out (a mesh in mm read as m) or doubled.
+const PLAUSIBLE_SIZE: (f64, f64) = (1e-3, 10.0);
+
+impl LinkSolid {
+    /// The diagonal of the geometry's bounding box, m.
+    pub fn size(&self) -> f64 {
+        let (lo, hi) = self
+            .hull_points
+            .iter()
+            .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &p| {
+                (lo.min(p), hi.max(p))
+            });
+        (hi - lo).length()
+    }
+
+    /// A warning when the geometry is implausibly large or small for a link.
+    pub fn size_warning(&self) -> Option<String> {
+        let size = self.size();
+        let (small, large) = PLAUSIBLE_SIZE;
+        (!(small..=large).contains(&size)).then(|| {
+            format!(
+                "the geometry is {} m across, implausible for a link: is each mesh's scale right?",
+                sig(size)
+            )
+        })
+    }
 }
 
 /// What became of a link's geometry.
@@ -227,5 +257,27 @@ pub fn integrate(
         return Ok(LinkOutcome::Failed(failures.join("; ")));
     }
     solid.unit = placed.into_iter().sum();
+    solid.warnings.extend(solid.size_warning());
     Ok(LinkOutcome::Solid(solid))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn implausible_sizes_are_named() {
+        let solid = |h: f64| LinkSolid {
+            unit: MassProperties::point(1.0, DVec3::ZERO),
+            parts: Vec::new(),
+            warnings: Vec::new(),
+            hull_points: corners(DVec3::splat(h)),
+        };
+        assert_eq!(solid(0.5).size(), 3f64.sqrt());
+        assert_eq!(solid(0.5).size_warning(), None);
+        // A 100 mm part read as metres.
+        let w = solid(50.0).size_warning().unwrap();
+        assert!(w.starts_with("the geometry is 173.205 m across"), "{w}");
+        assert!(solid(1e-4).size_warning().is_some());
+    }
 }

@@ -329,3 +329,20 @@ fn check_states_its_tolerances_in_the_help() {
         assert!(help.stdout.contains(text), "{text}: {}", help.stdout);
     }
 }
+
+#[test]
+fn a_forgotten_mesh_scale_is_a_warning() {
+    let input = robot_copy("unscaled");
+    let text = std::fs::read_to_string(&input).unwrap();
+    let from = "meshes/wedge.stl\" scale=\"0.001 0.001 0.001\"";
+    assert_eq!(text.matches(from).count(), 1);
+    std::fs::write(&input, text.replace(from, "meshes/wedge.stl\"")).unwrap();
+    for args in [&[][..], &["--check"]] {
+        let run = urdf(&input, args);
+        let row = run.stderr.lines().find(|l| l.starts_with("arm")).unwrap();
+        assert!(
+            row.contains("m across, implausible for a link: is each mesh's scale right?"),
+            "{args:?}: {row}"
+        );
+    }
+}
