@@ -234,8 +234,17 @@ pub fn run(
         "why",
     ];
     let mut out = render(&header, &rows);
+    let uncompared = outcomes
+        .iter()
+        .filter(|o| matches!(o, LinkOutcome::Failed(_)))
+        .count();
+    let uncompared = if uncompared > 0 {
+        format!(", {uncompared} not compared (geometry not integrable)")
+    } else {
+        String::new()
+    };
     out.push_str(&format!(
-        "{}: {} links, {} fail{}\n",
+        "{}: {} links, {} fail{uncompared}{}\n",
         urdf.display(),
         doc.links.len(),
         failed.len(),
