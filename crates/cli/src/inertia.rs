@@ -163,7 +163,6 @@ pub struct InertiaArgs {
 
     // Whole robots: --urdf, --output, --from, --package, --check (urdf_args.rs).
     #[command(flatten)]
-    #[allow(missing_docs)]
     pub robot: UrdfArgs,
 }
 
