@@ -533,3 +533,7 @@ mod tests {
         assert_eq!(e, "r.urdf:1: the root element is <sdf>, not <robot>");
     }
 }
+
+#[cfg(test)]
+#[path = "urdf_document_props.rs"]
+mod props;
