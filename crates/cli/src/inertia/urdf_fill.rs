@@ -117,6 +117,10 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                 if mass_source == MassSource::Kept {
                     notes.insert(0, "mass kept, density derived".into());
                 }
+                if link.inertial.as_ref().and_then(|i| i.mass) == Some(0.0) {
+                    // pybullet (and others) read mass 0 as a static link.
+                    notes.insert(0, "was mass 0 (static in pybullet), now has mass".into());
+                }
                 row.extend([
                     sig(props.mass),
                     sig(rho),

@@ -153,6 +153,11 @@ fn assert_reference(text: &str, stderr: &str, want: &Value, names: &[&str]) {
             want["mass_source"] == "kept",
             "{line}"
         );
+        assert_eq!(
+            line.contains("was mass 0 (static in pybullet), now has mass"),
+            name == "arm",
+            "{line}"
+        );
     }
 }
 
@@ -345,4 +350,19 @@ fn a_forgotten_mesh_scale_is_a_warning() {
             "{args:?}: {row}"
         );
     }
+}
+
+#[test]
+fn filling_in_place_replaces_the_input_whole() {
+    let input = robot_copy("in_place");
+    let path = input.to_str().unwrap();
+    let run = urdf(&input, &["--output", path]);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let check = urdf(&input, &["--check"]);
+    assert_eq!(check.code, Some(0), "{}", check.stderr);
+    let dir: Vec<_> = std::fs::read_dir(input.parent().unwrap())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(dir, ["toy.urdf"], "no temporary file left");
 }
