@@ -41,7 +41,9 @@ Whole robots (--urdf):
       I1 + I2 < I3 (beyond 1e-6 relative), or the centre of mass outside the
       convex hull of the geometry (beyond 1e-6 of its diagonal).
   The exit status is 1 when a link fails, naming it; a link without an
-  inertial or with mass 0 (massless or static) is listed but does not fail.
+  inertial or with mass 0 (massless or static), and one whose geometry
+  cannot be integrated (its physics still checked), is listed but does not
+  fail.
 
 Examples (robots):
   kreisel inertia --urdf robot.urdf --output robot_filled.urdf

@@ -283,6 +283,24 @@ mod tests {
     }
 
     #[test]
+    fn help_states_the_tolerances() {
+        let help = super::super::urdf_args::URDF_HELP.replace("\n", " ");
+        let help = help.split_whitespace().collect::<Vec<_>>().join(" ");
+        for text in [
+            format!("more than {}%", MASS_TOLERANCE * 100.0),
+            format!(
+                "more than {}% of the geometry's bounding-box",
+                COM_TOLERANCE * 100.0
+            ),
+            format!("|I_mesh|_F > {TENSOR_TOLERANCE}"),
+            format!("beyond {TRIANGLE_SLACK:e} relative"),
+            format!("beyond {HULL_SLACK:e} of its diagonal"),
+        ] {
+            assert!(help.contains(&text), "{text}");
+        }
+    }
+
+    #[test]
     fn hull_distance() {
         let cube: Vec<DVec3> = (0..8)
             .map(|i| DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64))
