@@ -237,6 +237,42 @@ pub enum CliError {
         /// What is wrong, listing the known methods.
         message: String,
     },
+    /// The robot description of `inertia --urdf` cannot be read.
+    #[error("cannot read URDF file {}: {source}", path.display())]
+    ReadUrdf {
+        /// The path as given.
+        path: PathBuf,
+        /// The operating system's reason.
+        source: io::Error,
+    },
+    /// A problem in the robot description or a file it names:
+    /// `ROBOT.urdf:LINE: message` (`ROBOT.urdf: message` without a line).
+    #[error("{}{}: {message}", path.display(), line.map(|l| format!(":{l}")).unwrap_or_default())]
+    Urdf {
+        /// The URDF file as given.
+        path: PathBuf,
+        /// The 1-based line of the offending element, when there is one.
+        line: Option<u32>,
+        /// What is wrong, naming the link and the element (one line).
+        message: String,
+    },
+    /// `inertia --urdf`: the output was written, but these links kept their
+    /// old inertial because their geometry could not be integrated.
+    #[error(
+        "{} link(s) kept their old inertial, their geometry could not be integrated: {}",
+        links.len(),
+        links.join(", ")
+    )]
+    LinksKept {
+        /// The links' names.
+        links: Vec<String>,
+    },
+    /// `inertia --urdf --check`: these links' inertials fail the tolerances.
+    #[error("{} link(s) fail the check: {}", links.len(), links.join(", "))]
+    CheckFailed {
+        /// The links' names.
+        links: Vec<String>,
+    },
 }
 
 /// Why the mass properties of one body of a mesh file cannot be computed.

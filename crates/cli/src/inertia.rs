@@ -18,6 +18,16 @@ mod shown;
 mod text;
 mod xml;
 
+// Whole robots: `--urdf` (issue 16).
+mod urdf_args;
+mod urdf_check;
+mod urdf_document;
+mod urdf_fill;
+mod urdf_inertial;
+mod urdf_links;
+mod urdf_paths;
+mod urdf_table;
+
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -30,6 +40,7 @@ pub use frame_change::{OutputFrame, Transform};
 pub use inertial_form::{Inertial, InertialForm, MARGIN_ULPS, is_loadable, rpy_sequence};
 pub use json::FRAME;
 pub use rounding::DIGITS;
+pub use urdf_args::{GeometrySource, PackageDir, UrdfArgs};
 
 /// What `--weld` chooses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -118,11 +129,11 @@ Frames and rounding:
 
 /// Arguments of `kreisel inertia`.
 #[derive(Debug, Clone, clap::Args)]
-#[command(after_long_help = AFTER_LONG_HELP)]
+#[command(after_long_help = format!("{AFTER_LONG_HELP}\n\n{}", urdf_args::URDF_HELP))]
 pub struct InertiaArgs {
     /// Mesh file: .stl (binary or ASCII), .obj, .ply, .gltf or .glb
-    #[arg(value_name = "MESH")]
-    pub mesh: PathBuf,
+    #[arg(value_name = "MESH", required_unless_present = "urdf")]
+    pub mesh: Option<PathBuf>,
 
     /// Uniform density in kg/m^3 [default: 1000, water]
     #[arg(long, value_name = "RHO", value_parser = parse_density, allow_hyphen_values = true)]
@@ -197,6 +208,10 @@ pub struct InertiaArgs {
     /// Round every computed number to N significant digits (1-17); tiny products of inertia become 0
     #[arg(long, value_name = "N", value_parser = parse_digits, allow_hyphen_values = true)]
     pub digits: Option<u32>,
+
+    // Whole robots: --urdf, --output, --from, --package, --check (urdf_args.rs).
+    #[command(flatten)]
+    pub robot: UrdfArgs,
 }
 
 /// How the results are presented: their frame, the `--about` point, and
@@ -377,7 +392,7 @@ impl InertiaArgs {
             (None, None) => DensityChoice::Default,
         };
         Setup {
-            file: self.mesh.clone(),
+            file: self.mesh.clone().unwrap_or_default(),
             units,
             scale,
             model,
@@ -397,6 +412,9 @@ impl InertiaArgs {
 /// [`CliError::Argument`] for options that do not go together,
 /// [`CliError::Write`] when standard output fails.
 pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
+    if let Some(urdf) = &args.robot.urdf {
+        return urdf_fill::run(urdf, args);
+    }
     let view = args.view()?;
     let report = view.frame.place(compute(args.setup())?);
     let mut stderr = std::io::stderr();

@@ -11,3 +11,5 @@ mod meshes;
 mod options;
 mod reference;
 mod support;
+mod urdf;
+mod urdf_errors;

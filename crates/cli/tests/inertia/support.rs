@@ -8,7 +8,7 @@ use glam::{DMat3, DQuat, DVec3};
 use serde_json::Value;
 
 #[path = "../common/run.rs"]
-mod run;
+pub mod run;
 pub use run::Run;
 
 impl Run {
