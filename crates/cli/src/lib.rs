@@ -62,7 +62,7 @@ enum Command {
     Simulate(simulate::SimulateArgs),
     /// The heavy symmetric top: constants of the motion, roots of f(u), nutation
     /// limits and period, precession, type of motion; --plot draws it
-    Top(top::TopArgs),
+    Top(top::TopCommand),
 }
 
 /// Runs the chosen subcommand.

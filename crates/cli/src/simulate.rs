@@ -16,7 +16,7 @@ mod methods;
 mod output;
 mod progress;
 pub mod scene;
-mod schedule;
+pub(crate) mod schedule;
 
 use std::fs;
 use std::io::{self, BufWriter, Write};
