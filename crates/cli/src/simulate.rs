@@ -251,19 +251,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         })?,
         None => std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN),
     };
-    let plot_format =
-        match &args.plot {
-            Some(path) => Some(kreisel_plot::ImageFormat::from_path(path).ok_or_else(|| {
-                CliError::Argument {
-                    argument: "--plot".to_owned(),
-                    message: format!(
-                        "{}: unknown image format (use a .svg or .png file name)",
-                        path.display()
-                    ),
-                }
-            })?),
-            None => None,
-        };
+    let plot_format = match &args.plot {
+        Some(plot) => Some(check_plot(plot, scene_path, args.output.as_deref())?),
+        None => None,
+    };
     let text = fs::read_to_string(scene_path).map_err(|source| CliError::ReadScene {
         path: scene_path.clone(),
         source,
@@ -533,6 +524,45 @@ fn list_methods() -> Result<(), CliError> {
     methods::write_list(&mut out)
         .and_then(|()| out.flush())
         .map_err(|source| write_error(&Stream::Standard, source))
+}
+
+/// The image format of `--plot PLOT`, a path that is neither the scene nor
+/// the `--output` file.
+///
+/// # Errors
+/// [`CliError::Argument`] for an unknown extension or a file that must
+/// not be overwritten.
+fn check_plot(
+    plot: &std::path::Path,
+    scene: &std::path::Path,
+    output: Option<&std::path::Path>,
+) -> Result<kreisel_plot::ImageFormat, CliError> {
+    let fail = |message: &str| CliError::Argument {
+        argument: "--plot".to_owned(),
+        message: format!("{}: {message}", plot.display()),
+    };
+    let format = kreisel_plot::ImageFormat::from_path(plot)
+        .ok_or_else(|| fail("unknown image format (use a .svg or .png file name)"))?;
+    if [Some(scene), output]
+        .into_iter()
+        .flatten()
+        .any(|other| same_file(plot, other))
+    {
+        return Err(fail(
+            "is the scene or the --output file; refusing to overwrite it",
+        ));
+    }
+    Ok(format)
+}
+
+/// Whether `a` and `b` name the same file (the same path as written, or
+/// the same existing file).
+fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+    a == b
+        || matches!(
+            (fs::canonicalize(a), fs::canonicalize(b)),
+            (Ok(x), Ok(y)) if x == y
+        )
 }
 
 /// The error of writing to `output`.

@@ -485,7 +485,13 @@ pub fn run(command: &TopCommand) -> Result<(), CliError> {
     let args = &command.top;
     let format = args.validate()?;
     let (motion, summary) = solve_and_summarise(args)?;
-    // Both grids are checked before anything is written.
+    if command.csv.is_some() && command.csv == args.plot {
+        return Err(argument(
+            "--csv",
+            "is also the --plot file; give them different names".to_owned(),
+        ));
+    }
+    // The grid is checked before anything is written.
     let grid = match &command.csv {
         Some(path) => Some((
             series::schedule(&motion, command.duration, command.dt)?,

@@ -158,6 +158,22 @@ fn bad_plot_paths_are_one_line_and_leave_no_files() {
         "{line}"
     );
     assert!(!csv.exists());
+    // Never over the scene or the CSV.
+    let copy = scratch("plot_scene.svg", std::fs::read(&scene).unwrap());
+    let run = simulate(&copy, &["--plot", copy.to_str().unwrap()]);
+    assert!(run.error_line(1).contains("refusing to overwrite it"));
+    let same = fresh("same.svg");
+    let run = simulate(
+        &scene,
+        &[
+            "--output",
+            same.to_str().unwrap(),
+            "--plot",
+            same.to_str().unwrap(),
+        ],
+    );
+    assert!(run.error_line(1).contains("--plot: "));
+    assert!(!same.exists());
     let missing = scratch_dir().join("no/such/dir/run.png");
     let run = simulate(
         &scene,

@@ -236,6 +236,9 @@ fn bad_grids_and_paths_are_one_line_and_leave_no_file() {
     let line = run.error_line(1);
     assert!(line.contains("cannot create output file"), "{line}");
     assert!(line.contains("no/such/dir/top.csv"), "{line}");
+    // The same file for both outputs.
+    let run = run_case(&CASES[0], &["--csv", "x.svg", "--plot", "x.svg"]);
+    assert!(run.error_line(1).starts_with("kreisel: error: --csv: "));
     // --dt without --csv is a usage error.
     let run = run_case(&CASES[0], &["--dt", "0.1"]);
     assert_eq!(run.code, Some(2), "{}", run.stderr);
