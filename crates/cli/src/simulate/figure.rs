@@ -78,10 +78,11 @@ pub fn figure(title: &str, tracks: &[Track], scene_bodies: usize) -> Figure {
 /// One body's row starting at `top`.
 fn body_row(fig: &mut Figure, track: &Track, top: f64) {
     let m = track.principal.moments;
-    let kind = if track.torque_free {
-        "torque-free"
-    } else {
-        "on a pivot or driven"
+    let kind = match (track.pivot, track.driven) {
+        (false, false) => "torque-free",
+        (false, true) => "driven (torques, forces or damping)",
+        (true, false) => "heavy top on a pivot",
+        (true, true) => "driven heavy top on a pivot",
     };
     fig.text(Text::new(
         Point::new(20.0, top + 18.0),
@@ -281,8 +282,10 @@ fn polhode_panel(fig: &mut Figure, track: &Track, top: f64) {
             Anchor::Middle,
         ));
     }
-    let note = if !track.torque_free {
-        "pivot or loads: L not conserved, no separatrices"
+    let note = if track.pivot {
+        "L about the pivot (not conserved)"
+    } else if track.driven {
+        "driven: L not conserved"
     } else if let Some(curves) = polhode::separatrices(track.principal.moments, 360) {
         for curve in curves {
             panel.path(fig, &curve, &Stroke::dashed(SEPARATRIX, 1.5, 6.0, 4.0));

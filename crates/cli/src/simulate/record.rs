@@ -38,8 +38,10 @@ pub struct Track {
     pub name: String,
     /// Principal moments (ascending) and axes (body_from_principal) about the centre of mass.
     pub principal: PrincipalAxes,
-    /// Neither a pivot nor loads: L and E are conserved, the polhode has separatrices.
-    pub torque_free: bool,
+    /// Turns about a fixed pivot (L is then about the pivot).
+    pub pivot: bool,
+    /// Torques, forces or damping act on it.
+    pub driven: bool,
     /// The kept rows, in time order.
     pub samples: Vec<Sample>,
 }
@@ -72,8 +74,8 @@ impl Recorder {
                 Some(Track {
                     name: name.clone(),
                     principal: body.mass_properties().principal(),
-                    torque_free: matches!(body.support(), Support::Free { .. })
-                        && body.inputs().is_none(),
+                    pivot: !matches!(body.support(), Support::Free { .. }),
+                    driven: !body.inputs().is_none(),
                     samples: Vec::new(),
                 })
             })
@@ -173,7 +175,7 @@ mod tests {
         }
         let last = (rows - 1) as f64 * 0.01;
         assert!((s.last().unwrap().t - last).abs() < 1e-9);
-        assert!(tracks[0].torque_free);
+        assert!(!tracks[0].pivot && !tracks[0].driven);
         // L in body axes is I ω.
         let l = s[0].l_body;
         assert!((l - DVec3::new(0.1, 2.0, 0.0)).length() < 1e-15, "{l}");
