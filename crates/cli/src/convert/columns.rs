@@ -41,7 +41,8 @@ fn is_space(c: char) -> bool {
 /// # Errors
 /// [`LineProblem::TooFewColumns`] when the line has fewer than `n` fields.
 pub fn split_leading(text: &str, n: usize) -> Result<(Vec<&str>, &str), LineProblem> {
-    let mut fields = Vec::with_capacity(n);
+    // n is untrusted (`--skip-columns 1000000000`): grow as fields are found.
+    let mut fields = Vec::with_capacity(n.min(16));
     let mut rest = text;
     for found in 0..n {
         rest = rest.trim_start_matches(is_space);
@@ -55,7 +56,7 @@ pub fn split_leading(text: &str, n: usize) -> Result<(Vec<&str>, &str), LineProb
         rest = rest[end..].trim_start_matches(is_space);
         rest = rest.strip_prefix(',').unwrap_or(rest);
     }
-    Ok((fields, rest))
+    Ok((fields, rest.trim_start_matches(is_space)))
 }
 
 /// The column names of `representation` in the output (see the module docs).
@@ -110,7 +111,7 @@ pub fn header(
     } else {
         text.split_whitespace().collect()
     };
-    if fields.len() != skip_columns + from.count() {
+    if fields.len() != skip_columns.saturating_add(from.count()) {
         return Err(LineProblem::HeaderCount {
             found: fields.len(),
             skip: skip_columns,
@@ -142,6 +143,26 @@ mod tests {
             split_leading("12.5, imu0", 3),
             Err(LineProblem::TooFewColumns { skip: 3, found: 2 })
         ));
+    }
+
+    proptest::proptest! {
+        /// Fields joined by any separator split back into the same fields
+        /// and the same rest.
+        #[test]
+        fn leading_fields_split_back(
+            fields in proptest::collection::vec("[A-Za-z0-9._:+-]{1,12}", 0..6),
+            separator in proptest::sample::select(vec![",", ", ", " ", "\t", " , "]),
+        ) {
+            let rest = "0.5,0.5,0.5,0.5";
+            let mut line = fields.join(separator);
+            if !fields.is_empty() {
+                line.push_str(separator);
+            }
+            line.push_str(rest);
+            let (split, after) = split_leading(&line, fields.len()).unwrap();
+            proptest::prop_assert_eq!(split, fields.iter().map(String::as_str).collect::<Vec<_>>());
+            proptest::prop_assert_eq!(after, rest);
+        }
     }
 
     #[test]

@@ -134,6 +134,31 @@ fn short_lines_and_bad_headers_name_the_line() {
         error_line(&run),
         "kreisel: error: line 1: header has 5 columns, expected 0 passed through (--skip-columns) + 4 for quat"
     );
+    // A huge N is just more than the line has (no allocation for it).
+    let run = convert(
+        "quat",
+        "quat",
+        &["--skip-columns", "1000000000000"],
+        "0.1,1,0,0,0\n",
+    );
+    assert_eq!(
+        error_line(&run),
+        "kreisel: error: line 1: line has 5 columns, fewer than --skip-columns 1000000000000"
+    );
+    let run = convert(
+        "quat",
+        "quat",
+        &["--skip-columns", "1000000000000", "--header"],
+        "t,qw,qx,qy,qz\n",
+    );
+    assert!(error_line(&run).contains("header has 5 columns"));
+    let run = convert(
+        "quat",
+        "quat",
+        &["--skip-columns", "18446744073709551615", "--header"],
+        "t,qw,qx,qy,qz\n",
+    );
+    assert!(error_line(&run).contains("header has 5 columns"));
     // Without --header a header line is a bad number, on its line.
     let run = convert("quat", "quat", &["--skip-columns", "1"], "t,qw,qx,qy,qz\n");
     assert_eq!(
