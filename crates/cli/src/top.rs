@@ -62,9 +62,10 @@ sphere over three or more nutation periods, and f(u) with its roots.
   qw..qz                attitude, world_from_body quaternion w,x,y,z =
                         Rz(phi) Rx(theta) Rz(psi) (euler:ZXZ of kreisel
                         convert), continuous in time (no sign flips)
-  Defaults: 3 nutation periods at period/200; without nutation (sleeping
-  top, steady precession) 3 turns of the fastest angle (2 pi / max(|phi_dot|,
-  |psi_dot|)) at turn/200; at rest 1 s at 0.005 s. At most 1e6 rows.
+  Defaults: 3 nutation periods at period/200; with theta constant (sleeping
+  top, steady precession) one turn of the slowest angle, 2 pi / (the
+  smallest nonzero |phi_dot|, |psi_dot|), in 600 steps; at rest 1 s at
+  0.005 s. At most 1e6 rows.
 
 Examples:
   kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --plot top.svg

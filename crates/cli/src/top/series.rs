@@ -13,10 +13,13 @@
 //!
 //! ```text
 //! nutating top (period T):            duration 3 T,       dt T / 200
-//! no nutation (sleeping, steady), ω = max(|φ̇|, |ψ̇|) > 0:
-//!                                     duration 3 (2π/ω),  dt (2π/ω) / 200
+//! θ constant (sleeping top, steady precession), ω = min of the nonzero |φ̇|, |ψ̇|:
+//!                                     duration 2π/ω,      dt duration / 600
 //! at rest (θ₀ = 0, no rates):         duration 1 s,       dt 0.005 s
 //! ```
+//!
+//! Without nutation the angles turn uniformly: one turn of the slowest
+//! (the precession, for a steady precession) shows the whole motion.
 
 use std::io::{BufWriter, Write};
 use std::path::Path;
@@ -33,25 +36,32 @@ pub const HEADER: &str = "t,theta,phi,psi,theta_dot,phi_dot,psi_dot,qw,qx,qy,qz"
 /// The most rows a `--csv` file may hold (about 200 bytes each).
 pub const MAX_ROWS: u64 = 1_000_000;
 
-/// Rows per nutation period (or per turn of the fastest angle) by default.
+/// Rows per nutation period by default.
 pub const ROWS_PER_PERIOD: f64 = 200.0;
 
-/// Periods (or turns) covered by default.
+/// Nutation periods covered by default.
 pub const DEFAULT_PERIODS: f64 = 3.0;
+
+/// Steps over one turn of the slowest angle when θ is constant.
+pub const STEPS_PER_TURN: f64 = 600.0;
 
 /// The default duration and step, s (see the module docs).
 pub fn default_grid(motion: &LagrangeTopMotion) -> (f64, f64) {
+    let nutates = motion.motion().is_some();
     if let Some(period) = motion
         .nutation_period()
-        .filter(|p| p.is_finite() && *p > 0.0)
+        .filter(|p| nutates && p.is_finite() && *p > 0.0)
     {
         return (DEFAULT_PERIODS * period, period / ROWS_PER_PERIOD);
     }
     let e = motion.euler_at(0.0);
-    let fastest = e.phi_dot.abs().max(e.psi_dot.abs());
-    if fastest > 0.0 && fastest.is_finite() {
-        let turn = std::f64::consts::TAU / fastest;
-        (DEFAULT_PERIODS * turn, turn / ROWS_PER_PERIOD)
+    let slowest = [e.phi_dot.abs(), e.psi_dot.abs()]
+        .into_iter()
+        .filter(|w| *w > 0.0 && w.is_finite())
+        .fold(f64::INFINITY, f64::min);
+    if slowest.is_finite() {
+        let turn = std::f64::consts::TAU / slowest;
+        (turn, turn / STEPS_PER_TURN)
     } else {
         (1.0, 1.0 / ROWS_PER_PERIOD)
     }
@@ -191,11 +201,19 @@ mod tests {
         let period = m.nutation_period().unwrap();
         let (duration, dt) = default_grid(&m);
         assert_eq!((duration, dt), (3.0 * period, period / 200.0));
-        // Sleeping: three turns of the spin.
+        // Sleeping: one turn of the spin.
         let m = motion(0.0, 0.0, 20.0);
         assert!(m.is_sleeping());
         let turn = std::f64::consts::TAU / 20.0;
-        assert_eq!(default_grid(&m), (3.0 * turn, turn / 200.0));
+        assert_eq!(default_grid(&m), (turn, turn / 600.0));
+        // Steady precession: one turn of the (slow) precession.
+        let top = LagrangeTop::new(1.0, 0.5, 1.0);
+        let slow = top.steady_precession_rates(20.0, 0.5).unwrap().slow;
+        let psi_dot = 20.0 - slow * 0.5f64.cos();
+        let m = motion(0.5, slow, psi_dot);
+        assert!(m.motion().is_none(), "steady");
+        let turn = std::f64::consts::TAU / slow.abs();
+        assert_eq!(default_grid(&m), (turn, turn / 600.0));
         // At rest upright.
         assert_eq!(default_grid(&motion(0.0, 0.0, 0.0)), (1.0, 0.005));
     }

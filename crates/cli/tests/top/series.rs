@@ -254,12 +254,31 @@ fn an_existing_file_is_kept_after_an_error() {
 }
 
 #[test]
-fn a_sleeping_top_covers_three_turns_of_its_spin() {
+fn a_steady_precession_covers_one_precession_turn() {
+    // The slow steady precession at θ = 0.5 with spin ω₃ = 20 (the
+    // library's rates; ψ̇ = ω₃ − φ̇ cos θ).
+    let top = kreisel_dynamics::LagrangeTop::new(1.0, 0.5, 1.0);
+    let slow = top.steady_precession_rates(20.0, 0.5).unwrap().slow;
+    let c = [1.0, 0.5, 1.0, 0.5, 0.0, slow, 20.0 - slow * 0.5f64.cos()];
+    let rows = csv_rows(&c, "steady.csv", &[]);
+    assert_eq!(rows.len(), 601);
+    let turn = std::f64::consts::TAU / slow;
+    assert_eq!(rows[600][0], turn);
+    for row in &rows {
+        // θ stays, φ turns uniformly.
+        assert!((row[1] - 0.5).abs() < 1e-12, "{row:?}");
+        assert!((row[2] - slow * row[0]).abs() < 1e-12, "{row:?}");
+    }
+    assert!((rows[600][2] - std::f64::consts::TAU).abs() < 1e-12);
+}
+
+#[test]
+fn a_sleeping_top_covers_one_turn_of_its_spin() {
     let c = [1.0, 0.5, 1.0, 0.0, 0.0, 0.0, 10.0];
     let rows = csv_rows(&c, "sleeping.csv", &[]);
     let turn = std::f64::consts::TAU / 10.0;
     assert_eq!(rows.len(), 601);
-    assert_eq!(rows[600][0], 3.0 * turn);
+    assert_eq!(rows[600][0], turn);
     for row in &rows {
         // Upright, spinning uniformly: q = (cos ψ/2, 0, 0, sin ψ/2), ψ = 10 t.
         assert_eq!(row[1], 0.0);
