@@ -325,9 +325,9 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
                         "kreisel simulate {} (method {name})",
                         std::path::Path::new(scene_name).display()
                     );
-                    let (tracks, bodies) = recorder.finish();
+                    let (tracks, recorded) = recorder.finish();
                     let bytes = format
-                        .render(&figure::figure(&title, &tracks, bodies))
+                        .render(&figure::figure(&title, &tracks, recorded))
                         .map_err(|e| CliError::Plot {
                             path: path.clone(),
                             message: e.to_string(),

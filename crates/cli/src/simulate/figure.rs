@@ -13,7 +13,7 @@ use kreisel_plot::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text};
 use kreisel_plot::sphere::{SpherePanel, View};
 
 use super::polhode;
-use super::record::{MAX_BODIES, Track};
+use super::record::{MAX_BODIES, Recorded, Track};
 use crate::numbers::Shortest;
 
 /// Figure width, px.
@@ -41,10 +41,10 @@ const PATH: Color = Color::rgb(31, 90, 180);
 /// Colour of the separatrices.
 const SEPARATRIX: Color = Color::rgb(200, 50, 40);
 
-/// Draws the figure: `title` on top, one row per track; `scene_bodies` is
-/// the number of bodies in the scene (a note says which are shown when it
-/// exceeds the tracks).
-pub fn figure(title: &str, tracks: &[Track], scene_bodies: usize) -> Figure {
+/// Draws the figure: `title` on top, one row per track; a note says which
+/// bodies are shown when the scene has more, and how the rows were thinned.
+pub fn figure(title: &str, tracks: &[Track], recorded: Recorded) -> Figure {
+    let scene_bodies = recorded.scene_bodies;
     let mut fig = Figure::new(WIDTH, height(tracks.len()));
     fig.text(Text::new(
         Point::new(f64::from(WIDTH) / 2.0, 30.0),
@@ -56,17 +56,28 @@ pub fn figure(title: &str, tracks: &[Track], scene_bodies: usize) -> Figure {
         let names: Vec<&str> = tracks.iter().map(|t| t.name.as_str()).collect();
         fig.text(
             Text::new(
-                Point::new(f64::from(WIDTH) / 2.0, 54.0),
+                Point::new(20.0, 54.0),
                 format!(
                     "showing the first {} of {scene_bodies} bodies: {} (the CSV has all)",
                     tracks.len(),
                     names.join(", ")
                 ),
                 14.0,
-                Anchor::Middle,
+                Anchor::Start,
             )
             .colored(SEPARATRIX),
         );
+    }
+    if recorded.stride > 1 {
+        fig.text(Text::new(
+            Point::new(f64::from(WIDTH) - 20.0, 54.0),
+            format!(
+                "drawn: 1 row in {} of the {} rows per body, and the last",
+                recorded.stride, recorded.rows
+            ),
+            13.0,
+            Anchor::End,
+        ));
     }
     for (k, track) in tracks.iter().enumerate() {
         let top = HEADER + ROW * k as f64;

@@ -129,16 +129,34 @@ impl Recorder {
         }
     }
 
-    /// The tracks, with the run's last row.
-    pub fn finish(mut self) -> (Vec<Track>, usize) {
+    /// The tracks, with the run's last row, and how they were thinned.
+    pub fn finish(mut self) -> (Vec<Track>, Recorded) {
         if let Some(last) = self.last.take() {
             for (track, sample) in self.tracks.iter_mut().zip(last) {
                 track.samples.push(sample);
             }
         }
-        (self.tracks, self.scene_bodies)
+        let recorded = Recorded {
+            scene_bodies: self.scene_bodies,
+            rows: self.rows,
+            stride: self.stride,
+        };
+        (self.tracks, recorded)
     }
 }
+
+/// What a [`Recorder`] saw besides the tracks.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Recorded {
+    /// The number of bodies in the scene.
+    pub scene_bodies: usize,
+    /// Rows per body in the CSV.
+    pub rows: u64,
+    /// Every `stride`-th row is in the tracks (and the last).
+    pub stride: u64,
+}
+
+impl Recorder {}
 
 #[cfg(test)]
 mod tests {
@@ -160,8 +178,10 @@ mod tests {
             recorder.record(&world);
             world.advance_steps(1).unwrap();
         }
-        let (tracks, n) = recorder.finish();
-        assert_eq!(n, 1);
+        let (tracks, recorded) = recorder.finish();
+        assert_eq!(recorded.scene_bodies, 1);
+        assert_eq!(recorded.rows, rows as u64);
+        assert_eq!(recorded.stride, 4);
         let s = &tracks[0].samples;
         assert!(
             s.len() <= MAX_POINTS + 1 && s.len() >= MAX_POINTS / 2,

@@ -137,10 +137,33 @@ fn more_bodies_than_drawn_are_named() {
         &text[..600]
     );
     assert!(!text.contains("body `b5`"));
+    assert!(!text.contains("drawn: 1 row in"), "not thinned");
     // The CSV still has all six.
     assert_eq!(
         run.stdout.lines().filter(|l| l.contains(",b6,")).count(),
         11
+    );
+}
+
+#[test]
+fn long_runs_are_thinned_and_say_so() {
+    let scene = format!(
+        "{}{}",
+        simulation(100.0, 0.01, ""),
+        body([1.0, 2.0, 3.0], [0.01, 1.0, 0.0], "")
+    );
+    let path = scratch("long_plot.toml", scene);
+    let svg = fresh("long.svg");
+    let run = simulate(&path, &["--plot", svg.to_str().unwrap()]);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    assert_eq!(run.stdout.lines().count(), 10_002, "header and every row");
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert_eq!(svg_size(&text), (WIDTH, height(1)));
+    // 4000 kept rows halve to 2000 twice: 1 in 4 of 10 001 rows.
+    assert!(
+        text.contains("drawn: 1 row in 4 of the 10001 rows per body, and the last"),
+        "{}",
+        &text[..800]
     );
 }
 
