@@ -3,10 +3,13 @@
 
 #![forbid(unsafe_code)]
 
+pub mod columns;
+
 use std::fs::{self, File};
 use std::io::{self, BufRead, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
+pub use self::columns::Layout;
 use crate::error::{CliError, LineProblem, Location, Stream};
 use crate::numbers::{Numbers, parse_numbers, write_numbers};
 use crate::representation::Representation;
@@ -45,6 +48,19 @@ Input: one rotation per line, numbers separated by commas and/or whitespace.
 Blank lines and lines starting with '#' are skipped. Output: one line per
 rotation, numbers comma-separated in shortest round-trip form.
 
+Logs (--skip-columns N, --header):
+  --skip-columns N passes the first N fields of every line (timestamps,
+  ids; separated like the numbers, by commas and/or whitespace; no quoting)
+  through unchanged before the converted rotation. --header reads the first
+  line that is neither blank nor a comment as a header naming N + (numbers
+  of --from) columns (comma-separated, or whitespace-separated when it has
+  no comma) and writes the N passed-through names and the names of --to:
+    quat qw,qx,qy,qz   quat-xyzw qx,qy,qz,qw   matrix m00,m01,...,m22
+    rotvec rx,ry,rz    axis-angle ax,ay,az,angle
+    euler:ZYX yaw,pitch,roll    euler:xyz roll,pitch,yaw
+    other euler:SEQ the axis and position, e.g. euler:ZXZ Z1,X2,Z3
+  With --degrees the angle names end in _deg (yaw_deg, angle_deg).
+
 Errors: the first invalid line stops the conversion with a message naming its
 line number (FILE:LINE: with --input) and exit status 1; every line before it
 has been written to standard output. An --output file is written whole or not
@@ -52,7 +68,8 @@ at all: after an error it is not created, and an existing one is kept.
 
 Examples:
   echo '0 0 1.5707963267948966' | kreisel convert --from rotvec --to quat
-  kreisel convert --from matrix --to euler:ZXZ --degrees --input m.csv";
+  kreisel convert --from matrix --to euler:ZXZ --degrees --input m.csv
+  kreisel convert --from quat --to euler:ZYX --degrees --skip-columns 1 --header --input imu.csv";
 
 /// Arguments of `kreisel convert`.
 #[derive(Debug, Clone, clap::Args)]
@@ -77,6 +94,14 @@ pub struct ConvertArgs {
     /// Write to FILE (replaced only when the whole conversion succeeds) instead of standard output
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+
+    /// Pass the first N fields of every line (timestamps, ids) through unchanged
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub skip_columns: usize,
+
+    /// The first line that is not blank or a comment is a header: write a matching one
+    #[arg(long)]
+    pub header: bool,
 }
 
 /// What to convert: the representations and the angle unit.
@@ -100,9 +125,17 @@ impl Conversion {
         if text.is_empty() || text.starts_with('#') {
             return Ok(None);
         }
+        self.convert_numbers(text).map(Some)
+    }
+
+    /// Converts the numbers of one rotation (the text holds nothing else).
+    ///
+    /// # Errors
+    /// A [`LineProblem`] when the text is not a rotation in `self.from`.
+    pub fn convert_numbers(&self, text: &str) -> Result<Numbers, LineProblem> {
         let numbers = parse_numbers(text).map_err(escape_problem)?;
         let q = self.from.quat_from_numbers(&numbers, self.degrees)?;
-        Ok(Some(self.to.numbers_from_quat(q, self.degrees)))
+        Ok(self.to.numbers_from_quat(q, self.degrees))
     }
 }
 
@@ -122,7 +155,11 @@ pub fn run(args: &ConvertArgs) -> Result<(), CliError> {
     let (reader, input) = open_input(args.input.as_deref())?;
     let (writer, output, pending) = open_output(args.output.as_deref(), args.input.as_deref())?;
     let mut writer = BufWriter::with_capacity(BUFFER_BYTES, writer);
-    let converted = convert_stream(reader, &mut writer, conversion, &input, &output);
+    let layout = Layout {
+        skip_columns: args.skip_columns,
+        header: args.header,
+    };
+    let converted = convert_log(reader, &mut writer, (conversion, layout), &input, &output);
     let flushed = writer.flush().map_err(|source| CliError::Write {
         output: output.clone(),
         source,
@@ -224,12 +261,35 @@ pub(crate) fn open_output(path: Option<&Path>, input: Option<&Path>) -> Result<O
 /// [`CliError::Line`] for an invalid line (with its 1-based number),
 /// [`CliError::Read`] / [`CliError::Write`] for I/O errors.
 pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
-    mut reader: R,
+    reader: R,
     writer: &mut W,
     conversion: Conversion,
     input: &Stream,
     output: &Stream,
 ) -> Result<(), CliError> {
+    convert_log(
+        reader,
+        writer,
+        (conversion, Layout::default()),
+        input,
+        output,
+    )
+}
+
+/// [`convert_stream`] for lines laid out as `layout` says: leading fields
+/// passed through, a header line (see [`columns`]).
+///
+/// # Errors
+/// As [`convert_stream`]; also [`LineProblem::TooFewColumns`] and
+/// [`LineProblem::HeaderCount`] with the line number.
+pub fn convert_log<R: BufRead, W: Write + ?Sized>(
+    mut reader: R,
+    writer: &mut W,
+    (conversion, layout): (Conversion, Layout),
+    input: &Stream,
+    output: &Stream,
+) -> Result<(), CliError> {
+    let mut header_pending = layout.header;
     let mut buffer = Vec::with_capacity(256);
     let mut line: u64 = 0;
     loop {
@@ -261,12 +321,44 @@ pub fn convert_stream<R: BufRead, W: Write + ?Sized>(
         } else {
             text
         };
-        if let Some(numbers) = conversion.convert_line(text).map_err(at_line)? {
-            write_numbers(writer, numbers.as_slice()).map_err(|source| CliError::Write {
-                output: output.clone(),
-                source,
-            })?;
+        let write_error = |source| CliError::Write {
+            output: output.clone(),
+            source,
+        };
+        let text = text.trim();
+        if text.is_empty() || text.starts_with('#') {
+            continue;
         }
+        if header_pending {
+            header_pending = false;
+            let names = columns::header(
+                text,
+                layout.skip_columns,
+                conversion.from,
+                conversion.to,
+                conversion.degrees,
+            )
+            .map_err(at_line)?;
+            writeln!(writer, "{names}").map_err(write_error)?;
+            continue;
+        }
+        let (fields, rest) = columns::split_leading(text, layout.skip_columns).map_err(at_line)?;
+        if rest.is_empty() {
+            // Only the passed-through fields: no rotation at all.
+            return Err(at_line(LineProblem::WrongCount {
+                representation: conversion.from,
+                expected: conversion.from.count(),
+                found: 0,
+            }));
+        }
+        let numbers = conversion.convert_numbers(rest).map_err(at_line)?;
+        for field in fields {
+            writer
+                .write_all(field.as_bytes())
+                .and_then(|()| writer.write_all(b","))
+                .map_err(write_error)?;
+        }
+        write_numbers(writer, numbers.as_slice()).map_err(write_error)?;
     }
 }
 

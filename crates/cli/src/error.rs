@@ -100,6 +100,29 @@ pub enum LineProblem {
         #[from]
         source: KinematicsError,
     },
+    // `kreisel convert --skip-columns N --header` (issue 16).
+    /// A line with fewer fields than `--skip-columns` passes through.
+    #[error("line has {found} columns, fewer than --skip-columns {skip}")]
+    TooFewColumns {
+        /// `--skip-columns`.
+        skip: usize,
+        /// The fields the line holds.
+        found: usize,
+    },
+    /// The `--header` line names the wrong number of columns.
+    #[error(
+        "header has {found} columns, expected {skip} passed through (--skip-columns) + {expected} for {representation}"
+    )]
+    HeaderCount {
+        /// The names the header holds.
+        found: usize,
+        /// `--skip-columns`.
+        skip: usize,
+        /// The input representation.
+        representation: Representation,
+        /// How many numbers it needs.
+        expected: usize,
+    },
 }
 
 /// Everything that makes a `kreisel` subcommand fail.

@@ -58,11 +58,12 @@ enum Command {
     /// (STL, OBJ, PLY, glTF), as text, JSON, URDF, SDFormat or MJCF
     Inertia(inertia::InertiaArgs),
     /// Integrate the rotation of the bodies of a TOML scene (torque-free,
-    /// driven by torques and forces, or on a pivot) and write their states as CSV
+    /// driven by torques and forces, or on a pivot) and write their states as CSV;
+    /// --plot draws omega(t), the energy and the polhode
     Simulate(simulate::SimulateArgs),
     /// The heavy symmetric top: constants of the motion, roots of f(u), nutation
-    /// limits and period, precession, type of motion; --plot draws it
-    Top(top::TopArgs),
+    /// limits and period, precession, type of motion; --plot draws it, --csv samples it
+    Top(top::TopCommand),
 }
 
 /// Runs the chosen subcommand.

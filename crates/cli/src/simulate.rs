@@ -12,11 +12,14 @@
 #![forbid(unsafe_code)]
 
 mod body;
+mod figure;
 mod methods;
 mod output;
+mod polhode;
 mod progress;
+mod record;
 pub mod scene;
-mod schedule;
+pub(crate) mod schedule;
 
 use std::fs;
 use std::io::{self, BufWriter, Write};
@@ -155,6 +158,17 @@ Output (CSV; standard output unless --output):
   they are computed. A progress bar is drawn on standard error when it is a
   terminal (not when the CSV goes to the same terminal).
 
+Plot (--plot FILE.png or FILE.svg, besides the CSV):
+  one row per body (the first 4 in scene order; the figure names them when
+  the scene has more): omega(t) in body axes; the energy change
+  (E - E0)/|E0| (E - E0 in J when E0 = 0); and the polhode, the path of
+  L/|L| on the unit sphere in principal axes (I1 <= I2 <= I3), with the
+  separatrices of a torque-free body with three distinct moments dashed
+  (the great circles L1/L3 = +-sqrt(I1 (I3 - I2) / (I3 (I2 - I1))), where
+  the energy ellipsoid of 2E = L^2/I2 meets the sphere). Long runs are
+  thinned to at most 4000 evenly spaced rows per body (the last row kept).
+  The image is written whole or not at all, after the CSV succeeded.
+
 Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
   A body whose state becomes non-finite, or whose energy, |L| or |q| drifts
   by more than a factor of 10 (a step far beyond the method's stability),
@@ -167,6 +181,7 @@ Examples:
   kreisel simulate examples/scenes/heavy_top.toml
   kreisel simulate examples/scenes/heavy_top.toml --explain
   kreisel simulate examples/scenes/spin_up.toml --columns t,wz,lz,energy
+  kreisel simulate examples/scenes/dzhanibekov.toml --output run.csv --plot run.png
   kreisel simulate --list-methods";
 
 /// Arguments of `kreisel simulate`.
@@ -200,6 +215,10 @@ pub struct SimulateArgs {
     /// Threads moving the bodies, N >= 1 (default: all cores); the output does not depend on N
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
+
+    /// Also draw omega(t), the energy change and the polhode of each body into FILE (.png or .svg)
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
 }
 
 /// Runs `kreisel simulate`.
@@ -232,6 +251,10 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         })?,
         None => std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN),
     };
+    let plot_format = match &args.plot {
+        Some(plot) => Some(check_plot(plot, scene_path, args.output.as_deref())?),
+        None => None,
+    };
     let text = fs::read_to_string(scene_path).map_err(|source| CliError::ReadScene {
         path: scene_path.clone(),
         source,
@@ -243,13 +266,37 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     scene.world.set_threads(threads);
     let (writer, output, pending) =
         crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
+    // The image file is opened before the run, so a bad path fails at once.
+    let plot = match (&args.plot, plot_format) {
+        (Some(path), Some(format)) => {
+            let (file, pending) =
+                crate::atomic_file::create(path).map_err(|source| CliError::Plot {
+                    path: path.clone(),
+                    message: format!("cannot create the file: {source}"),
+                })?;
+            Some((path, format, file, pending))
+        }
+        _ => None,
+    };
+    let mut recorder = plot
+        .as_ref()
+        .map(|_| record::Recorder::new(&scene.world, &scene.bodies));
     let mut progress = Progress::new(
         scene.schedule.steps(),
         Progress::wanted(output == Stream::Standard),
     );
     let mut csv = CsvWriter::with_columns(BufWriter::with_capacity(BUFFER_BYTES, writer), columns)
         .map_err(|source| write_error(&output, source))?;
-    let simulated = simulate(&mut scene, &mut |w, b| csv.rows(w, b), &mut progress);
+    let simulated = simulate(
+        &mut scene,
+        &mut |w, b| {
+            if let Some(recorder) = recorder.as_mut() {
+                recorder.record(w);
+            }
+            csv.rows(w, b)
+        },
+        &mut progress,
+    );
     progress.finish();
     // The rows written before a divergence are valid: flushed either way.
     let flushed = csv.flush();
@@ -269,8 +316,42 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         }
         Ok(()) => {
             flushed.map_err(|source| write_error(&output, source))?;
+            // The image is drawn before the CSV is put in place: a figure
+            // that cannot be written leaves neither.
+            let image = match (plot, recorder) {
+                (Some((path, format, file, pending)), Some(recorder)) => {
+                    let scene_name = scene_path.file_name().unwrap_or(scene_path.as_os_str());
+                    let title = format!(
+                        "kreisel simulate {} (method {name})",
+                        std::path::Path::new(scene_name).display()
+                    );
+                    let (tracks, recorded) = recorder.finish();
+                    let bytes = format
+                        .render(&figure::figure(&title, &tracks, recorded))
+                        .map_err(|e| CliError::Plot {
+                            path: path.clone(),
+                            message: e.to_string(),
+                        })?;
+                    let mut file = file;
+                    file.write_all(&bytes)
+                        .and_then(|()| file.flush())
+                        .map_err(|source| CliError::Plot {
+                            path: path.clone(),
+                            message: format!("cannot write the file: {source}"),
+                        })?;
+                    Some((path, pending))
+                }
+                _ => None,
+            };
             // Whole or not at all: the --output file appears only now.
-            crate::convert::commit_output(pending, output)
+            crate::convert::commit_output(pending, output)?;
+            if let Some((path, pending)) = image {
+                pending.commit().map_err(|source| CliError::Plot {
+                    path: path.clone(),
+                    message: format!("cannot write the file: {source}"),
+                })?;
+            }
+            Ok(())
         }
     }
 }
@@ -443,6 +524,45 @@ fn list_methods() -> Result<(), CliError> {
     methods::write_list(&mut out)
         .and_then(|()| out.flush())
         .map_err(|source| write_error(&Stream::Standard, source))
+}
+
+/// The image format of `--plot PLOT`, a path that is neither the scene nor
+/// the `--output` file.
+///
+/// # Errors
+/// [`CliError::Argument`] for an unknown extension or a file that must
+/// not be overwritten.
+fn check_plot(
+    plot: &std::path::Path,
+    scene: &std::path::Path,
+    output: Option<&std::path::Path>,
+) -> Result<kreisel_plot::ImageFormat, CliError> {
+    let fail = |message: &str| CliError::Argument {
+        argument: "--plot".to_owned(),
+        message: format!("{}: {message}", plot.display()),
+    };
+    let format = kreisel_plot::ImageFormat::from_path(plot)
+        .ok_or_else(|| fail("unknown image format (use a .svg or .png file name)"))?;
+    if [Some(scene), output]
+        .into_iter()
+        .flatten()
+        .any(|other| same_file(plot, other))
+    {
+        return Err(fail(
+            "is the scene or the --output file; refusing to overwrite it",
+        ));
+    }
+    Ok(format)
+}
+
+/// Whether `a` and `b` name the same file (the same path as written, or
+/// the same existing file).
+fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
+    a == b
+        || matches!(
+            (fs::canonicalize(a), fs::canonicalize(b)),
+            (Ok(x), Ok(y)) if x == y
+        )
 }
 
 /// The error of writing to `output`.

@@ -12,6 +12,7 @@
 
 mod figure;
 mod output;
+pub mod series;
 
 use std::path::PathBuf;
 
@@ -51,13 +52,50 @@ Output (SI units, radians; numbers in shortest round-trip form):
 --plot FILE.svg or FILE.png draws the path of the symmetry axis on the unit
 sphere over three or more nutation periods, and f(u) with its roots.
 
+--csv FILE writes the motion sampled every --dt H seconds from t = 0 to
+--duration T (the last row at T exactly), written whole or not at all:
+  t,theta,phi,psi,theta_dot,phi_dot,psi_dot,qw,qx,qy,qz
+  theta, phi, psi       ZXZ Euler angles as above, rad (phi and psi not
+                        wrapped: continuous, except jumps by pi where the
+                        axis passes exactly through the vertical)
+  theta_dot...psi_dot   their rates, rad/s
+  qw..qz                attitude, world_from_body quaternion w,x,y,z =
+                        Rz(phi) Rx(theta) Rz(psi) (euler:ZXZ of kreisel
+                        convert), continuous in time (no sign flips)
+  Defaults: 3 nutation periods at period/200; with theta constant (sleeping
+  top, steady precession) one turn of the slowest angle, 2 pi / (the
+  smallest nonzero |phi_dot|, |psi_dot|), in 600 steps; at rest 1 s at
+  0.005 s. At most 1e6 rows.
+
 Examples:
   kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --plot top.svg
-  kreisel top --i1 1 --i3 0.5 --mgl 1 --theta0 1 --phi-dot0 -1 --psi-dot0 8 --format json";
+  kreisel top --i1 1 --i3 0.5 --mgl 1 --theta0 1 --phi-dot0 -1 --psi-dot0 8 --format json
+  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --csv top.csv --dt 0.001";
 
-/// Arguments of `kreisel top`.
+/// The command line of `kreisel top`: the top ([`TopArgs`]) and the time
+/// series to write.
 #[derive(Debug, Clone, clap::Args)]
 #[command(after_long_help = AFTER_LONG_HELP)]
+pub struct TopCommand {
+    /// The top, its initial conditions, the report and the figure.
+    #[command(flatten)]
+    pub top: TopArgs,
+
+    /// Write the motion sampled in time as CSV to FILE (see below)
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+
+    /// Time covered by --csv, s [default: 3 nutation periods]
+    #[arg(long, value_name = "T", requires = "csv", allow_hyphen_values = true)]
+    pub duration: Option<f64>,
+
+    /// Time between the --csv rows, s [default: nutation period / 200]
+    #[arg(long, value_name = "H", requires = "csv", allow_hyphen_values = true)]
+    pub dt: Option<f64>,
+}
+
+/// Arguments of `kreisel top` that describe the top and its report.
+#[derive(Debug, Clone, clap::Args)]
 pub struct TopArgs {
     /// Transverse moment of inertia about the pivot, kg m^2 (positive)
     #[arg(long, value_name = "I1", allow_hyphen_values = true)]
@@ -442,12 +480,31 @@ pub fn solve_and_summarise(args: &TopArgs) -> Result<(LagrangeTopMotion, Summary
 ///
 /// # Errors
 /// [`CliError::Argument`] for a bad option value (naming it), [`CliError::Plot`]
-/// for the figure, [`CliError::Write`] when standard output fails.
-pub fn run(args: &TopArgs) -> Result<(), CliError> {
+/// for the figure, [`CliError::CreateOutput`] / [`CliError::Write`] for the
+/// `--csv` file and standard output.
+pub fn run(command: &TopCommand) -> Result<(), CliError> {
+    let args = &command.top;
     let format = args.validate()?;
     let (motion, summary) = solve_and_summarise(args)?;
+    if command.csv.is_some() && command.csv == args.plot {
+        return Err(argument(
+            "--csv",
+            "is also the --plot file; give them different names".to_owned(),
+        ));
+    }
+    // The grid is checked before anything is written.
+    let grid = match &command.csv {
+        Some(path) => Some((
+            series::schedule(&motion, command.duration, command.dt)?,
+            path,
+        )),
+        None => None,
+    };
     if let (Some(format), Some(path)) = (format, &args.plot) {
         plot(args, &motion, &summary, format, path)?;
+    }
+    if let Some((schedule, path)) = grid {
+        series::write_csv(&motion, &schedule, path)?;
     }
     let text = match args.format {
         Format::Text => output::text(&summary),

@@ -83,15 +83,21 @@ impl SpherePanel {
         )
     }
 
-    /// The silhouette (lightly filled), the equator and the vertical axis,
-    /// labelled `z`.
-    pub fn draw_frame(&self, fig: &mut Figure) {
+    /// The silhouette, lightly filled (for a sphere whose axes the caller
+    /// draws itself).
+    pub fn draw_outline(&self, fig: &mut Figure) {
         fig.circle(
             self.center,
             self.radius,
             Some(Color::rgb(242, 245, 250)),
             Some(Stroke::solid(Color::rgb(90, 90, 90), 1.5)),
         );
+    }
+
+    /// The silhouette (lightly filled), the equator and the vertical axis,
+    /// labelled `z`.
+    pub fn draw_frame(&self, fig: &mut Figure) {
+        self.draw_outline(fig);
         let equator = circle_of_latitude(std::f64::consts::FRAC_PI_2, 180);
         self.path(fig, &equator, &Stroke::dashed(Color::GREY, 1.0, 5.0, 4.0));
         let bottom = self.pixel(-DVec3::Z).0;

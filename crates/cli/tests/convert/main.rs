@@ -4,6 +4,7 @@
 //! the largest errors measured against the reference data.
 
 mod errors;
+mod logs;
 mod reference;
 mod representations;
 mod support;

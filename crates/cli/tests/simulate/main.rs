@@ -11,6 +11,7 @@ mod heavy_top;
 mod inputs;
 mod output;
 mod physics;
+mod plot;
 mod support;
 mod threads;
 mod tolerance;

@@ -5,4 +5,5 @@
 mod errors;
 mod plots;
 mod report;
+mod series;
 mod support;
