@@ -72,7 +72,9 @@ mod tests {
 
     #[test]
     fn element_is_indented_and_exact() {
-        let inertia = DMat3::from_cols_array(&[1.0, -0.1, 0.0, -0.1, 2.0, 0.0, 0.0, 0.0, 3.0]);
+        // A + B > C: written unchanged (a flat body's tensor, A + B = C, would be
+        // raised to stay loadable, as for a single mesh).
+        let inertia = DMat3::from_cols_array(&[1.0, -0.1, 0.0, -0.1, 2.0, 0.0, 0.0, 0.0, 2.5]);
         let props = MassProperties::new(0.5, DVec3::new(0.1, -0.2, 1.0 / 3.0), inertia);
         let layout = Layout {
             indent: "    ",
@@ -82,7 +84,7 @@ mod tests {
         assert_eq!(
             inertial_element(&props, InertialForm::default(), layout),
             "<inertial>\n      <origin xyz=\"0.1 -0.2 0.3333333333333333\" rpy=\"0 0 0\"/>\n      \
-             <mass value=\"0.5\"/>\n      <inertia ixx=\"1\" ixy=\"-0.1\" ixz=\"0\" iyy=\"2\" iyz=\"0\" izz=\"3\"/>\n    </inertial>"
+             <mass value=\"0.5\"/>\n      <inertia ixx=\"1\" ixy=\"-0.1\" ixz=\"0\" iyy=\"2\" iyz=\"0\" izz=\"2.5\"/>\n    </inertial>"
         );
     }
 }
