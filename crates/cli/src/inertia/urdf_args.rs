@@ -24,10 +24,12 @@ Whole robots (--urdf):
   whole or not at all) or standard output; a table goes to standard error.
   With --hull every mesh is the solid convex hull of its vertices (for open
   meshes, common in published robots); --weld applies as for one mesh.
-  A link whose meshes cannot be integrated (open, unsupported format) keeps
-  its old inertial: the file is still written, and the exit status is 1,
-  naming the links. A missing mesh or package, a malformed URDF or an unknown
-  geometry is an error: exit status 1 and no output.
+  Geometry: box, cylinder, sphere, capsule (radius, length of the cylinder
+  along z) and mesh. A link whose geometry cannot be integrated (an open
+  mesh, an unsupported format or element such as <plane>) keeps its old
+  inertial: the file is still written, and the exit status is 1, naming the
+  links. A missing mesh or package or a malformed URDF is an error: exit
+  status 1 and no output.
 
   --check compares each link's inertial with its geometry instead (writes
   nothing on standard output). A link fails when

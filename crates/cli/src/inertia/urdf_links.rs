@@ -95,7 +95,7 @@ fn corners(h: DVec3) -> Vec<DVec3> {
         .collect()
 }
 
-/// A primitive at unit density.
+/// A primitive at unit density (a mesh or an unknown element: the reason it is not one).
 fn primitive(shape: &Shape) -> Part {
     let (props, half, name) = match *shape {
         Shape::Box { size } => (
@@ -113,7 +113,17 @@ fn primitive(shape: &Shape) -> Part {
             DVec3::splat(radius),
             "sphere".to_owned(),
         ),
-        Shape::Mesh { .. } => unreachable!("meshes are loaded by `mesh`"),
+        Shape::Capsule { radius, length } => (
+            MassProperties::solid_capsule(1.0, radius, length),
+            DVec3::new(radius, radius, length / 2.0 + radius),
+            "capsule".to_owned(),
+        ),
+        Shape::Other { ref element } => {
+            return Err(format!(
+                "<{element}> geometry cannot be integrated (kreisel knows box, cylinder, sphere, capsule and mesh)"
+            ));
+        }
+        Shape::Mesh { .. } => return Err("a mesh is not a primitive".to_owned()),
     };
     let props = props.map_err(|e| format!("{name}: {}", one_line(&e.to_string())))?;
     Ok((props, corners(half), name, Vec::new()))

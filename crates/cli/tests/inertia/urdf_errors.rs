@@ -61,16 +61,87 @@ fn a_malformed_urdf_names_the_line() {
     assert!(line.contains("not a valid XML file"), "{line}");
 }
 
+/// The toy robot with `from` replaced by `to`, filled to stdout.
+fn filled_with(name: &str, from: &str, to: &str) -> super::support::Run {
+    let input = robot_copy(name);
+    let text = std::fs::read_to_string(&input).unwrap();
+    assert_eq!(text.matches(from).count(), 1, "{from}");
+    std::fs::write(&input, text.replacen(from, to, 1)).unwrap();
+    urdf(&input, &[])
+}
+
+/// The mass written for link `name`.
+fn mass_of(text: &str, name: &str) -> f64 {
+    let doc = roxmltree::Document::parse(text).expect("XML");
+    let link = doc
+        .descendants()
+        .find(|n| n.has_tag_name("link") && n.attribute("name") == Some(name))
+        .expect("the link");
+    let mass = link
+        .descendants()
+        .find(|n| n.has_tag_name("mass"))
+        .expect("a mass");
+    mass.attribute("value").unwrap().parse().unwrap()
+}
+
 #[test]
-fn an_unknown_geometry_names_link_and_element() {
-    let line = broken(
+fn an_unknown_geometry_keeps_that_links_inertial() {
+    let run = filled_with(
+        "plane",
+        "<sphere radius=\"0.02\"/>",
+        "<plane normal=\"0 0 1\"/>",
+    );
+    assert_eq!(run.code, Some(1), "{}", run.stderr);
+    let row = run.stderr.lines().find(|l| l.starts_with("hand")).unwrap();
+    assert!(
+        row.contains("<plane> geometry cannot be integrated"),
+        "{row}"
+    );
+    assert!(
+        run.stderr
+            .trim_end()
+            .ends_with("could not be integrated: hand")
+    );
+    assert!(mass_of(&run.stdout, "arm") > 0.0, "the others are filled");
+}
+
+#[test]
+fn a_capsule_is_a_cylinder_between_two_half_spheres() {
+    // Length 0: the sphere of the reference (hand = pyramid + sphere).
+    let sphere = filled_with(
+        "sphere",
+        "<sphere radius=\"0.02\"/>",
+        "<sphere radius=\"0.02\"/>",
+    );
+    let ball = filled_with(
+        "ball",
+        "<sphere radius=\"0.02\"/>",
+        "<capsule radius=\"0.02\" length=\"0\"/>",
+    );
+    let capsule = filled_with(
         "capsule",
         "<sphere radius=\"0.02\"/>",
         "<capsule radius=\"0.02\" length=\"0.1\"/>",
     );
+    for run in [&sphere, &ball, &capsule] {
+        assert_eq!(run.code, Some(0), "{}", run.stderr);
+    }
+    let inertial = |text: &str| {
+        let doc = roxmltree::Document::parse(text).expect("XML");
+        let node = doc
+            .descendants()
+            .find(|n| n.has_tag_name("link") && n.attribute("name") == Some("hand"))
+            .and_then(|l| l.children().find(|n| n.has_tag_name("inertial")))
+            .expect("hand's inertial");
+        text[node.range()].to_owned()
+    };
+    assert_eq!(inertial(&ball.stdout), inertial(&sphere.stdout));
+    // The cylinder adds ρ π r² L at 1000 kg/m³.
+    let added = mass_of(&capsule.stdout, "hand") - mass_of(&sphere.stdout, "hand");
+    let want = 1000.0 * std::f64::consts::PI * 0.02 * 0.02 * 0.1;
     assert!(
-        line.ends_with("link 'hand': unknown geometry <capsule> in <collision> (URDF knows box, cylinder, sphere, mesh)"),
-        "{line}"
+        (added - want).abs() <= 1e-14 * want.max(1.0),
+        "{added} {want}"
     );
 }
 
