@@ -32,6 +32,14 @@ pub fn robot_copy(name: &str) -> PathBuf {
     dir.join("toy_robot/urdf/toy.urdf")
 }
 
+/// The row of link `name` in the table on standard error.
+pub fn table_row<'a>(stderr: &'a str, name: &str) -> &'a str {
+    stderr
+        .lines()
+        .find(|l| l.split_whitespace().next() == Some(name))
+        .unwrap_or_else(|| panic!("no table row for {name} in {stderr}"))
+}
+
 /// Runs `kreisel inertia --urdf URDF ARGS...`.
 pub fn urdf(path: &Path, args: &[&str]) -> Run {
     let path = path.to_str().expect("test paths are UTF-8");
@@ -144,10 +152,7 @@ fn assert_reference(text: &str, stderr: &str, want: &Value, names: &[&str]) {
             e_mass <= TOLERANCE && e_com <= TOLERANCE && e_tensor <= TOLERANCE,
             "{name}: mass {e_mass:e}, com {e_com:e}, tensor {e_tensor:e}"
         );
-        let line = stderr
-            .lines()
-            .find(|l| l.starts_with(name))
-            .expect("a table row");
+        let line = table_row(stderr, name);
         assert_eq!(
             line.contains("mass kept, density derived"),
             want["mass_source"] == "kept",
@@ -195,11 +200,7 @@ fn visual_geometry_on_request() {
         run.stdout
             .contains("<inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\"")
     );
-    let row = run
-        .stderr
-        .lines()
-        .find(|l| l.starts_with("forearm"))
-        .unwrap();
+    let row = table_row(&run.stderr, "forearm");
     assert!(
         row.ends_with("no <visual> geometry: inertial unchanged"),
         "{row}"
@@ -277,7 +278,7 @@ fn check_passes_on_the_filled_file_and_names_a_wrong_link() {
     assert_eq!(ok.code, Some(0), "{}", ok.stderr);
     assert!(ok.stdout.is_empty());
     for name in ["base_link", "arm", "forearm", "hand"] {
-        let line = ok.stderr.lines().find(|l| l.starts_with(name)).unwrap();
+        let line = table_row(&ok.stderr, name);
         assert!(line.split_whitespace().any(|w| w == "ok"), "{line}");
     }
     // One wrong tensor element: the arm's ixx doubled.
@@ -305,7 +306,7 @@ fn check_passes_on_the_filled_file_and_names_a_wrong_link() {
     assert_eq!(bad.code, Some(1), "{}", bad.stderr);
     let last = bad.stderr.lines().last().unwrap();
     assert_eq!(last, "kreisel: error: 1 link(s) fail the check: arm");
-    let row = bad.stderr.lines().find(|l| l.starts_with("arm")).unwrap();
+    let row = table_row(&bad.stderr, "arm");
     assert!(
         row.contains("FAIL") && row.contains("tensor differs by"),
         "{row}"
@@ -344,7 +345,7 @@ fn a_forgotten_mesh_scale_is_a_warning() {
     std::fs::write(&input, text.replace(from, "meshes/wedge.stl\"")).unwrap();
     for args in [&[][..], &["--check"]] {
         let run = urdf(&input, args);
-        let row = run.stderr.lines().find(|l| l.starts_with("arm")).unwrap();
+        let row = table_row(&run.stderr, "arm");
         assert!(
             row.contains("m across, implausible for a link: is each mesh's scale right?"),
             "{args:?}: {row}"

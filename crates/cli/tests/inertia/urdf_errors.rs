@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use super::urdf::{robot_copy, urdf};
+use super::urdf::{robot_copy, table_row, urdf};
 
 /// The toy robot with `from` replaced by `to` in its URDF, run with
 /// `--output`; asserts one error line, exit status 1, no output file, and
@@ -92,7 +92,7 @@ fn an_unknown_geometry_keeps_that_links_inertial() {
         "<plane normal=\"0 0 1\"/>",
     );
     assert_eq!(run.code, Some(1), "{}", run.stderr);
-    let row = run.stderr.lines().find(|l| l.starts_with("hand")).unwrap();
+    let row = table_row(&run.stderr, "hand");
     assert!(
         row.contains("<plane> geometry cannot be integrated"),
         "{row}"
@@ -185,11 +185,7 @@ fn an_open_mesh_keeps_the_old_inertial_and_the_file_is_written() {
         last,
         "kreisel: error: 1 link(s) kept their old inertial, their geometry could not be integrated: forearm"
     );
-    let row = run
-        .stderr
-        .lines()
-        .find(|l| l.starts_with("forearm"))
-        .unwrap();
+    let row = table_row(&run.stderr, "forearm");
     assert!(
         row.contains("cannot integrate, old inertial kept") && row.contains("open"),
         "{row}"
