@@ -18,10 +18,14 @@
 //! welding) have no edges to share and are dropped first.
 
 use core::fmt;
+use std::sync::atomic::AtomicU32;
+use std::sync::atomic::Ordering::Relaxed;
 
 use glam::DVec3;
 
+use crate::edge_uses::{EdgeUses, use_triangle};
 use crate::mesh_unit::MeshUnit;
+use crate::parallel::{map_ranges, threads_for};
 use crate::{InertiaError, TriMesh};
 
 /// Something found in a mesh and repaired; the result is still exact.
@@ -84,69 +88,6 @@ pub struct CheckedMesh {
     pub mesh: TriMesh,
     /// What was repaired.
     pub warnings: Vec<MeshWarning>,
-}
-
-/// Every undirected edge use, grouped by edge: a counting sort by the low
-/// vertex, then each (short) bucket sorted by high vertex and triangle.
-/// A use is `(high << 32) | triangle`; 8 bytes per use, 24 per triangle.
-struct EdgeUses {
-    /// Where the uses whose low vertex is `v` start; `vertices + 1` entries.
-    start: Vec<usize>,
-    /// The uses, bucket by bucket.
-    uses: Vec<u64>,
-}
-
-impl EdgeUses {
-    /// Groups the edges of `triangles` (indices below `vertices`, none repeated
-    /// within a triangle).
-    fn new(triangles: &[[u32; 3]], vertices: usize) -> Self {
-        let low = |tri: &[u32; 3], k: usize| tri[k].min(tri[(k + 1) % 3]) as usize;
-        let mut start = vec![0usize; vertices + 1];
-        for tri in triangles {
-            for k in 0..3 {
-                start[low(tri, k) + 1] += 1;
-            }
-        }
-        // Inclusive prefix sums: start[v + 1] ends bucket v.
-        let mut sum = 0;
-        for s in &mut start {
-            sum += *s;
-            *s = sum;
-        }
-        // Fill each bucket from its end, so start[v + 1] ends at its beginning.
-        let mut uses = vec![0u64; 3 * triangles.len()];
-        for (t, tri) in triangles.iter().enumerate().rev() {
-            for k in (0..3).rev() {
-                let high = tri[k].max(tri[(k + 1) % 3]);
-                let end = &mut start[low(tri, k) + 1];
-                *end -= 1;
-                uses[*end] = (u64::from(high) << 32) | t as u64;
-            }
-        }
-        // Bucket v begins at start[v + 1]: shift it to start[v].
-        start.rotate_left(1);
-        start[vertices] = uses.len();
-        for w in start.windows(2) {
-            uses[w[0]..w[1]].sort_unstable();
-        }
-        Self { start, uses }
-    }
-
-    /// Calls `f(key, group)` for every edge in `(low, high)` order, with
-    /// `key = (low << 32) | high` and the group's uses.
-    fn for_each_edge(&self, mut f: impl FnMut(u64, &[u64])) {
-        for (low, w) in self.start.windows(2).enumerate() {
-            let bucket = &self.uses[w[0]..w[1]];
-            for group in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
-                f(((low as u64) << 32) | (group[0] >> 32), group);
-            }
-        }
-    }
-}
-
-/// The triangle of an edge use.
-fn use_triangle(u: u64) -> usize {
-    (u & 0xFFFF_FFFF) as usize
 }
 
 /// Which edge slot `k` (from `tri[k]` to `tri[k + 1]`) of `tri` joins the
@@ -421,26 +362,43 @@ impl Topology {
     fn of(triangles: &[[u32; 3]], vertices: usize) -> Result<Self, TopologyError> {
         let n = triangles.len();
         // The neighbour across edge k (from tri[k] to tri[k + 1]) of each
-        // triangle when exactly two triangles share that edge, else u32::MAX.
-        let mut neighbours = vec![[u32::MAX; 3]; n];
-        let mut boundary = Vec::new();
-        let mut shared_edges = 0;
+        // triangle when exactly two triangles share that edge, else
+        // u32::MAX. Found on the machine's cores, each thread the edges of
+        // its low vertices (every edge once, so no two threads write the
+        // same place; relaxed atomic stores are plain stores on x86).
+        let neighbours: Vec<[AtomicU32; 3]> = (0..n)
+            .map(|_| [const { AtomicU32::new(u32::MAX) }; 3])
+            .collect();
         let uses = EdgeUses::new(triangles, vertices);
-        uses.for_each_edge(|key, group| match *group {
-            [_] => boundary.push(key),
-            [u, w] => {
-                let (tu, tw) = (use_triangle(u), use_triangle(w));
-                let (ku, _) = edge_slot(triangles[tu], key);
-                let (kw, _) = edge_slot(triangles[tw], key);
-                // Triangle counts fit in u32: indices are u32.
-                neighbours[tu][ku] = tw as u32;
-                neighbours[tw][kw] = tu as u32;
+        let lows = uses.vertex_ranges(threads_for(n));
+        let parts = map_ranges(lows.len(), lows.len(), 1, |r| {
+            let (mut boundary, mut shared_edges) = (Vec::new(), 0);
+            for lows in &lows[r] {
+                uses.for_each_edge_in(lows.clone(), |key, group| match *group {
+                    [_] => boundary.push(key),
+                    [u, w] => {
+                        let (tu, tw) = (use_triangle(u), use_triangle(w));
+                        let (ku, _) = edge_slot(triangles[tu], key);
+                        let (kw, _) = edge_slot(triangles[tw], key);
+                        // Triangle counts fit in u32: indices are u32.
+                        neighbours[tu][ku].store(tw as u32, Relaxed);
+                        neighbours[tw][kw].store(tu as u32, Relaxed);
+                    }
+                    // Orientation does not propagate across these (which pairs?);
+                    // they are checked once every surface is oriented.
+                    _ => shared_edges += 1,
+                });
             }
-            // Orientation does not propagate across these (which pairs?);
-            // they are checked once every surface is oriented.
-            _ => shared_edges += 1,
+            (boundary, shared_edges)
         });
         drop(uses);
+        // In edge order, as one thread finds them.
+        let boundary: Vec<u64> = parts.iter().flat_map(|p| p.0.iter().copied()).collect();
+        let shared_edges: usize = parts.iter().map(|p| p.1).sum();
+        let neighbours: Vec<[u32; 3]> = neighbours
+            .into_iter()
+            .map(|t| t.map(AtomicU32::into_inner))
+            .collect();
         if !boundary.is_empty() {
             return Err(TopologyError::Open(boundary));
         }
