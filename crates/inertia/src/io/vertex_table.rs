@@ -241,6 +241,13 @@ impl VertexTable {
         self.vertices.len()
     }
 
+    /// The distinct vertices, in order of first appearance, after those of `out`.
+    pub(super) fn append_vertices_to(self, out: &mut Vec<DVec3>) {
+        drop(self.slots);
+        drop(self.recent);
+        out.extend(self.vertices.into_iter().map(point));
+    }
+
     /// The distinct vertices, in order of first appearance.
     pub(super) fn into_vertices(self) -> Vec<DVec3> {
         drop(self.slots);
