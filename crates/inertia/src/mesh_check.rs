@@ -18,8 +18,8 @@
 //! welding) have no edges to share and are dropped first.
 
 use core::fmt;
-use std::sync::atomic::AtomicU32;
 use std::sync::atomic::Ordering::Relaxed;
+use std::sync::atomic::{AtomicBool, AtomicU32};
 
 use glam::DVec3;
 
@@ -369,6 +369,11 @@ impl Topology {
         let neighbours: Vec<[AtomicU32; 3]> = (0..n)
             .map(|_| [const { AtomicU32::new(u32::MAX) }; 3])
             .collect();
+        // Whether that neighbour runs along the shared edge in the same
+        // direction (then exactly one of the two is flipped).
+        let same: Vec<[AtomicBool; 3]> = (0..n)
+            .map(|_| [const { AtomicBool::new(false) }; 3])
+            .collect();
         let uses = EdgeUses::new(triangles, vertices);
         let lows = uses.vertex_ranges(threads_for(n));
         let parts = map_ranges(lows.len(), lows.len(), 1, |r| {
@@ -378,11 +383,13 @@ impl Topology {
                     [_] => boundary.push(key),
                     [u, w] => {
                         let (tu, tw) = (use_triangle(u), use_triangle(w));
-                        let (ku, _) = edge_slot(triangles[tu], key);
-                        let (kw, _) = edge_slot(triangles[tw], key);
+                        let (ku, forward_u) = edge_slot(triangles[tu], key);
+                        let (kw, forward_w) = edge_slot(triangles[tw], key);
                         // Triangle counts fit in u32: indices are u32.
                         neighbours[tu][ku].store(tw as u32, Relaxed);
                         neighbours[tw][kw].store(tu as u32, Relaxed);
+                        same[tu][ku].store(forward_u == forward_w, Relaxed);
+                        same[tw][kw].store(forward_u == forward_w, Relaxed);
                     }
                     // Orientation does not propagate across these (which pairs?);
                     // they are checked once every surface is oriented.
@@ -398,6 +405,10 @@ impl Topology {
         let neighbours: Vec<[u32; 3]> = neighbours
             .into_iter()
             .map(|t| t.map(AtomicU32::into_inner))
+            .collect();
+        let same: Vec<[bool; 3]> = same
+            .into_iter()
+            .map(|t| t.map(AtomicBool::into_inner))
             .collect();
         if !boundary.is_empty() {
             return Err(TopologyError::Open(boundary));
@@ -423,12 +434,7 @@ impl Topology {
                         continue;
                     }
                     let u = u as usize;
-                    let tri = triangles[t];
-                    let key = {
-                        let (a, b) = (tri[k], tri[(k + 1) % 3]);
-                        (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
-                    };
-                    let same = edge_slot(triangles[u], key).1 == (tri[k] < tri[(k + 1) % 3]);
+                    let same = same[t][k];
                     // Neighbours must traverse the shared edge in opposite directions.
                     let want = flip[t] ^ same;
                     if component[u] == u32::MAX {

@@ -37,12 +37,8 @@ use glam::DVec3;
 
 use crate::mesh_check::Topology;
 use crate::mesh_unit::{MeshUnit, bounds, ldexp};
+use crate::parallel::{PARALLEL_MIN, map_slices, threads_for};
 use crate::{InertiaError, TriMesh};
-
-/// Triangles from which the check's topology is found on a second thread
-/// while the tolerance pass runs (below, starting the thread costs more
-/// than it saves).
-const PARALLEL_MIN: usize = 1 << 15;
 
 /// Default relative weld tolerance: `1e-6 ×` the bounding-box diagonal.
 ///
@@ -226,6 +222,30 @@ fn find(parent: &mut [u32], mut i: u32) -> u32 {
     i
 }
 
+/// `(ordered(v · d), index)` of every vertex, sorted, and the largest
+/// `|v · d|`, on up to `threads` threads: each sorts its part, then one
+/// merge of the sorted runs (the stable sort finds them). Keys and indices
+/// together are unique, so the order is the same on any number of threads.
+fn projection_order(vertices: &[DVec3], d: DVec3, threads: usize) -> (Vec<(u64, u32)>, f64) {
+    let mut order: Vec<(u64, u32)> = vec![(0, 0); vertices.len()];
+    let largest = map_slices(&mut order, threads, 1, |first, part| {
+        let mut largest: f64 = 0.0;
+        for (k, (o, v)) in part.iter_mut().zip(&vertices[first..]).enumerate() {
+            let p = v.dot(d);
+            largest = largest.max(p.abs());
+            *o = (ordered(p), (first + k) as u32);
+        }
+        part.sort_unstable();
+        largest
+    })
+    .into_iter()
+    .fold(0.0, f64::max);
+    if threads > 1 {
+        order.sort();
+    }
+    (order, largest)
+}
+
 /// Vertices within `tol` merged: the new index of each vertex, the
 /// vertices kept (from `original`) and the report; `None` when nothing is
 /// within `tol`. Distances are measured in `vertices` (the original ones in
@@ -243,20 +263,10 @@ fn weld_near(
     // An oblique direction, so that the axis-aligned planes of CAD meshes
     // do not put many vertices at one projection.
     let d = DVec3::new(1.0, 0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
-    let mut largest: f64 = 0.0;
-    let mut order: Vec<(u64, u32)> = vertices
-        .iter()
-        .enumerate()
-        .map(|(i, v)| {
-            let p = v.dot(d);
-            largest = largest.max(p.abs());
-            (ordered(p), i as u32)
-        })
-        .collect();
+    let (order, largest) = projection_order(vertices, d, threads_for(vertices.len()));
     // Projections of points within `tol` differ by at most `tol |d|`, plus
     // the rounding of the two dot products.
     let reach = tol * d.length() * (1.0 + 1e-12) + 8.0 * f64::EPSILON * largest;
-    order.sort_unstable_by_key(|&(k, _)| k);
     let proj = |k: u64| -> f64 { f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k }) };
     let tol2 = tol * tol;
     let mut parent: Vec<u32> = Vec::new();
@@ -555,6 +565,23 @@ mod tests {
         for t in [-1.0, f64::NAN, f64::INFINITY] {
             assert!(Weld::Absolute(t).tolerance(1.0).is_err());
             assert!(Weld::Relative(t).tolerance(1.0).is_err());
+        }
+    }
+
+    #[test]
+    fn projection_order_does_not_depend_on_the_thread_count() {
+        // Repeated and signed-zero projections among them (ties).
+        let v: Vec<DVec3> = (0..5000)
+            .map(|i| {
+                let t = f64::from(i % 1700);
+                DVec3::new((0.3 * t).sin(), if i % 3 == 0 { -0.0 } else { 0.0 }, t)
+            })
+            .collect();
+        let d = DVec3::new(1.0, 0.75, 0.5);
+        let (one, largest) = projection_order(&v, d, 1);
+        assert!(one.windows(2).all(|w| w[0] < w[1]));
+        for threads in [2, 3, 8] {
+            assert_eq!(projection_order(&v, d, threads), (one.clone(), largest));
         }
     }
 }
