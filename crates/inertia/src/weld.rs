@@ -222,28 +222,51 @@ fn find(parent: &mut [u32], mut i: u32) -> u32 {
     i
 }
 
-/// `(ordered(v · d), index)` of every vertex, sorted, and the largest
-/// `|v · d|`, on up to `threads` threads: each sorts its part, then one
-/// merge of the sorted runs (the stable sort finds them). Keys and indices
-/// together are unique, so the order is the same on any number of threads.
-fn projection_order(vertices: &[DVec3], d: DVec3, threads: usize) -> (Vec<(u64, u32)>, f64) {
-    let mut order: Vec<(u64, u32)> = vec![(0, 0); vertices.len()];
+/// A vertex in the sweep of [`weld_near`]: its projection on the sweep
+/// direction (as [`ordered`] bits) and its index, the sort key; and its
+/// projection on a second direction rounded to `f32`, a filter that rules
+/// out most candidate pairs before their vertices (in random places of
+/// memory) are loaded.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+struct Projected {
+    key: u64,
+    index: u32,
+    side: f32,
+}
+
+/// Every vertex [`Projected`] on `d` and `e`, sorted by key and index, and
+/// the largest `|v · d|` and `|v · e|`, on up to `threads` threads: each
+/// sorts its part, then one merge of the sorted runs (the stable sort finds
+/// them). Keys and indices together are unique, so the order is the same on
+/// any number of threads.
+fn projection_order(
+    vertices: &[DVec3],
+    (d, e): (DVec3, DVec3),
+    threads: usize,
+) -> (Vec<Projected>, f64, f64) {
+    let mut order = vec![Projected::default(); vertices.len()];
     let largest = map_slices(&mut order, threads, 1, |first, part| {
-        let mut largest: f64 = 0.0;
+        let (mut largest, mut largest_side): (f64, f64) = (0.0, 0.0);
         for (k, (o, v)) in part.iter_mut().zip(&vertices[first..]).enumerate() {
-            let p = v.dot(d);
+            let (p, q) = (v.dot(d), v.dot(e));
             largest = largest.max(p.abs());
-            *o = (ordered(p), (first + k) as u32);
+            largest_side = largest_side.max(q.abs());
+            *o = Projected {
+                key: ordered(p),
+                index: (first + k) as u32,
+                side: q as f32,
+            };
         }
-        part.sort_unstable();
-        largest
-    })
-    .into_iter()
-    .fold(0.0, f64::max);
+        part.sort_unstable_by_key(|p| (p.key, p.index));
+        (largest, largest_side)
+    });
     if threads > 1 {
-        order.sort();
+        order.sort_by_key(|p| (p.key, p.index));
     }
-    (order, largest)
+    let (largest, largest_side) = largest.into_iter().fold((0.0, 0.0), |(a, b), (x, y)| {
+        (f64::max(a, x), f64::max(b, y))
+    });
+    (order, largest, largest_side)
 }
 
 /// Vertices within `tol` merged: the new index of each vertex, the
@@ -263,22 +286,34 @@ fn weld_near(
     // An oblique direction, so that the axis-aligned planes of CAD meshes
     // do not put many vertices at one projection.
     let d = DVec3::new(1.0, 0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
-    let (order, largest) = projection_order(vertices, d, threads_for(vertices.len()));
+    // Another oblique direction, far from parallel to d, for the filter.
+    let e = DVec3::new(-0.569_840_290_998_053_3, 1.0, -0.754_877_666_246_692_7);
+    let (order, largest, largest_side) =
+        projection_order(vertices, (d, e), threads_for(vertices.len()));
     // Projections of points within `tol` differ by at most `tol |d|`, plus
     // the rounding of the two dot products.
     let reach = tol * d.length() * (1.0 + 1e-12) + 8.0 * f64::EPSILON * largest;
+    // The same on e, plus the rounding of both to f32 (half an f32 ulp
+    // each, or half the smallest subnormal), twice over.
+    let reach_side = tol * e.length() * (1.0 + 1e-12)
+        + 8.0 * f64::EPSILON * largest_side
+        + 2.0 * f64::from(f32::EPSILON) * largest_side
+        + 2.0 * f64::from(f32::MIN_POSITIVE);
     let proj = |k: u64| -> f64 { f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k }) };
     let tol2 = tol * tol;
     let mut parent: Vec<u32> = Vec::new();
     // Vertices bit-identical to one with a smaller index (only `repeats`).
     let mut repeat: Vec<bool> = Vec::new();
-    for (n, &(ki, i)) in order.iter().enumerate() {
-        let pi = proj(ki);
-        for &(kj, j) in &order[n + 1..] {
-            if proj(kj) - pi > reach {
+    for (n, a) in order.iter().enumerate() {
+        let (pi, i) = (proj(a.key), a.index);
+        for b in &order[n + 1..] {
+            if proj(b.key) - pi > reach {
                 break;
             }
-            if vertices[i as usize].distance_squared(vertices[j as usize]) <= tol2 {
+            let j = b.index;
+            if (f64::from(b.side) - f64::from(a.side)).abs() <= reach_side
+                && vertices[i as usize].distance_squared(vertices[j as usize]) <= tol2
+            {
                 if parent.is_empty() {
                     parent = (0..vertices.len() as u32).collect();
                 }
@@ -577,11 +612,31 @@ mod tests {
                 DVec3::new((0.3 * t).sin(), if i % 3 == 0 { -0.0 } else { 0.0 }, t)
             })
             .collect();
-        let d = DVec3::new(1.0, 0.75, 0.5);
-        let (one, largest) = projection_order(&v, d, 1);
-        assert!(one.windows(2).all(|w| w[0] < w[1]));
+        let de = (DVec3::new(1.0, 0.75, 0.5), DVec3::new(-0.5, 1.0, -0.75));
+        let one = projection_order(&v, de, 1);
+        assert!(
+            one.0
+                .windows(2)
+                .all(|w| (w[0].key, w[0].index) < (w[1].key, w[1].index))
+        );
         for threads in [2, 3, 8] {
-            assert_eq!(projection_order(&v, d, threads), (one.clone(), largest));
+            assert_eq!(projection_order(&v, de, threads), one);
+        }
+    }
+
+    #[test]
+    fn the_side_filter_keeps_pairs_at_the_tolerance_at_every_scale() {
+        // Pairs exactly tol apart along the filter's direction, far from the
+        // origin (large projections, coarse f32 rounding) and near it.
+        for (centre, tol) in [(1e9, 1e-3), (1.0, 1e-12), (1e-30, 1e-40), (0.0, 0.0)] {
+            let e = DVec3::new(-0.569_840_290_998_053_3, 1.0, -0.754_877_666_246_692_7);
+            let p = DVec3::new(centre, -centre, 0.5 * centre);
+            let q = p + e.normalize() * tol * 0.99;
+            let far = DVec3::splat(centre + 1.0);
+            let mesh = TriMesh::new(vec![p, far, far + DVec3::X, q], vec![[0, 1, 2], [3, 2, 1]]);
+            let (welded, report) = mesh.welded(Weld::Absolute(tol)).unwrap();
+            assert_eq!(welded.vertices().len(), 3, "{centre} {tol}");
+            assert!(report.merged == 1 || p == q, "{centre} {tol}");
         }
     }
 }
