@@ -25,7 +25,7 @@ use glam::DVec3;
 
 use crate::edge_uses::{EdgeUses, use_triangle};
 use crate::mesh_unit::MeshUnit;
-use crate::parallel::{map_ranges, threads_for};
+use crate::parallel::{any, map_ranges, threads_for};
 use crate::{InertiaError, TriMesh};
 
 /// Something found in a mesh and repaired; the result is still exact.
@@ -262,7 +262,10 @@ fn in_own_unit(
 fn prepare_solid_as_is(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
     let (vertices, mut triangles, known) = mesh.into_parts_and_topology();
     let before = triangles.len();
-    triangles.retain(|&t| !collapsed(t));
+    // Found on the machine's cores; removed (rarely) on this thread.
+    if any(&triangles, |&t| collapsed(t)) {
+        triangles.retain(|&t| !collapsed(t));
+    }
     let collapsed_count = before - triangles.len();
     if triangles.is_empty() {
         return Err(InertiaError::EmptyMesh {
@@ -289,7 +292,9 @@ fn prepare_solid_as_is(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
         }
     };
     let kept = triangles.len();
-    triangles.retain(|&t| !zero_area(&vertices, t));
+    if any(&triangles, |&t| zero_area(&vertices, t)) {
+        triangles.retain(|&t| !zero_area(&vertices, t));
+    }
     let degenerate = collapsed_count + (before - collapsed_count - kept) + (kept - triangles.len());
     if degenerate > 0 {
         warnings.insert(0, MeshWarning::DegenerateTriangles { count: degenerate });
@@ -347,6 +352,36 @@ impl TopologyError {
     }
 }
 
+/// The neighbours of one triangle across its edges `k` (from `tri[k]` to
+/// `tri[k + 1]`), where exactly two triangles share the edge, and whether
+/// the neighbour runs along it in the same direction (then exactly one of
+/// the two is to be flipped). Atomic so that the threads of the edge pass
+/// can fill it; each slot is written once.
+struct Across {
+    /// The neighbour, `u32::MAX` for none.
+    triangle: [AtomicU32; 3],
+    same: [AtomicBool; 3],
+}
+
+impl Across {
+    fn none() -> Self {
+        Self {
+            triangle: [const { AtomicU32::new(u32::MAX) }; 3],
+            same: [const { AtomicBool::new(false) }; 3],
+        }
+    }
+
+    fn set(&self, k: usize, neighbour: u32, same: bool) {
+        self.triangle[k].store(neighbour, Relaxed);
+        self.same[k].store(same, Relaxed);
+    }
+
+    fn get(&self, k: usize) -> Option<(u32, bool)> {
+        let t = self.triangle[k].load(Relaxed);
+        (t != u32::MAX).then(|| (t, self.same[k].load(Relaxed)))
+    }
+}
+
 impl Topology {
     /// The topology of triangles that [`prepare_solid`] would check as they
     /// are (none repeats a vertex index), if they are closed and orientable;
@@ -361,19 +396,11 @@ impl Topology {
     /// Closure and a consistent winding of triangles without a repeated index.
     fn of(triangles: &[[u32; 3]], vertices: usize) -> Result<Self, TopologyError> {
         let n = triangles.len();
-        // The neighbour across edge k (from tri[k] to tri[k + 1]) of each
-        // triangle when exactly two triangles share that edge, else
-        // u32::MAX. Found on the machine's cores, each thread the edges of
-        // its low vertices (every edge once, so no two threads write the
-        // same place; relaxed atomic stores are plain stores on x86).
-        let neighbours: Vec<[AtomicU32; 3]> = (0..n)
-            .map(|_| [const { AtomicU32::new(u32::MAX) }; 3])
-            .collect();
-        // Whether that neighbour runs along the shared edge in the same
-        // direction (then exactly one of the two is flipped).
-        let same: Vec<[AtomicBool; 3]> = (0..n)
-            .map(|_| [const { AtomicBool::new(false) }; 3])
-            .collect();
+        // The neighbour across each edge of each triangle, found on the
+        // machine's cores, each thread the edges of its low vertices (every
+        // edge once, so no two threads write the same place; relaxed atomic
+        // stores and loads are plain ones on x86).
+        let across: Vec<Across> = (0..n).map(|_| Across::none()).collect();
         let uses = EdgeUses::new(triangles, vertices);
         let lows = uses.vertex_ranges(threads_for(n));
         let parts = map_ranges(lows.len(), lows.len(), 1, |r| {
@@ -386,10 +413,8 @@ impl Topology {
                         let (ku, forward_u) = edge_slot(triangles[tu], key);
                         let (kw, forward_w) = edge_slot(triangles[tw], key);
                         // Triangle counts fit in u32: indices are u32.
-                        neighbours[tu][ku].store(tw as u32, Relaxed);
-                        neighbours[tw][kw].store(tu as u32, Relaxed);
-                        same[tu][ku].store(forward_u == forward_w, Relaxed);
-                        same[tw][kw].store(forward_u == forward_w, Relaxed);
+                        across[tu].set(ku, tw as u32, forward_u == forward_w);
+                        across[tw].set(kw, tu as u32, forward_u == forward_w);
                     }
                     // Orientation does not propagate across these (which pairs?);
                     // they are checked once every surface is oriented.
@@ -402,52 +427,48 @@ impl Topology {
         // In edge order, as one thread finds them.
         let boundary: Vec<u64> = parts.iter().flat_map(|p| p.0.iter().copied()).collect();
         let shared_edges: usize = parts.iter().map(|p| p.1).sum();
-        let neighbours: Vec<[u32; 3]> = neighbours
-            .into_iter()
-            .map(|t| t.map(AtomicU32::into_inner))
-            .collect();
-        let same: Vec<[bool; 3]> = same
-            .into_iter()
-            .map(|t| t.map(AtomicBool::into_inner))
-            .collect();
         if !boundary.is_empty() {
             return Err(TopologyError::Open(boundary));
         }
 
         // Orient each connected surface consistently, flipping the minority.
-        let mut component = vec![u32::MAX; n];
-        let mut flip = vec![false; n];
+        // Per triangle: not reached yet (0), reached as it is (1) or to be
+        // flipped (2).
+        let mut state = vec![0u8; n];
         let mut components: Vec<Vec<u32>> = Vec::new();
         for seed in 0..n {
-            if component[seed] != u32::MAX {
+            if state[seed] != 0 {
                 continue;
             }
-            let id = components.len() as u32;
             let mut members = vec![seed as u32];
-            component[seed] = id;
+            state[seed] = 1;
             let mut next = 0;
             while next < members.len() {
                 let t = members[next] as usize;
                 next += 1;
-                for (k, &u) in neighbours[t].iter().enumerate() {
-                    if u == u32::MAX {
+                let flip_t = state[t] == 2;
+                for k in 0..3 {
+                    let Some((u, same)) = across[t].get(k) else {
                         continue;
-                    }
+                    };
                     let u = u as usize;
-                    let same = same[t][k];
                     // Neighbours must traverse the shared edge in opposite directions.
-                    let want = flip[t] ^ same;
-                    if component[u] == u32::MAX {
-                        component[u] = id;
-                        flip[u] = want;
-                        members.push(u as u32);
-                    } else if flip[u] != want {
-                        return Err(TopologyError::NonOrientable(members.len()));
+                    let want = flip_t ^ same;
+                    match state[u] {
+                        0 => {
+                            state[u] = 1 + u8::from(want);
+                            members.push(u as u32);
+                        }
+                        s if (s == 2) != want => {
+                            return Err(TopologyError::NonOrientable(members.len()));
+                        }
+                        _ => {}
                     }
                 }
             }
             components.push(members);
         }
+        let flip = state.iter().map(|&s| s == 2).collect();
         Ok(Self {
             components,
             flip,

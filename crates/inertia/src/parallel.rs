@@ -129,6 +129,15 @@ pub(crate) fn map_pieces<I: Send, T: Send>(
     })
 }
 
+/// Whether `test` holds for any of `items`, on the machine's cores for
+/// large slices.
+pub(crate) fn any<I: Sync>(items: &[I], test: impl Fn(&I) -> bool + Sync) -> bool {
+    let parts = threads_for(items.len());
+    map_ranges(items.len(), parts, 1, |r| items[r].iter().any(&test))
+        .into_iter()
+        .any(|found| found)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -165,5 +174,8 @@ mod tests {
         assert_eq!(starts.iter().map(|s| s.1).sum::<usize>(), 1000);
         assert!(starts.windows(2).all(|w| w[0].0 + w[0].1 == w[1].0));
         assert!(items.iter().enumerate().all(|(i, &x)| x == 2 * i));
+        let big: Vec<usize> = (0..PARALLEL_MIN * 3).collect();
+        assert!(any(&big, |&x| x == PARALLEL_MIN * 3 - 1));
+        assert!(!any(&big, |&x| x == PARALLEL_MIN * 3));
     }
 }
