@@ -477,6 +477,9 @@ impl Topology {
     }
 }
 
+/// Triangles per partial sum of a surface's signed volume.
+const VOLUME_BLOCK: usize = 4096;
+
 /// Checks closure and orients the triangles in place (none has a repeated
 /// index); on an error they are left as they were.
 fn orient(
@@ -508,14 +511,21 @@ fn orient_as(
     }
     let origin = vertices[0];
     let consistent: &[[u32; 3]] = triangles;
+    // Only its sign is used. Summed in blocks of members on the machine's
+    // cores, the blocks' sums added in order: the same on any thread count.
     let signed_volume = |members: &[u32]| -> f64 {
-        members
-            .iter()
-            .map(|&t| {
-                let [a, b, c] = consistent[t as usize].map(|i| vertices[i as usize] - origin);
-                a.dot(b.cross(c))
-            })
-            .sum()
+        let tet = |&t: &u32| {
+            let [a, b, c] = consistent[t as usize].map(|i| vertices[i as usize] - origin);
+            a.dot(b.cross(c))
+        };
+        let threads = threads_for(members.len());
+        let blocks = map_ranges(members.len(), threads, VOLUME_BLOCK, |r| {
+            members[r]
+                .chunks(VOLUME_BLOCK)
+                .map(|block| block.iter().map(tet).sum::<f64>())
+                .collect::<Vec<f64>>()
+        });
+        blocks.iter().flatten().sum()
     };
     // Turn a surface with negative volume outwards, unless another surface
     // encloses it (then it bounds a cavity and points inwards on purpose).

@@ -454,9 +454,12 @@ impl TriMesh {
             };
             return Ok((mesh, unchanged));
         };
-        for t in &mut triangles {
-            *t = t.map(|i| new_index[i as usize]);
-        }
+        let threads = threads_for(triangles.len());
+        map_slices(&mut triangles, threads, 1, |_, part| {
+            for t in part {
+                *t = t.map(|i| new_index[i as usize]);
+            }
+        });
         Ok((TriMesh::from_checked_parts(kept, triangles), report))
     }
 }
