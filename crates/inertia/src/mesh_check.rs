@@ -134,7 +134,7 @@ fn drop_degenerate(mesh: TriMesh) -> (TriMesh, usize) {
     (TriMesh::from_checked_parts(vertices, triangles), dropped)
 }
 
-/// The midpoint of the edge of an [`EdgeUse`] key.
+/// The midpoint of the edge of an [`EdgeUses`] key.
 fn edge_midpoint(vertices: &[DVec3], key: u64) -> DVec3 {
     let (low, high) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
     0.5 * (vertices[low] + vertices[high])

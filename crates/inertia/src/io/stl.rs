@@ -15,7 +15,11 @@
 //! a few triangles apart, as in files written in surface order) the table
 //! only keeps its cache of recent vertices, and the few repeats it misses
 //! are merged by the weld's tolerance pass; a file without locality settles
-//! it into a full hash table (see [`SETTLE`]).
+//! it into a full hash table (see [`SETTLE`]). From
+//! [`crate::parallel::PARALLEL_MIN`] triangles the records are read in
+//! contiguous parts on the machine's cores, each part through its own file
+//! handle into its own table, and the parts joined in order (see
+//! [`read_parts`]): the welded mesh is the same on any number of threads.
 //!
 //! ASCII: `solid [name]`, facets of `facet normal …`, `outer loop`, three
 //! (or more, fan-triangulated) `vertex x y z` lines, `endloop`, `endfacet`,
