@@ -22,12 +22,24 @@ pub(crate) const PARALLEL_MIN: usize = 1 << 15;
 const MAX_THREADS: usize = 8;
 
 /// Threads for a job of `n` items: 1 below [`PARALLEL_MIN`], else the
-/// machine's available parallelism (at most [`MAX_THREADS`]).
+/// environment variable `KREISEL_THREADS` if it is a positive number (as
+/// `RAYON_NUM_THREADS`: e.g. `1` on a machine whose cores are busy with
+/// other work, where threads only add their overhead), else the machine's
+/// available parallelism, at most [`MAX_THREADS`].
 pub(crate) fn threads_for(n: usize) -> usize {
     if n < PARALLEL_MIN {
         return 1;
     }
-    std::thread::available_parallelism().map_or(1, |p| p.get().min(MAX_THREADS))
+    static THREADS: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *THREADS.get_or_init(|| {
+        let machine = std::thread::available_parallelism().map_or(1, |p| p.get());
+        std::env::var("KREISEL_THREADS")
+            .ok()
+            .and_then(|v| v.trim().parse::<usize>().ok())
+            .filter(|&t| t > 0)
+            .unwrap_or(machine)
+            .min(MAX_THREADS)
+    })
 }
 
 /// `0..n` cut into at most `parts` contiguous, non-empty ranges in order,
