@@ -440,7 +440,10 @@ impl Topology {
             if state[seed] != 0 {
                 continue;
             }
-            let mut members = vec![seed as u32];
+            // The first surface is usually the whole mesh: room for all of
+            // it at once rather than growing by copies (given back below).
+            let mut members = Vec::with_capacity(if seed == 0 { n } else { 1 });
+            members.push(seed as u32);
             state[seed] = 1;
             let mut next = 0;
             while next < members.len() {
@@ -465,6 +468,9 @@ impl Topology {
                         _ => {}
                     }
                 }
+            }
+            if seed == 0 {
+                members.shrink_to_fit();
             }
             components.push(members);
         }

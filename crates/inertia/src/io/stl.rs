@@ -250,6 +250,11 @@ fn read_parts(
 ) -> Result<Parsed, ReadError> {
     let parts = map_ranges(n, threads, CHUNK, |records| {
         let mut soup = Soup::new(records.start, records.len());
+        if records.start == 0 {
+            // The first part's triangles become the whole list: room for
+            // all (untouched memory costs nothing until the join writes it).
+            soup.triangles.reserve_exact(n - records.len());
+        }
         read(records, &mut soup).map(|()| soup)
     });
     // The first failure in file order is the one a single thread meets.
@@ -292,11 +297,15 @@ fn read_parts(
     let total: usize = soups.iter().map(|s| s.table.len()).sum();
     vertex_index(total).map_err(ReadError::Bad)?;
     let mut vertices = Vec::with_capacity(total);
-    let mut triangles = Vec::with_capacity(n);
+    let mut triangles = Vec::new();
     for soup in soups {
         // Fewer than u32::MAX vertices in all (checked above).
         let offset = vertices.len() as u32;
-        triangles.extend(soup.triangles.iter().map(|t| t.map(|i| i + offset)));
+        if offset == 0 {
+            triangles = soup.triangles;
+        } else {
+            triangles.extend(soup.triangles.iter().map(|t| t.map(|i| i + offset)));
+        }
         soup.table.append_vertices_to(&mut vertices);
     }
     Ok(Parsed {
