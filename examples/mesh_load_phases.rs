@@ -1,7 +1,10 @@
 //! Where the time of `kreisel inertia FILE` goes, phase by phase, in ns per
 //! triangle of CPU time (this thread's, from `/proc/thread-self/schedstat`,
 //! so waiting for a core on a busy machine is not counted; wall clock where
-//! that file does not exist).
+//! that file does not exist). From 32768 triangles the phases also run
+//! parts of their work on the machine's other cores (`crates/inertia/src/
+//! parallel.rs`), whose time this thread's figure leaves out: it is about
+//! the critical path, the wall time on an idle machine.
 //!
 //! ```text
 //! cargo run --release --example mesh_load_phases -- FILE...

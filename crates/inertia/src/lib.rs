@@ -18,6 +18,7 @@
 #![deny(unsafe_code)]
 
 mod convex_hull;
+mod edge_uses;
 mod error;
 #[cfg(feature = "formats")]
 pub mod io;
@@ -27,6 +28,7 @@ mod mesh_format;
 mod mesh_integration;
 mod mesh_mass;
 mod mesh_unit;
+mod parallel;
 #[cfg(feature = "parry")]
 mod parry_interop;
 mod primitives;

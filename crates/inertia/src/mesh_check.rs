@@ -18,10 +18,14 @@
 //! welding) have no edges to share and are dropped first.
 
 use core::fmt;
+use std::sync::atomic::Ordering::Relaxed;
+use std::sync::atomic::{AtomicBool, AtomicU32};
 
 use glam::DVec3;
 
+use crate::edge_uses::{EdgeUses, use_triangle};
 use crate::mesh_unit::MeshUnit;
+use crate::parallel::{any, map_ranges, threads_for};
 use crate::{InertiaError, TriMesh};
 
 /// Something found in a mesh and repaired; the result is still exact.
@@ -86,69 +90,6 @@ pub struct CheckedMesh {
     pub warnings: Vec<MeshWarning>,
 }
 
-/// Every undirected edge use, grouped by edge: a counting sort by the low
-/// vertex, then each (short) bucket sorted by high vertex and triangle.
-/// A use is `(high << 32) | triangle`; 8 bytes per use, 24 per triangle.
-struct EdgeUses {
-    /// Where the uses whose low vertex is `v` start; `vertices + 1` entries.
-    start: Vec<usize>,
-    /// The uses, bucket by bucket.
-    uses: Vec<u64>,
-}
-
-impl EdgeUses {
-    /// Groups the edges of `triangles` (indices below `vertices`, none repeated
-    /// within a triangle).
-    fn new(triangles: &[[u32; 3]], vertices: usize) -> Self {
-        let low = |tri: &[u32; 3], k: usize| tri[k].min(tri[(k + 1) % 3]) as usize;
-        let mut start = vec![0usize; vertices + 1];
-        for tri in triangles {
-            for k in 0..3 {
-                start[low(tri, k) + 1] += 1;
-            }
-        }
-        // Inclusive prefix sums: start[v + 1] ends bucket v.
-        let mut sum = 0;
-        for s in &mut start {
-            sum += *s;
-            *s = sum;
-        }
-        // Fill each bucket from its end, so start[v + 1] ends at its beginning.
-        let mut uses = vec![0u64; 3 * triangles.len()];
-        for (t, tri) in triangles.iter().enumerate().rev() {
-            for k in (0..3).rev() {
-                let high = tri[k].max(tri[(k + 1) % 3]);
-                let end = &mut start[low(tri, k) + 1];
-                *end -= 1;
-                uses[*end] = (u64::from(high) << 32) | t as u64;
-            }
-        }
-        // Bucket v begins at start[v + 1]: shift it to start[v].
-        start.rotate_left(1);
-        start[vertices] = uses.len();
-        for w in start.windows(2) {
-            uses[w[0]..w[1]].sort_unstable();
-        }
-        Self { start, uses }
-    }
-
-    /// Calls `f(key, group)` for every edge in `(low, high)` order, with
-    /// `key = (low << 32) | high` and the group's uses.
-    fn for_each_edge(&self, mut f: impl FnMut(u64, &[u64])) {
-        for (low, w) in self.start.windows(2).enumerate() {
-            let bucket = &self.uses[w[0]..w[1]];
-            for group in bucket.chunk_by(|x, y| x >> 32 == y >> 32) {
-                f(((low as u64) << 32) | (group[0] >> 32), group);
-            }
-        }
-    }
-}
-
-/// The triangle of an edge use.
-fn use_triangle(u: u64) -> usize {
-    (u & 0xFFFF_FFFF) as usize
-}
-
 /// Which edge slot `k` (from `tri[k]` to `tri[k + 1]`) of `tri` joins the
 /// ends of `key`, and whether it runs from low to high.
 fn edge_slot(tri: [u32; 3], key: u64) -> (usize, bool) {
@@ -193,7 +134,7 @@ fn drop_degenerate(mesh: TriMesh) -> (TriMesh, usize) {
     (TriMesh::from_checked_parts(vertices, triangles), dropped)
 }
 
-/// The midpoint of the edge of an [`EdgeUse`] key.
+/// The midpoint of the edge of an [`EdgeUses`] key.
 fn edge_midpoint(vertices: &[DVec3], key: u64) -> DVec3 {
     let (low, high) = ((key >> 32) as usize, (key & 0xFFFF_FFFF) as usize);
     0.5 * (vertices[low] + vertices[high])
@@ -321,7 +262,10 @@ fn in_own_unit(
 fn prepare_solid_as_is(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
     let (vertices, mut triangles, known) = mesh.into_parts_and_topology();
     let before = triangles.len();
-    triangles.retain(|&t| !collapsed(t));
+    // Found on the machine's cores; removed (rarely) on this thread.
+    if any(&triangles, |&t| collapsed(t)) {
+        triangles.retain(|&t| !collapsed(t));
+    }
     let collapsed_count = before - triangles.len();
     if triangles.is_empty() {
         return Err(InertiaError::EmptyMesh {
@@ -348,7 +292,9 @@ fn prepare_solid_as_is(mesh: TriMesh) -> Result<CheckedMesh, InertiaError> {
         }
     };
     let kept = triangles.len();
-    triangles.retain(|&t| !zero_area(&vertices, t));
+    if any(&triangles, |&t| zero_area(&vertices, t)) {
+        triangles.retain(|&t| !zero_area(&vertices, t));
+    }
     let degenerate = collapsed_count + (before - collapsed_count - kept) + (kept - triangles.len());
     if degenerate > 0 {
         warnings.insert(0, MeshWarning::DegenerateTriangles { count: degenerate });
@@ -406,6 +352,36 @@ impl TopologyError {
     }
 }
 
+/// The neighbours of one triangle across its edges `k` (from `tri[k]` to
+/// `tri[k + 1]`), where exactly two triangles share the edge, and whether
+/// the neighbour runs along it in the same direction (then exactly one of
+/// the two is to be flipped). Atomic so that the threads of the edge pass
+/// can fill it; each slot is written once.
+struct Across {
+    /// The neighbour, `u32::MAX` for none.
+    triangle: [AtomicU32; 3],
+    same: [AtomicBool; 3],
+}
+
+impl Across {
+    fn none() -> Self {
+        Self {
+            triangle: [const { AtomicU32::new(u32::MAX) }; 3],
+            same: [const { AtomicBool::new(false) }; 3],
+        }
+    }
+
+    fn set(&self, k: usize, neighbour: u32, same: bool) {
+        self.triangle[k].store(neighbour, Relaxed);
+        self.same[k].store(same, Relaxed);
+    }
+
+    fn get(&self, k: usize) -> Option<(u32, bool)> {
+        let t = self.triangle[k].load(Relaxed);
+        (t != u32::MAX).then(|| (t, self.same[k].load(Relaxed)))
+    }
+}
+
 impl Topology {
     /// The topology of triangles that [`prepare_solid`] would check as they
     /// are (none repeats a vertex index), if they are closed and orientable;
@@ -420,70 +396,85 @@ impl Topology {
     /// Closure and a consistent winding of triangles without a repeated index.
     fn of(triangles: &[[u32; 3]], vertices: usize) -> Result<Self, TopologyError> {
         let n = triangles.len();
-        // The neighbour across edge k (from tri[k] to tri[k + 1]) of each
-        // triangle when exactly two triangles share that edge, else u32::MAX.
-        let mut neighbours = vec![[u32::MAX; 3]; n];
-        let mut boundary = Vec::new();
-        let mut shared_edges = 0;
+        // The neighbour across each edge of each triangle, found on the
+        // machine's cores, each thread the edges of its low vertices (every
+        // edge once, so no two threads write the same place; relaxed atomic
+        // stores and loads are plain ones on x86).
+        let across: Vec<Across> = (0..n).map(|_| Across::none()).collect();
         let uses = EdgeUses::new(triangles, vertices);
-        uses.for_each_edge(|key, group| match *group {
-            [_] => boundary.push(key),
-            [u, w] => {
-                let (tu, tw) = (use_triangle(u), use_triangle(w));
-                let (ku, _) = edge_slot(triangles[tu], key);
-                let (kw, _) = edge_slot(triangles[tw], key);
-                // Triangle counts fit in u32: indices are u32.
-                neighbours[tu][ku] = tw as u32;
-                neighbours[tw][kw] = tu as u32;
+        let lows = uses.vertex_ranges(threads_for(n));
+        let parts = map_ranges(lows.len(), lows.len(), 1, |r| {
+            let (mut boundary, mut shared_edges) = (Vec::new(), 0);
+            for lows in &lows[r] {
+                uses.for_each_edge_in(lows.clone(), |key, group| match *group {
+                    [_] => boundary.push(key),
+                    [u, w] => {
+                        let (tu, tw) = (use_triangle(u), use_triangle(w));
+                        let (ku, forward_u) = edge_slot(triangles[tu], key);
+                        let (kw, forward_w) = edge_slot(triangles[tw], key);
+                        // Triangle counts fit in u32: indices are u32.
+                        across[tu].set(ku, tw as u32, forward_u == forward_w);
+                        across[tw].set(kw, tu as u32, forward_u == forward_w);
+                    }
+                    // Orientation does not propagate across these (which pairs?);
+                    // they are checked once every surface is oriented.
+                    _ => shared_edges += 1,
+                });
             }
-            // Orientation does not propagate across these (which pairs?);
-            // they are checked once every surface is oriented.
-            _ => shared_edges += 1,
+            (boundary, shared_edges)
         });
         drop(uses);
+        // In edge order, as one thread finds them.
+        let boundary: Vec<u64> = parts.iter().flat_map(|p| p.0.iter().copied()).collect();
+        let shared_edges: usize = parts.iter().map(|p| p.1).sum();
         if !boundary.is_empty() {
             return Err(TopologyError::Open(boundary));
         }
 
         // Orient each connected surface consistently, flipping the minority.
-        let mut component = vec![u32::MAX; n];
-        let mut flip = vec![false; n];
+        // Per triangle: not reached yet (0), reached as it is (1) or to be
+        // flipped (2).
+        let mut state = vec![0u8; n];
         let mut components: Vec<Vec<u32>> = Vec::new();
         for seed in 0..n {
-            if component[seed] != u32::MAX {
+            if state[seed] != 0 {
                 continue;
             }
-            let id = components.len() as u32;
-            let mut members = vec![seed as u32];
-            component[seed] = id;
+            // The first surface is usually the whole mesh: room for all of
+            // it at once rather than growing by copies (given back below).
+            let mut members = Vec::with_capacity(if seed == 0 { n } else { 1 });
+            members.push(seed as u32);
+            state[seed] = 1;
             let mut next = 0;
             while next < members.len() {
                 let t = members[next] as usize;
                 next += 1;
-                for (k, &u) in neighbours[t].iter().enumerate() {
-                    if u == u32::MAX {
+                let flip_t = state[t] == 2;
+                for k in 0..3 {
+                    let Some((u, same)) = across[t].get(k) else {
                         continue;
-                    }
-                    let u = u as usize;
-                    let tri = triangles[t];
-                    let key = {
-                        let (a, b) = (tri[k], tri[(k + 1) % 3]);
-                        (u64::from(a.min(b)) << 32) | u64::from(a.max(b))
                     };
-                    let same = edge_slot(triangles[u], key).1 == (tri[k] < tri[(k + 1) % 3]);
+                    let u = u as usize;
                     // Neighbours must traverse the shared edge in opposite directions.
-                    let want = flip[t] ^ same;
-                    if component[u] == u32::MAX {
-                        component[u] = id;
-                        flip[u] = want;
-                        members.push(u as u32);
-                    } else if flip[u] != want {
-                        return Err(TopologyError::NonOrientable(members.len()));
+                    let want = flip_t ^ same;
+                    match state[u] {
+                        0 => {
+                            state[u] = 1 + u8::from(want);
+                            members.push(u as u32);
+                        }
+                        s if (s == 2) != want => {
+                            return Err(TopologyError::NonOrientable(members.len()));
+                        }
+                        _ => {}
                     }
                 }
             }
+            if seed == 0 {
+                members.shrink_to_fit();
+            }
             components.push(members);
         }
+        let flip = state.iter().map(|&s| s == 2).collect();
         Ok(Self {
             components,
             flip,
@@ -491,6 +482,9 @@ impl Topology {
         })
     }
 }
+
+/// Triangles per partial sum of a surface's signed volume.
+const VOLUME_BLOCK: usize = 4096;
 
 /// Checks closure and orients the triangles in place (none has a repeated
 /// index); on an error they are left as they were.
@@ -523,14 +517,21 @@ fn orient_as(
     }
     let origin = vertices[0];
     let consistent: &[[u32; 3]] = triangles;
+    // Only its sign is used. Summed in blocks of members on the machine's
+    // cores, the blocks' sums added in order: the same on any thread count.
     let signed_volume = |members: &[u32]| -> f64 {
-        members
-            .iter()
-            .map(|&t| {
-                let [a, b, c] = consistent[t as usize].map(|i| vertices[i as usize] - origin);
-                a.dot(b.cross(c))
-            })
-            .sum()
+        let tet = |&t: &u32| {
+            let [a, b, c] = consistent[t as usize].map(|i| vertices[i as usize] - origin);
+            a.dot(b.cross(c))
+        };
+        let threads = threads_for(members.len());
+        let blocks = map_ranges(members.len(), threads, VOLUME_BLOCK, |r| {
+            members[r]
+                .chunks(VOLUME_BLOCK)
+                .map(|block| block.iter().map(tet).sum::<f64>())
+                .collect::<Vec<f64>>()
+        });
+        blocks.iter().flatten().sum()
     };
     // Turn a surface with negative volume outwards, unless another surface
     // encloses it (then it bounds a cavity and points inwards on purpose).

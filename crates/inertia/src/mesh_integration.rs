@@ -4,7 +4,8 @@
 use glam::{DMat3, DVec3};
 
 use crate::mass_properties::check_positive;
-use crate::solid_kernel::{Sums, solid_sums};
+use crate::parallel::{map_ranges, threads_for};
+use crate::solid_kernel::{Sums, add_in_order, solid_sums};
 use crate::{InertiaError, MassProperties, TriMesh};
 
 /// Triangles summed into one partial sum before it is added to the total,
@@ -27,13 +28,6 @@ pub struct MeshMoments {
     pub first: DVec3,
     /// Second moment `∫ r rᵀ` (symmetric).
     pub second: DMat3,
-}
-
-#[inline]
-fn add(total: &mut Sums, part: &Sums) {
-    for (t, p) in total.iter_mut().zip(part) {
-        *t += p;
-    }
 }
 
 /// Accumulates one triangle's weight `w` and corners (relative to the origin).
@@ -62,22 +56,45 @@ fn reference_point(mesh: &TriMesh) -> DVec3 {
     first + sum / v.len() as f64
 }
 
-/// Sums `weight(a, b, c)` and the moments over all triangles, blockwise.
-fn integrate(mesh: &TriMesh, weight: impl Fn(DVec3, DVec3, DVec3) -> f64) -> (DVec3, Sums) {
+/// Sums `weight(a, b, c)` and the moments over all triangles, blockwise,
+/// on the machine's cores from [`crate::parallel::PARALLEL_MIN`] triangles
+/// (the same bits on any number of threads: see [`integrate_on`]).
+fn integrate(mesh: &TriMesh, weight: impl Fn(DVec3, DVec3, DVec3) -> f64 + Sync) -> (DVec3, Sums) {
+    let threads = threads_for(mesh.triangles().len());
+    integrate_on(mesh, weight, threads)
+}
+
+/// [`integrate`] on at most `threads` threads: each block of [`BLOCK`]
+/// triangles is summed alone and the blocks' sums are added in block order.
+fn integrate_on(
+    mesh: &TriMesh,
+    weight: impl Fn(DVec3, DVec3, DVec3) -> f64 + Sync,
+    threads: usize,
+) -> (DVec3, Sums) {
     let origin = reference_point(mesh);
     let v = mesh.vertices();
-    let mut total = [0.0; 10];
-    for block in mesh.triangles().chunks(BLOCK) {
-        let mut acc = [0.0; 10];
-        for &[i, j, k] in block {
-            let a = v[i as usize] - origin;
-            let b = v[j as usize] - origin;
-            let c = v[k as usize] - origin;
-            accumulate(&mut acc, weight(a, b, c), a, b, c);
-        }
-        add(&mut total, &acc);
-    }
-    (origin, total)
+    let triangles = mesh.triangles();
+    let partials = map_ranges(triangles.len(), threads, BLOCK, |r| {
+        triangles[r]
+            .chunks(BLOCK)
+            .map(|block| {
+                let mut acc = [0.0; 10];
+                for &[i, j, k] in block {
+                    let a = v[i as usize] - origin;
+                    let b = v[j as usize] - origin;
+                    let c = v[k as usize] - origin;
+                    accumulate(&mut acc, weight(a, b, c), a, b, c);
+                }
+                acc
+            })
+            .collect::<Vec<Sums>>()
+    });
+    (origin, add_in_order(partials.iter().flatten()))
+}
+
+/// A triangle's weight in [`MeshMoments::shell`]: `|n| = 2A`.
+fn doubled_area(a: DVec3, b: DVec3, c: DVec3) -> f64 {
+    (b - a).cross(c - a).length()
 }
 
 fn moments(origin: DVec3, sums: &Sums, zeroth: f64, first: f64, second: f64) -> MeshMoments {
@@ -146,7 +163,7 @@ impl MeshMoments {
     /// assert!((m.zeroth - 1.0).abs() < 1e-16);
     /// ```
     pub fn shell(mesh: &TriMesh) -> Self {
-        let (origin, sums) = integrate(mesh, |a, b, c| (b - a).cross(c - a).length());
+        let (origin, sums) = integrate(mesh, doubled_area);
         // A = |n|/2:  zeroth Σ|n|/2,  first Σ|n| s/6,  second Σ|n| (…)/24.
         moments(origin, &sums, 0.5, 1.0 / 6.0, 1.0 / 24.0)
     }
@@ -255,5 +272,43 @@ mod tests {
             MeshMoments::solid(&flipped).mass_properties(1.0),
             Err(InertiaError::ZeroVolume)
         ));
+    }
+
+    /// The shell's sums on any number of threads are those of one thread
+    /// adding block after block (as before they were parallel).
+    #[test]
+    fn shell_sums_do_not_depend_on_the_thread_count() {
+        let v: Vec<DVec3> = (0..2000)
+            .map(|i| {
+                let t = f64::from(i);
+                DVec3::new((0.37 * t).sin(), (1.3 * t).cos(), 1e3 + (0.71 * t).sin())
+            })
+            .collect();
+        let tris: Vec<[u32; 3]> = (0..4321u32)
+            .map(|i| [i % 2000, (7 * i + 1) % 2000, (13 * i + 5) % 2000])
+            .collect();
+        let mesh = TriMesh::new(v, tris);
+        let origin = reference_point(&mesh);
+        let v = mesh.vertices();
+        let mut one = [0.0; 10];
+        for block in mesh.triangles().chunks(BLOCK) {
+            let mut acc = [0.0; 10];
+            for &[i, j, k] in block {
+                let (a, b, c) = (
+                    v[i as usize] - origin,
+                    v[j as usize] - origin,
+                    v[k as usize] - origin,
+                );
+                accumulate(&mut acc, doubled_area(a, b, c), a, b, c);
+            }
+            for (t, p) in one.iter_mut().zip(acc) {
+                *t += p;
+            }
+        }
+        for threads in [1, 2, 3, 5, 64] {
+            let (o, many) = integrate_on(&mesh, doubled_area, threads);
+            assert_eq!(o, origin);
+            assert_eq!(many.map(f64::to_bits), one.map(f64::to_bits), "{threads}");
+        }
     }
 }

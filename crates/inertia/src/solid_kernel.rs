@@ -14,6 +14,8 @@
 
 use glam::DVec3;
 
+use crate::parallel::{map_ranges, threads_for};
+
 /// Triangles summed into one partial sum before it is added to the total,
 /// so rounding errors grow like `n/B + B` instead of `n`.
 const BLOCK: usize = 512;
@@ -313,9 +315,42 @@ mod avx512 {
 }
 
 /// The ten sums of a mesh's triangles about `origin` (every index must be
-/// in range for `v`; [`crate::TriMesh`] guarantees it).
-#[allow(unsafe_code)]
+/// in range for `v`; [`crate::TriMesh`] guarantees it), on the machine's
+/// cores from [`crate::parallel::PARALLEL_MIN`] triangles.
+///
+/// The same bits on any number of threads: each block of [`BLOCK`]
+/// triangles is summed alone (the SIMD builds sum block by block anyway),
+/// and the blocks' sums are added in block order.
 pub(crate) fn solid_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
+    solid_sums_on(v, origin, triangles, threads_for(triangles.len()))
+}
+
+/// [`solid_sums`] on at most `threads` threads.
+fn solid_sums_on(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]], threads: usize) -> Sums {
+    let partials = map_ranges(triangles.len(), threads, BLOCK, |r| {
+        triangles[r]
+            .chunks(BLOCK)
+            .map(|block| block_sums(v, origin, block))
+            .collect::<Vec<Sums>>()
+    });
+    add_in_order(partials.iter().flatten())
+}
+
+/// Block sums added in the order given, starting from zero.
+pub(crate) fn add_in_order<'a>(partials: impl Iterator<Item = &'a Sums>) -> Sums {
+    let mut total = [0.0; 10];
+    for part in partials {
+        for (t, p) in total.iter_mut().zip(part) {
+            *t += p;
+        }
+    }
+    total
+}
+
+/// The sums of one block (or of several, added block by block) on this
+/// thread, in the fastest build the CPU runs.
+#[allow(unsafe_code)]
+fn block_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
     #[cfg(target_arch = "x86_64")]
     {
         use std::arch::is_x86_feature_detected as has;
@@ -396,6 +431,27 @@ mod tests {
             for (x, y) in fast.iter().zip(&direct) {
                 assert!((x - y).abs() < 1e-13 * y.abs().max(1.0), "{x} vs {y}");
             }
+        }
+    }
+
+    /// Any number of threads gives the bits of one thread summing every
+    /// block in order (the build of the sums before they were parallel).
+    #[test]
+    fn sums_do_not_depend_on_the_thread_count() {
+        let v: Vec<DVec3> = (0..3001)
+            .map(|i| {
+                let t = f64::from(i);
+                DVec3::new((0.37 * t).sin(), (1.3 * t).cos(), (0.71 * t).sin() * 2.0)
+            })
+            .collect();
+        let tris: Vec<[u32; 3]> = (0..5000u32)
+            .map(|i| [i % 3001, (7 * i + 1) % 3001, (13 * i + 5) % 3001])
+            .collect();
+        let origin = DVec3::new(0.1, -0.2, 0.3);
+        let one = block_sums(&v, origin, &tris);
+        for threads in [1, 2, 3, 4, 7, 64] {
+            let many = solid_sums_on(&v, origin, &tris, threads);
+            assert_eq!(many.map(f64::to_bits), one.map(f64::to_bits), "{threads}");
         }
     }
 }

@@ -6,6 +6,7 @@ use glam::DVec3;
 
 use crate::InertiaError;
 use crate::mesh_check::Topology;
+use crate::parallel::any;
 
 /// A triangle mesh: vertex positions and triangles as vertex-index triples.
 ///
@@ -68,11 +69,21 @@ impl TriMesh {
                 triangles: triangles.len(),
             });
         }
-        if let Some(vertex) = vertices.iter().position(|v| !v.is_finite()) {
+        // Looked for on the machine's cores; the first one found on this
+        // thread (rarely).
+        if any(&vertices, |v| !v.is_finite())
+            && let Some(vertex) = vertices.iter().position(|v| !v.is_finite())
+        {
             return Err(InertiaError::NonFiniteVertex { vertex });
         }
         let n = vertices.len();
-        for (triangle, t) in triangles.iter().enumerate() {
+        let out_of_range = |t: &[u32; 3]| t.iter().any(|&i| i as usize >= n);
+        let bad = if any(&triangles, out_of_range) {
+            &triangles[..]
+        } else {
+            &[]
+        };
+        for (triangle, t) in bad.iter().enumerate() {
             if let Some(&index) = t.iter().find(|&&i| i as usize >= n) {
                 return Err(InertiaError::IndexOutOfRange {
                     triangle,
@@ -420,5 +431,26 @@ mod tests {
         let mesh = TriMesh::new(v, vec![[0, 2, 3], [1, 3, 2]]).merge_duplicate_vertices();
         assert_eq!(mesh.vertices().len(), 3);
         assert_eq!(mesh.triangles(), &[[0, 1, 2], [0, 2, 1]]);
+    }
+
+    #[test]
+    fn large_meshes_name_their_first_bad_vertex_and_index() {
+        // Large enough to be searched on several threads.
+        let n = 3 * crate::parallel::PARALLEL_MIN;
+        let mut v: Vec<DVec3> = (0..n).map(|i| DVec3::splat(i as f64)).collect();
+        let mut t: Vec<[u32; 3]> = (0..n as u32).map(|i| [i, i, i]).collect();
+        t[n - 10][1] = n as u32 + 5;
+        t[n / 2 + 1][2] = n as u32;
+        assert!(matches!(
+            TriMesh::try_new(v.clone(), t.clone()),
+            Err(InertiaError::IndexOutOfRange { triangle, index, .. })
+                if triangle == n / 2 + 1 && index == n as u64
+        ));
+        v[n - 1].y = f64::NAN;
+        v[n / 3].z = f64::INFINITY;
+        assert!(matches!(
+            TriMesh::try_new(v, t),
+            Err(InertiaError::NonFiniteVertex { vertex }) if vertex == n / 3
+        ));
     }
 }

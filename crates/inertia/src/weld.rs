@@ -37,12 +37,8 @@ use glam::DVec3;
 
 use crate::mesh_check::Topology;
 use crate::mesh_unit::{MeshUnit, bounds, ldexp};
+use crate::parallel::{PARALLEL_MIN, map_slices, threads_for};
 use crate::{InertiaError, TriMesh};
-
-/// Triangles from which the check's topology is found on a second thread
-/// while the tolerance pass runs (below, starting the thread costs more
-/// than it saves).
-const PARALLEL_MIN: usize = 1 << 15;
 
 /// Default relative weld tolerance: `1e-6 ×` the bounding-box diagonal.
 ///
@@ -226,6 +222,53 @@ fn find(parent: &mut [u32], mut i: u32) -> u32 {
     i
 }
 
+/// A vertex in the sweep of [`weld_near`]: its projection on the sweep
+/// direction (as [`ordered`] bits) and its index, the sort key; and its
+/// projection on a second direction rounded to `f32`, a filter that rules
+/// out most candidate pairs before their vertices (in random places of
+/// memory) are loaded.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+struct Projected {
+    key: u64,
+    index: u32,
+    side: f32,
+}
+
+/// Every vertex [`Projected`] on `d` and `e`, sorted by key and index, and
+/// the largest `|v · d|` and `|v · e|`, on up to `threads` threads: each
+/// sorts its part, then one merge of the sorted runs (the stable sort finds
+/// them). Keys and indices together are unique, so the order is the same on
+/// any number of threads.
+fn projection_order(
+    vertices: &[DVec3],
+    (d, e): (DVec3, DVec3),
+    threads: usize,
+) -> (Vec<Projected>, f64, f64) {
+    let mut order = vec![Projected::default(); vertices.len()];
+    let largest = map_slices(&mut order, threads, 1, |first, part| {
+        let (mut largest, mut largest_side): (f64, f64) = (0.0, 0.0);
+        for (k, (o, v)) in part.iter_mut().zip(&vertices[first..]).enumerate() {
+            let (p, q) = (v.dot(d), v.dot(e));
+            largest = largest.max(p.abs());
+            largest_side = largest_side.max(q.abs());
+            *o = Projected {
+                key: ordered(p),
+                index: (first + k) as u32,
+                side: q as f32,
+            };
+        }
+        part.sort_unstable_by_key(|p| (p.key, p.index));
+        (largest, largest_side)
+    });
+    if threads > 1 {
+        order.sort_by_key(|p| (p.key, p.index));
+    }
+    let (largest, largest_side) = largest.into_iter().fold((0.0, 0.0), |(a, b), (x, y)| {
+        (f64::max(a, x), f64::max(b, y))
+    });
+    (order, largest, largest_side)
+}
+
 /// Vertices within `tol` merged: the new index of each vertex, the
 /// vertices kept (from `original`) and the report; `None` when nothing is
 /// within `tol`. Distances are measured in `vertices` (the original ones in
@@ -243,32 +286,34 @@ fn weld_near(
     // An oblique direction, so that the axis-aligned planes of CAD meshes
     // do not put many vertices at one projection.
     let d = DVec3::new(1.0, 0.754_877_666_246_692_7, 0.569_840_290_998_053_3);
-    let mut largest: f64 = 0.0;
-    let mut order: Vec<(u64, u32)> = vertices
-        .iter()
-        .enumerate()
-        .map(|(i, v)| {
-            let p = v.dot(d);
-            largest = largest.max(p.abs());
-            (ordered(p), i as u32)
-        })
-        .collect();
+    // Another oblique direction, far from parallel to d, for the filter.
+    let e = DVec3::new(-0.569_840_290_998_053_3, 1.0, -0.754_877_666_246_692_7);
+    let (order, largest, largest_side) =
+        projection_order(vertices, (d, e), threads_for(vertices.len()));
     // Projections of points within `tol` differ by at most `tol |d|`, plus
     // the rounding of the two dot products.
     let reach = tol * d.length() * (1.0 + 1e-12) + 8.0 * f64::EPSILON * largest;
-    order.sort_unstable_by_key(|&(k, _)| k);
+    // The same on e, plus the rounding of both to f32 (half an f32 ulp
+    // each, or half the smallest subnormal), twice over.
+    let reach_side = tol * e.length() * (1.0 + 1e-12)
+        + 8.0 * f64::EPSILON * largest_side
+        + 2.0 * f64::from(f32::EPSILON) * largest_side
+        + 2.0 * f64::from(f32::MIN_POSITIVE);
     let proj = |k: u64| -> f64 { f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k }) };
     let tol2 = tol * tol;
     let mut parent: Vec<u32> = Vec::new();
     // Vertices bit-identical to one with a smaller index (only `repeats`).
     let mut repeat: Vec<bool> = Vec::new();
-    for (n, &(ki, i)) in order.iter().enumerate() {
-        let pi = proj(ki);
-        for &(kj, j) in &order[n + 1..] {
-            if proj(kj) - pi > reach {
+    for (n, a) in order.iter().enumerate() {
+        let (pi, i) = (proj(a.key), a.index);
+        for b in &order[n + 1..] {
+            if proj(b.key) - pi > reach {
                 break;
             }
-            if vertices[i as usize].distance_squared(vertices[j as usize]) <= tol2 {
+            let j = b.index;
+            if (f64::from(b.side) - f64::from(a.side)).abs() <= reach_side
+                && vertices[i as usize].distance_squared(vertices[j as usize]) <= tol2
+            {
                 if parent.is_empty() {
                     parent = (0..vertices.len() as u32).collect();
                 }
@@ -409,9 +454,12 @@ impl TriMesh {
             };
             return Ok((mesh, unchanged));
         };
-        for t in &mut triangles {
-            *t = t.map(|i| new_index[i as usize]);
-        }
+        let threads = threads_for(triangles.len());
+        map_slices(&mut triangles, threads, 1, |_, part| {
+            for t in part {
+                *t = t.map(|i| new_index[i as usize]);
+            }
+        });
         Ok((TriMesh::from_checked_parts(kept, triangles), report))
     }
 }
@@ -555,6 +603,43 @@ mod tests {
         for t in [-1.0, f64::NAN, f64::INFINITY] {
             assert!(Weld::Absolute(t).tolerance(1.0).is_err());
             assert!(Weld::Relative(t).tolerance(1.0).is_err());
+        }
+    }
+
+    #[test]
+    fn projection_order_does_not_depend_on_the_thread_count() {
+        // Repeated and signed-zero projections among them (ties).
+        let v: Vec<DVec3> = (0..5000)
+            .map(|i| {
+                let t = f64::from(i % 1700);
+                DVec3::new((0.3 * t).sin(), if i % 3 == 0 { -0.0 } else { 0.0 }, t)
+            })
+            .collect();
+        let de = (DVec3::new(1.0, 0.75, 0.5), DVec3::new(-0.5, 1.0, -0.75));
+        let one = projection_order(&v, de, 1);
+        assert!(
+            one.0
+                .windows(2)
+                .all(|w| (w[0].key, w[0].index) < (w[1].key, w[1].index))
+        );
+        for threads in [2, 3, 8] {
+            assert_eq!(projection_order(&v, de, threads), one);
+        }
+    }
+
+    #[test]
+    fn the_side_filter_keeps_pairs_at_the_tolerance_at_every_scale() {
+        // Pairs exactly tol apart along the filter's direction, far from the
+        // origin (large projections, coarse f32 rounding) and near it.
+        for (centre, tol) in [(1e9, 1e-3), (1.0, 1e-12), (1e-30, 1e-40), (0.0, 0.0)] {
+            let e = DVec3::new(-0.569_840_290_998_053_3, 1.0, -0.754_877_666_246_692_7);
+            let p = DVec3::new(centre, -centre, 0.5 * centre);
+            let q = p + e.normalize() * tol * 0.99;
+            let far = DVec3::splat(centre + 1.0);
+            let mesh = TriMesh::new(vec![p, far, far + DVec3::X, q], vec![[0, 1, 2], [3, 2, 1]]);
+            let (welded, report) = mesh.welded(Weld::Absolute(tol)).unwrap();
+            assert_eq!(welded.vertices().len(), 3, "{centre} {tol}");
+            assert!(report.merged == 1 || p == q, "{centre} {tol}");
         }
     }
 }

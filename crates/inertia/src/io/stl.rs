@@ -15,7 +15,11 @@
 //! a few triangles apart, as in files written in surface order) the table
 //! only keeps its cache of recent vertices, and the few repeats it misses
 //! are merged by the weld's tolerance pass; a file without locality settles
-//! it into a full hash table (see [`SETTLE`]).
+//! it into a full hash table (see [`SETTLE`]). From
+//! [`crate::parallel::PARALLEL_MIN`] triangles the records are read in
+//! contiguous parts on the machine's cores, each part through its own file
+//! handle into its own table, and the parts joined in order (see
+//! [`read_parts`]): the welded mesh is the same on any number of threads.
 //!
 //! ASCII: `solid [name]`, facets of `facet normal …`, `outer loop`, three
 //! (or more, fan-triangulated) `vertex x y z` lines, `endloop`, `endfacet`,
@@ -37,6 +41,7 @@ use glam::DVec3;
 
 use super::vertex_table::VertexTable;
 use super::{Body, Source, vertex_index};
+use crate::parallel::{map_ranges, threads_for};
 use crate::weld::ExactDedup;
 use crate::{InertiaError, TriMesh};
 
@@ -51,8 +56,9 @@ pub(super) fn load(bytes: &[u8], src: &Source<'_>) -> Result<Vec<Body>, InertiaE
     let exact = count.is_some_and(|n| binary_len(n) == bytes.len() as u64);
     let solid = starts_with_solid(bytes);
     if exact && !(solid && is_text(bytes)) {
-        let soup = parse_binary(bytes).map_err(|r| src.error(r))?;
-        return binary_body(src, soup);
+        let parsed =
+            parse_binary(bytes, threads_for(bytes.len() / RECORD)).map_err(|r| src.error(r))?;
+        return binary_body(src, parsed);
     }
     if solid {
         let solids = parse_ascii(bytes).map_err(|reason| match count {
@@ -117,20 +123,29 @@ pub(super) fn load_file(src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
     if let Some(n) = binary_count(&head).filter(|&n| binary_len(n) == len)
         && is_binary(&head, &mut file).map_err(io)?
     {
-        file.seek(SeekFrom::Start(HEADER as u64)).map_err(io)?;
-        let n = n as usize;
-        let mut soup = Soup::new(n);
-        let mut buffer = vec![0; CHUNK.min(n) * RECORD];
-        let mut left = n;
-        while left > 0 {
-            let take = CHUNK.min(left);
-            let chunk = &mut buffer[..take * RECORD];
-            file.read_exact(chunk).map_err(io)?;
-            soup.push(chunk.as_chunks::<RECORD>().0)
-                .map_err(|r| src.error(r))?;
-            left -= take;
-        }
-        return binary_body(src, soup);
+        drop(file);
+        // Each part of the records is read through its own handle.
+        let parsed = read_parts(n as usize, threads_for(n as usize), |records, soup| {
+            let mut file = File::open(src.path).map_err(ReadError::Io)?;
+            let offset = HEADER as u64 + RECORD as u64 * records.start as u64;
+            file.seek(SeekFrom::Start(offset)).map_err(ReadError::Io)?;
+            let mut buffer = vec![0; CHUNK.min(records.len()) * RECORD];
+            let mut left = records.len();
+            while left > 0 {
+                let take = CHUNK.min(left);
+                let chunk = &mut buffer[..take * RECORD];
+                file.read_exact(chunk).map_err(ReadError::Io)?;
+                soup.push(chunk.as_chunks::<RECORD>().0)
+                    .map_err(ReadError::Bad)?;
+                left -= take;
+            }
+            Ok(())
+        });
+        return match parsed {
+            Ok(parsed) => binary_body(src, parsed),
+            Err(ReadError::Io(e)) => Err(io(e)),
+            Err(ReadError::Bad(reason)) => Err(src.error(reason)),
+        };
     }
     let bytes = std::fs::read(src.path).map_err(io)?;
     load(&bytes, src)
@@ -188,26 +203,129 @@ fn is_text(bytes: &[u8]) -> bool {
 }
 
 /// Reads a binary STL whose length has been checked to be `84 + 50·n`.
-fn parse_binary(bytes: &[u8]) -> Result<Soup, String> {
+fn parse_binary(bytes: &[u8], threads: usize) -> Result<Parsed, String> {
     let (records, _) = bytes
         .get(HEADER..)
         .unwrap_or_default()
         .as_chunks::<RECORD>();
-    let mut soup = Soup::new(records.len());
-    for chunk in records.chunks(CHUNK) {
-        soup.push(chunk)?;
+    read_parts(records.len(), threads, |part, soup| {
+        for chunk in records[part].chunks(CHUNK) {
+            soup.push(chunk).map_err(ReadError::Bad)?;
+        }
+        Ok(())
+    })
+    .map_err(|e| match e {
+        ReadError::Bad(reason) => reason,
+        // Nothing is read from a file here.
+        ReadError::Io(e) => e.to_string(),
+    })
+}
+
+/// Why the records could not be read: the file, or what it holds.
+enum ReadError {
+    Io(std::io::Error),
+    Bad(String),
+}
+
+/// The shared vertices and triangles of binary records.
+struct Parsed {
+    vertices: Vec<DVec3>,
+    triangles: Vec<[u32; 3]>,
+    /// Free of exact repeats (else numbered in order of first use, repeats
+    /// left to the weld).
+    unique: bool,
+}
+
+/// Records `0..n` read in up to `threads` contiguous parts of whole chunks
+/// at once, each by `read(records, soup)` into its own [`Soup`], then joined
+/// in order: the vertices of part 2 after those of part 1, and so on. Each
+/// part numbers its vertices in order of first use, so the joined list is
+/// in order of first use too, with the exact repeats between parts left to
+/// the weld's tolerance pass, which merges them as it merges a provisional
+/// table's (so the welded mesh is the same on any number of threads).
+fn read_parts(
+    n: usize,
+    threads: usize,
+    read: impl Fn(std::ops::Range<usize>, &mut Soup) -> Result<(), ReadError> + Sync,
+) -> Result<Parsed, ReadError> {
+    let parts = map_ranges(n, threads, CHUNK, |records| {
+        let mut soup = Soup::new(records.start, records.len());
+        if records.start == 0 {
+            // The first part's triangles become the whole list: room for
+            // all (untouched memory costs nothing until the join writes it).
+            soup.triangles.reserve_exact(n - records.len());
+        }
+        read(records, &mut soup).map(|()| soup)
+    });
+    // The first failure in file order is the one a single thread meets.
+    let mut soups = parts.into_iter().collect::<Result<Vec<Soup>, _>>()?;
+    if soups.len() == 1
+        && let Some(soup) = soups.pop()
+    {
+        return Ok(Parsed {
+            unique: !soup.table.is_provisional(),
+            vertices: soup.table.into_vertices(),
+            triangles: soup.triangles,
+        });
     }
-    Ok(soup)
+    let settled = soups.iter().any(|s| !s.table.is_provisional());
+    let mut parts = soups.into_iter();
+    if settled && let Some(first) = parts.next() {
+        // A file without locality: its parts' tables were settled, and the
+        // parts share most of their vertices. One table over all of them,
+        // settled, gives the numbering of one table from the start.
+        let Soup {
+            mut table,
+            mut triangles,
+            ..
+        } = first;
+        for soup in parts {
+            let offset = table.append(soup.table).map_err(ReadError::Bad)?;
+            triangles.extend(soup.triangles.iter().map(|t| t.map(|i| i + offset)));
+        }
+        let new = table.settle();
+        for t in &mut triangles {
+            *t = t.map(|i| new[i as usize]);
+        }
+        return Ok(Parsed {
+            vertices: table.into_vertices(),
+            triangles,
+            unique: true,
+        });
+    }
+    let soups: Vec<Soup> = parts.collect();
+    let total: usize = soups.iter().map(|s| s.table.len()).sum();
+    vertex_index(total).map_err(ReadError::Bad)?;
+    let mut vertices = Vec::with_capacity(total);
+    let mut triangles = Vec::new();
+    for soup in soups {
+        // Fewer than u32::MAX vertices in all (checked above).
+        let offset = vertices.len() as u32;
+        if offset == 0 {
+            triangles = soup.triangles;
+        } else {
+            triangles.extend(soup.triangles.iter().map(|t| t.map(|i| i + offset)));
+        }
+        soup.table.append_vertices_to(&mut vertices);
+    }
+    Ok(Parsed {
+        vertices,
+        triangles,
+        unique: false,
+    })
 }
 
 /// The one body of a binary file, as [`Source::body`] makes it, but marked
 /// with what the [`VertexTable`] guarantees: vertices numbered in order of
 /// first use, all used, and free of exact repeats once the table is
-/// settled; the weld then skips its exact pass (and merges the repeats of a
-/// provisional numbering in its tolerance pass).
-fn binary_body(src: &Source<'_>, soup: Soup) -> Result<Vec<Body>, InertiaError> {
-    let unique = !soup.table.is_provisional();
-    let (vertices, triangles) = (soup.table.into_vertices(), soup.triangles);
+/// settled (and read as one part); the weld then skips its exact pass (and
+/// merges the repeats of a provisional numbering in its tolerance pass).
+fn binary_body(src: &Source<'_>, parsed: Parsed) -> Result<Vec<Body>, InertiaError> {
+    let Parsed {
+        vertices,
+        triangles,
+        unique,
+    } = parsed;
     let name = src.stem().to_owned();
     let mesh = TriMesh::try_new(vertices, triangles).map_err(|e| src.in_body(&name, e))?;
     let mesh = if unique {
@@ -220,14 +338,18 @@ fn binary_body(src: &Source<'_>, soup: Soup) -> Result<Vec<Body>, InertiaError> 
 
 /// Binary triangle records being read into shared vertices and triangles.
 struct Soup {
+    /// The file's index of the first record.
+    first: usize,
     table: VertexTable,
     triangles: Vec<[u32; 3]>,
 }
 
 impl Soup {
-    /// Room for `count` triangles (a count checked against the file length).
-    fn new(count: usize) -> Self {
+    /// Room for `count` triangles (a count checked against the file length)
+    /// from record `first` on.
+    fn new(first: usize, count: usize) -> Self {
         Self {
+            first,
             // A closed mesh has about half as many vertices as triangles.
             table: VertexTable::with_capacity(count / 2),
             triangles: Vec::with_capacity(count),
@@ -239,7 +361,7 @@ impl Soup {
     /// triangles by [`SETTLE`] (a file without locality, whose repeats the
     /// recent cache misses).
     fn push(&mut self, records: &[[u8; RECORD]]) -> Result<(), String> {
-        non_finite(records, self.triangles.len())?;
+        non_finite(records, self.first + self.triangles.len())?;
         for record in records {
             let mut triangle = [0; 3];
             for (k, index) in triangle.iter_mut().enumerate() {
@@ -498,8 +620,8 @@ mod tests {
         // The loader marks binary bodies as free of exact repeats; the full
         // weld (exact pass included) of the same parsed records must agree.
         let bytes = grid_stl(12);
-        let soup = parse_binary(&bytes).unwrap();
-        let (vertices, triangles) = (soup.table.into_vertices(), soup.triangles);
+        let parsed = parse_binary(&bytes, 1).unwrap();
+        let (vertices, triangles) = (parsed.vertices, parsed.triangles);
         let (full, _) = TriMesh::new(vertices, triangles)
             .welded(crate::Weld::default())
             .unwrap();
@@ -532,5 +654,84 @@ mod tests {
                 .contains("triangle 9000, corner 1 has a non-finite"),
             "{err}"
         );
+    }
+
+    #[test]
+    fn records_read_in_parts_weld_to_the_mesh_read_as_one() {
+        // 2·90² = 16200 triangles: two chunks of 8192 records, so at most
+        // two parts.
+        let bytes = grid_stl(90);
+        let welded = |threads: usize| {
+            let parsed = parse_binary(&bytes, threads).unwrap();
+            let mesh = TriMesh::new(parsed.vertices, parsed.triangles);
+            let mesh = if parsed.unique {
+                mesh.known_exact_unique()
+            } else {
+                mesh.known_first_use()
+            };
+            mesh.welded(crate::Weld::default()).unwrap()
+        };
+        let one = welded(1);
+        assert_eq!(one.0.vertices().len(), 91 * 91);
+        for threads in [2, 3, 7] {
+            let parsed = parse_binary(&bytes, threads).unwrap();
+            // Several parts: repeats between them are left to the weld.
+            assert!(
+                !parsed.unique && parsed.vertices.len() > 91 * 91,
+                "{threads}"
+            );
+            assert_eq!(welded(threads), one, "{threads}");
+        }
+    }
+
+    #[test]
+    fn a_non_finite_corner_is_named_by_its_file_index_in_a_later_part() {
+        // Parts of 8192 records: the first bad corner in file order is named,
+        // whichever part meets it.
+        for bad in [vec![(14_000, 2)], vec![(5_000, 2), (9_000, 0)]] {
+            let mut bytes = grid_stl(90);
+            for &(t, k) in &bad {
+                let at = HEADER + t * RECORD + 12 + 12 * k + 8;
+                bytes[at..at + 4].copy_from_slice(&f32::NAN.to_le_bytes());
+            }
+            let (t, k) = bad[0];
+            for threads in [1, 2] {
+                let err = parse_binary(&bytes, threads).map(|_| ()).unwrap_err();
+                assert!(
+                    err.contains(&format!("triangle {t}, corner {k} has a non-finite")),
+                    "{threads}: {err}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn shuffled_records_read_in_parts_give_the_table_of_one_part() {
+        // 2·200² = 80,000 triangles in an order without locality: every
+        // part's table settles; the joined parts are settled as one.
+        let bytes = grid_stl(200);
+        let (head, records) = bytes.split_at(HEADER);
+        let mut records: Vec<&[u8]> = records.chunks(RECORD).collect();
+        let mut state = 12345u64;
+        for i in (1..records.len()).rev() {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
+            records.swap(i, (state >> 33) as usize % (i + 1));
+        }
+        let shuffled: Vec<u8> = head
+            .iter()
+            .chain(records.concat().iter())
+            .copied()
+            .collect();
+        let one = parse_binary(&shuffled, 1).unwrap();
+        assert!(one.unique);
+        assert_eq!(one.vertices.len(), 201 * 201);
+        for threads in [2, 3, 10] {
+            let many = parse_binary(&shuffled, threads).unwrap();
+            assert!(many.unique, "{threads}");
+            assert_eq!(many.vertices, one.vertices, "{threads}");
+            assert_eq!(many.triangles, one.triangles, "{threads}");
+        }
     }
 }

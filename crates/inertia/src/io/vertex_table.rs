@@ -241,6 +241,29 @@ impl VertexTable {
         self.vertices.len()
     }
 
+    /// Appends the vertices of `later` (read after this table's, in order
+    /// of first use) as provisional ones, which may repeat this table's;
+    /// returns the index of the first. [`VertexTable::settle`] then merges
+    /// the repeats as if one table had read everything.
+    ///
+    /// # Errors
+    /// A reason when there would be more distinct vertices than `u32` indices.
+    pub(super) fn append(&mut self, later: VertexTable) -> Result<u32, String> {
+        let first = vertex_index(self.vertices.len())?;
+        Self::next_index(self.vertices.len() + later.vertices.len())?;
+        self.vertices.extend(later.vertices);
+        self.provisional = true;
+        self.slots = Vec::new();
+        Ok(first)
+    }
+
+    /// The distinct vertices, in order of first appearance, after those of `out`.
+    pub(super) fn append_vertices_to(self, out: &mut Vec<DVec3>) {
+        drop(self.slots);
+        drop(self.recent);
+        out.extend(self.vertices.into_iter().map(point));
+    }
+
     /// The distinct vertices, in order of first appearance.
     pub(super) fn into_vertices(self) -> Vec<DVec3> {
         drop(self.slots);
