@@ -101,8 +101,7 @@ impl Conversion {
             return Ok(None);
         }
         let numbers = parse_numbers(text).map_err(escape_problem)?;
-        let q = self.from.quat_from_numbers(&numbers, self.degrees)?;
-        Ok(Some(self.to.numbers_from_quat(q, self.degrees)))
+        (self.from.convert_numbers(&numbers, self.to, self.degrees)).map(Some)
     }
 }
 

@@ -38,6 +38,7 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+mod atan2;
 mod axis_angle;
 mod error;
 mod euler_angles;
