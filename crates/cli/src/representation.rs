@@ -213,8 +213,8 @@ pub fn euler_angles_of_quat(
     q: DQuat,
     degrees: bool,
 ) -> Result<[f64; 3], KinematicsError> {
-    let [angles] = euler_angles_of_quats(sequence, [q], degrees);
-    angles
+    let [angles] = euler_angles_of_quats(sequence, [q], degrees).map_err(|(_, e)| e)?;
+    Ok(angles)
 }
 
 /// [`euler_angles_of_quat`] of `N` quaternions at once
@@ -222,21 +222,23 @@ pub fn euler_angles_of_quat(
 /// computed side by side in SIMD registers).
 ///
 /// # Errors
-/// Each quaternion's own, as [`euler_angles_of_quat`].
+/// The first quaternion that is not a rotation: its index and error, as
+/// [`euler_angles_of_quat`].
 #[inline]
 pub fn euler_angles_of_quats<const N: usize>(
     sequence: EulerSequence,
     quats: [DQuat; N],
     degrees: bool,
-) -> [Result<[f64; 3], KinematicsError>; N] {
-    sequence.try_from_quats(quats).map(|found| {
-        let a = found?.angles;
-        Ok(if degrees {
+) -> Result<[[f64; 3]; N], (usize, KinematicsError)> {
+    let found = sequence.try_from_quats(quats)?;
+    Ok(found.map(|found| {
+        let a = found.angles;
+        if degrees {
             [a.x.to_degrees(), a.y.to_degrees(), a.z.to_degrees()]
         } else {
             a.to_array()
-        })
-    })
+        }
+    }))
 }
 
 impl fmt::Display for Representation {

@@ -33,6 +33,8 @@
 //! could overflow) go to the standard library's `atan2`, which also settles
 //! the IEEE special cases (`atan2(±0, −0) = ±π`, …).
 
+use crate::lanes::lanes;
+
 /// Coefficients of `P(s)`, lowest degree first (`tests/data/gen/atan2.py`).
 const P: [f64; 13] = [
     -0.333_333_333_333_333_3,
@@ -101,7 +103,7 @@ fn special(y: f64, x: f64) -> bool {
 /// including `−0`; `atan2(±0, −0) = ±π`; NaN in, NaN out).
 #[inline(always)]
 pub(crate) fn atan2_lanes<const N: usize>(y: [f64; N], x: [f64; N]) -> [f64; N] {
-    let mut theta: [f64; N] = core::array::from_fn(|i| {
+    let mut theta: [f64; N] = lanes(0.0, |i| {
         let (a, b) = (x[i].abs(), y[i].abs());
         let swap = b > a;
         let lo = if swap { a } else { b };

@@ -47,6 +47,7 @@ mod euler_rates;
 mod euler_sequence;
 #[cfg(feature = "glam033")]
 pub mod glam033_interop;
+mod lanes;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_interop;
 mod quaternion;

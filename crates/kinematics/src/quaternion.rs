@@ -4,6 +4,7 @@
 use glam::{DQuat, DVec3};
 
 use crate::KinematicsError;
+use crate::lanes::lanes;
 
 /// Euclidean norm of a vector of any magnitude, without overflow or underflow.
 ///
@@ -91,24 +92,31 @@ pub fn try_normalize_quat(q: DQuat) -> Result<DQuat, KinematicsError> {
 /// (instead of `try_normalize_quat`'s square root and divisions).
 ///
 /// # Errors
+/// The first quaternion that is not a rotation, by its index:
 /// [`KinematicsError::NonFinite`] if a component is NaN or infinite,
 /// [`KinematicsError::ZeroQuaternion`] if all components are zero.
 #[inline(always)]
 pub(crate) fn try_scale_quats<const N: usize>(
     q: [DQuat; N],
-) -> [Result<DQuat, KinematicsError>; N] {
+) -> Result<[DQuat; N], (usize, KinematicsError)> {
     /// 2⁶⁴.
     const TWO_64: f64 = 18_446_744_073_709_551_616.0;
-    let finite: [bool; N] = core::array::from_fn(|i| q[i].is_finite());
-    let m: [f64; N] = core::array::from_fn(|i| {
+    let m: [f64; N] = lanes(0.0, |i| {
         let c = [q[i].w, q[i].x, q[i].y, q[i].z].map(f64::abs);
-        let m = c.into_iter().fold(0.0, |m, v| if v > m { v } else { m });
-        if finite[i] { m } else { 1.0 }
+        c.into_iter().fold(0.0, |m, v| if v > m { v } else { m })
     });
-    let scaled: [DQuat; N] = core::array::from_fn(|i| {
+    if let Some(i) = (0..N).find(|&i| !q[i].is_finite() || m[i] == 0.0) {
+        let e = if q[i].is_finite() {
+            KinematicsError::ZeroQuaternion
+        } else {
+            KinematicsError::NonFinite { what: "quaternion" }
+        };
+        return Err((i, e));
+    }
+    Ok(lanes(DQuat::IDENTITY, |i| {
         // 2^(1023 − e) for m's biased exponent e is a normal number for
         // e ∈ [1, 2045]; subnormal m (e = 0) and m ≥ 2¹⁰²³ (e = 2046) are
-        // brought into that range first (and zero stays zero).
+        // brought into that range first.
         let first = if m[i] < f64::MIN_POSITIVE {
             TWO_64
         } else if m[i] >= f64::MAX / 2.0 {
@@ -116,18 +124,9 @@ pub(crate) fn try_scale_quats<const N: usize>(
         } else {
             1.0
         };
-        let e = ((m[i] * first).to_bits() >> 52).clamp(1, 2045);
+        let e = (m[i] * first).to_bits() >> 52;
         q[i] * first * f64::from_bits((2046 - e) << 52)
-    });
-    core::array::from_fn(|i| {
-        if !finite[i] {
-            Err(KinematicsError::NonFinite { what: "quaternion" })
-        } else if m[i] == 0.0 {
-            Err(KinematicsError::ZeroQuaternion)
-        } else {
-            Ok(scaled[i])
-        }
-    })
+    }))
 }
 
 /// The representative of `±q` with a non-negative scalar part (and, when
@@ -194,7 +193,7 @@ mod tests {
         let q = DQuat::from_xyzw(0.3, -0.7, 0.1, 0.2);
         for k in [-1020, -600, -1, 0, 1, 500, 1000, 1021] {
             let input = q * 2.0_f64.powi(k);
-            let scaled = try_scale_quats([input])[0].clone().unwrap();
+            let scaled = try_scale_quats([input]).unwrap()[0];
             // The same power of two for every component (an exact scaling),
             // putting the largest, |y| = 0.7 · 2^k, at 1.4.
             let factor = scaled.y / input.y;
@@ -203,21 +202,24 @@ mod tests {
             assert_eq!(scaled.y, -1.4, "{k}");
         }
         let huge = DQuat::from_xyzw(f64::MAX, -f64::MAX, 1.0, 0.0);
-        let scaled = try_scale_quats([huge])[0].clone().unwrap();
+        let scaled = try_scale_quats([huge]).unwrap()[0];
         assert_eq!(scaled.x, 2.0 - f64::EPSILON);
         assert_eq!(scaled.y, -(2.0 - f64::EPSILON));
         let tiny = DQuat::from_xyzw(0.0, 5e-324, 0.0, -1e-323);
         assert_eq!(
-            try_scale_quats([tiny])[0].clone().unwrap(),
+            try_scale_quats([tiny]).unwrap()[0],
             DQuat::from_xyzw(0.0, 0.5, 0.0, -1.0)
         );
         assert_eq!(
-            try_scale_quats([DQuat::from_xyzw(0.0, 0.0, f64::NAN, 1.0)])[0],
-            Err(KinematicsError::NonFinite { what: "quaternion" })
+            try_scale_quats([DQuat::IDENTITY, DQuat::from_xyzw(0.0, 0.0, f64::NAN, 1.0)]),
+            Err((1, KinematicsError::NonFinite { what: "quaternion" }))
         );
         assert_eq!(
-            try_scale_quats([DQuat::from_xyzw(-0.0, 0.0, 0.0, 0.0)])[0],
-            Err(KinematicsError::ZeroQuaternion)
+            try_scale_quats([
+                DQuat::from_xyzw(-0.0, 0.0, 0.0, 0.0),
+                DQuat::from_xyzw(0.0, 0.0, f64::NAN, 1.0)
+            ]),
+            Err((0, KinematicsError::ZeroQuaternion))
         );
     }
 

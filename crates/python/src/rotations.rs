@@ -62,52 +62,66 @@ fn convert_rows(
     to: Representation,
     degrees: bool,
 ) -> Result<(), (usize, LineProblem)> {
-    if let (Representation::Quat, Representation::Euler(sequence)) = (from, to) {
-        return quat_rows_to_euler(input, output, sequence, degrees);
+    if let (Representation::Quat | Representation::QuatXyzw, Representation::Euler(sequence)) =
+        (from, to)
+    {
+        return quat_rows_to_euler(input, output, from, sequence, degrees);
     }
     let rows = input.chunks_exact(from.count());
     for (i, (row, slot)) in rows.zip(output.chunks_exact_mut(to.count())).enumerate() {
         if let Some(problem) = non_finite(row) {
             return Err((i, problem));
         }
-        let converted = from
-            .convert_numbers(&numbers(row), to, degrees)
+        let q = from
+            .quat_from_numbers(&numbers(row), degrees)
             .map_err(|problem| (i, problem))?;
-        slot.copy_from_slice(converted.as_slice());
+        slot.copy_from_slice(to.numbers_from_quat(q, degrees).as_slice());
     }
     Ok(())
 }
 
-/// Quaternion rows `(w, x, y, z)` → Euler angles: the CLI's own
-/// [`euler_angles_of_quat`] (what `Representation::convert_numbers` calls
-/// for `quat → euler:SEQ`), four rows at a time in SIMD registers
-/// ([`euler_angles_of_quats`]: the same bits), without the CLI's generic
-/// row of numbers.
+/// Quaternion rows (`(w, x, y, z)`, or `(x, y, z, w)` for `quat-xyzw`) →
+/// Euler angles: the CLI's own [`euler_angles_of_quat`] (what
+/// `Representation::convert_numbers` calls for `quat → euler:SEQ`), four
+/// rows at a time in SIMD registers ([`euler_angles_of_quats`]: the same
+/// bits), without the CLI's generic row of numbers.
+#[inline(never)]
 fn quat_rows_to_euler(
     input: &[f64],
     output: &mut [f64],
+    from: Representation,
     sequence: EulerSequence,
     degrees: bool,
 ) -> Result<(), (usize, LineProblem)> {
     /// Rows converted side by side (four measured fastest on x86-64: two
-    /// SSE2 registers a number).
+    /// SSE2 registers a number; `quats` below lists them).
     const LANES: usize = 4;
-    let quat = |r: &[f64]| DQuat::from_xyzw(r[1], r[2], r[3], r[0]);
+    let xyzw = from == Representation::QuatXyzw;
+    let quat = |r: &[f64]| {
+        if xyzw {
+            DQuat::from_xyzw(r[0], r[1], r[2], r[3])
+        } else {
+            DQuat::from_xyzw(r[1], r[2], r[3], r[0])
+        }
+    };
     let mut blocks_in = input.chunks_exact(4 * LANES);
     let mut blocks_out = output.chunks_exact_mut(3 * LANES);
     for (k, (rows, slots)) in (&mut blocks_in).zip(&mut blocks_out).enumerate() {
-        let found = euler_angles_of_quats::<LANES>(
-            sequence,
-            core::array::from_fn(|j| quat(&rows[4 * j..])),
-            degrees,
-        );
-        let rows = rows.chunks_exact(4).zip(slots.chunks_exact_mut(3));
-        for (j, ((row, slot), angles)) in rows.zip(found).enumerate() {
-            let i = k * LANES + j;
-            if let Some(problem) = non_finite(row) {
-                return Err((i, problem));
+        // (not array::from_fn: its closure was left out of line, `perf`)
+        let quats = [
+            quat(&rows[..4]),
+            quat(&rows[4..8]),
+            quat(&rows[8..12]),
+            quat(&rows[12..]),
+        ];
+        match euler_angles_of_quats::<LANES>(sequence, quats, degrees) {
+            Ok(angles) => slots.copy_from_slice(angles.as_flattened()),
+            Err((j, e)) => {
+                // The rows before j are rotations; j is not, and the CLI
+                // names a number that is not finite first.
+                let problem = non_finite(&rows[4 * j..4 * j + 4]).unwrap_or(LineProblem::from(e));
+                return Err((k * LANES + j, problem));
             }
-            slot.copy_from_slice(&angles.map_err(|e| (i, LineProblem::from(e)))?);
         }
     }
     let done = input.len() / 4 / LANES * LANES;
@@ -116,11 +130,9 @@ fn quat_rows_to_euler(
         .zip(blocks_out.into_remainder().chunks_exact_mut(3))
         .enumerate()
     {
-        if let Some(problem) = non_finite(row) {
-            return Err((done + j, problem));
-        }
-        let angles = euler_angles_of_quat(sequence, quat(row), degrees);
-        slot.copy_from_slice(&angles.map_err(|e| (done + j, LineProblem::from(e)))?);
+        let angles = euler_angles_of_quat(sequence, quat(row), degrees)
+            .map_err(|e| (done + j, non_finite(row).unwrap_or(LineProblem::from(e))))?;
+        slot.copy_from_slice(&angles);
     }
     Ok(())
 }
