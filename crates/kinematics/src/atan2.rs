@@ -3,12 +3,13 @@
 //!
 //! Why hand-written: [`EulerSequence::from_quat`](crate::EulerSequence::from_quat)
 //! spent most of its time in three `atan2` calls. On this project's machine
-//! (AMD EPYC, x86-64 baseline = SSE2, 3·10⁶ random arguments, interleaved
-//! runs, `/tmp`-scratch timing of the three calls of one row): glibc's
-//! `atan2` 71 ns, the `libm` crate's (musl/fdlibm) 91 ns (its interval
-//! branches mispredict on random input), this one 54 ns one point at a
-//! time and 21 ns two at a time: one division, no data-dependent branch, so
-//! the compiler packs the lanes into SIMD registers; no crate offers that.
+//! (AMD EPYC, x86-64 baseline = SSE2; 3·10⁶ random arguments, one
+//! interleaved run of a scratch benchmark, time of three calls): glibc's
+//! `atan2` 71 ns, the `libm` crate's 0.2.16 (musl/fdlibm) 86 ns (its
+//! interval branches mispredict on random input), this one 53 ns one point
+//! at a time and 21 ns two at a time: one division and no data-dependent
+//! branch, so the compiler packs the lanes into SIMD registers, which no
+//! crate's scalar `atan2` allows.
 //!
 //! ```text
 //! a = |x|, b = |y|, lo = min(a, b), hi = max(a, b)        (lo/hi ∈ [0, 1])

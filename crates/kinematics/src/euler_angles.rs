@@ -177,8 +177,10 @@ impl EulerSequence {
 
     /// [`EulerSequence::from_quat`] of `N` rotations at once: the same
     /// numbers, bit for bit, computed lane by lane without data-dependent
-    /// branches, so that the compiler can use SIMD registers (on x86-64 with
-    /// SSE2, four at a time took 30 ns a quaternion, one at a time ~70 ns).
+    /// branches, so that the compiler can use SIMD registers (x86-64 with
+    /// SSE2, random quaternions, one interleaved run: four at a time 34 ns a
+    /// quaternion, one at a time 72 ns, normalising first with glibc's
+    /// `atan2`, as before, 135 ns).
     ///
     /// ```
     /// use glam::DQuat;
