@@ -43,6 +43,7 @@ mod axis_angle;
 mod error;
 mod euler_angles;
 mod euler_f32;
+mod euler_from_quat;
 mod euler_rates;
 mod euler_sequence;
 #[cfg(feature = "glam033")]
