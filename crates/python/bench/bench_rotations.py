@@ -19,6 +19,12 @@ from the lock), over a sample of each set (mpmath is slow).
 import argparse
 import math
 import os
+
+# numpy's OpenBLAS worker threads spin-wait after a BLAS call and take a core
+# from whatever runs next (`perf`: blas_thread_server); neither library's
+# rotations use BLAS threads (scipy's times are the same either way), so
+# keep them from skewing the comparison. Set before numpy is imported.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import statistics
 import sys
 import time
