@@ -84,7 +84,10 @@ fn convert_rows(
 /// Euler angles: the CLI's own [`euler_angles_of_quat`] (what
 /// `Representation::convert_numbers` calls for `quat → euler:SEQ`), four
 /// rows at a time in SIMD registers ([`euler_angles_of_quats`]: the same
-/// bits), without the CLI's generic row of numbers.
+/// bits), without the CLI's generic row of numbers. A function of its own
+/// (never inlined into [`convert_rows`]), so that the generic loop's code
+/// cannot change how this one is compiled: the SIMD lanes proved sensitive
+/// to inlining (a const-generic variant ran at 93 instead of 42 ns a row).
 #[inline(never)]
 fn quat_rows_to_euler(
     input: &[f64],
