@@ -134,8 +134,7 @@ impl Conversion {
     /// A [`LineProblem`] when the text is not a rotation in `self.from`.
     pub fn convert_numbers(&self, text: &str) -> Result<Numbers, LineProblem> {
         let numbers = parse_numbers(text).map_err(escape_problem)?;
-        let q = self.from.quat_from_numbers(&numbers, self.degrees)?;
-        Ok(self.to.numbers_from_quat(q, self.degrees))
+        self.from.convert_numbers(&numbers, self.to, self.degrees)
     }
 }
 

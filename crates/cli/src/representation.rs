@@ -68,14 +68,7 @@ impl Representation {
     /// [`crate::numbers::parse_numbers`] ensures); non-finite ones are
     /// rejected too.
     pub fn quat_from_numbers(self, numbers: &Numbers, degrees: bool) -> Result<DQuat, LineProblem> {
-        let n = numbers.as_slice();
-        if numbers.count() != self.count() || n.len() != self.count() {
-            return Err(LineProblem::WrongCount {
-                representation: self,
-                expected: self.count(),
-                found: numbers.count(),
-            });
-        }
+        let n = self.checked_slice(numbers)?;
         let angle = |a: f64| if degrees { a.to_radians() } else { a };
         let q = match self {
             Representation::Quat => try_normalize_quat(DQuat::from_xyzw(n[1], n[2], n[3], n[0]))?,
@@ -122,6 +115,56 @@ impl Representation {
         Ok(q)
     }
 
+    /// The numbers of a line, `n`, checked to be as many as this
+    /// representation holds.
+    fn checked_slice(self, numbers: &Numbers) -> Result<&[f64], LineProblem> {
+        let n = numbers.as_slice();
+        if numbers.count() != self.count() || n.len() != self.count() {
+            return Err(LineProblem::WrongCount {
+                representation: self,
+                expected: self.count(),
+                found: numbers.count(),
+            });
+        }
+        Ok(n)
+    }
+
+    /// A line of numbers in this representation rewritten in `to`: what
+    /// `kreisel convert` does with each line.
+    ///
+    /// ```text
+    /// numbers → unit quaternion (quat_from_numbers) → numbers (numbers_from_quat)
+    /// quat / quat-xyzw → euler:SEQ:  numbers → Euler angles (euler_angles_of_quat)
+    /// ```
+    ///
+    /// A quaternion goes to Euler angles without being normalised: the
+    /// formulas are scale-invariant, so this skips a square root, four
+    /// divisions and their roundings.
+    ///
+    /// # Errors
+    /// As [`Representation::quat_from_numbers`].
+    pub fn convert_numbers(
+        self,
+        numbers: &Numbers,
+        to: Representation,
+        degrees: bool,
+    ) -> Result<Numbers, LineProblem> {
+        if let (Representation::Quat | Representation::QuatXyzw, Representation::Euler(sequence)) =
+            (self, to)
+        {
+            let n = self.checked_slice(numbers)?;
+            let q = match self {
+                Representation::Quat => DQuat::from_xyzw(n[1], n[2], n[3], n[0]),
+                _ => DQuat::from_xyzw(n[0], n[1], n[2], n[3]),
+            };
+            return Ok(Numbers::from_array(euler_angles_of_quat(
+                sequence, q, degrees,
+            )?));
+        }
+        let q = self.quat_from_numbers(numbers, degrees)?;
+        Ok(to.numbers_from_quat(q, degrees))
+    }
+
     /// The numbers of a unit quaternion in this representation.
     ///
     /// Quaternions are canonical (`w ≥ 0`, as [`canonical_quat`]); the
@@ -155,6 +198,47 @@ impl Representation {
             }
         }
     }
+}
+
+/// The Euler angles that `kreisel convert --from quat --to euler:SEQ` writes
+/// for a quaternion of any non-zero length (radians, or degrees with
+/// `degrees`): [`EulerSequence::try_from_quat`], no normalisation.
+///
+/// # Errors
+/// [`KinematicsError::NonFinite`] or [`KinematicsError::ZeroQuaternion`]
+/// for a quaternion that is not a rotation.
+#[inline]
+pub fn euler_angles_of_quat(
+    sequence: EulerSequence,
+    q: DQuat,
+    degrees: bool,
+) -> Result<[f64; 3], KinematicsError> {
+    let [angles] = euler_angles_of_quats(sequence, [q], degrees).map_err(|(_, e)| e)?;
+    Ok(angles)
+}
+
+/// [`euler_angles_of_quat`] of `N` quaternions at once
+/// ([`EulerSequence::try_from_quats`]: the same numbers, bit for bit,
+/// computed side by side in SIMD registers).
+///
+/// # Errors
+/// The first quaternion that is not a rotation: its index and error, as
+/// [`euler_angles_of_quat`].
+#[inline]
+pub fn euler_angles_of_quats<const N: usize>(
+    sequence: EulerSequence,
+    quats: [DQuat; N],
+    degrees: bool,
+) -> Result<[[f64; 3]; N], (usize, KinematicsError)> {
+    let found = sequence.try_from_quats(quats)?;
+    Ok(found.map(|found| {
+        let a = found.angles;
+        if degrees {
+            [a.x.to_degrees(), a.y.to_degrees(), a.z.to_degrees()]
+        } else {
+            a.to_array()
+        }
+    }))
 }
 
 impl fmt::Display for Representation {

@@ -1,11 +1,9 @@
-//! Euler angles ⇄ quaternion for all 24 conventions, accurate at and next to
-//! gimbal lock (Bernardes & Viollet 2022).
-
-use core::f64::consts::{PI, TAU};
+//! Euler angles → quaternion for all 24 conventions, and the decomposition
+//! type of the way back (`euler_from_quat.rs`).
 
 use glam::{DQuat, DVec3};
 
-use crate::euler_sequence::{EulerSequence, Frame, gather, scatter};
+use crate::euler_sequence::{EulerSequence, Frame, scatter};
 
 /// Euler angles recovered from a rotation, with a flag for gimbal lock.
 ///
@@ -20,12 +18,6 @@ pub struct EulerDecomposition {
     /// sum (or difference) of the first and third angles is defined, and the
     /// third angle is returned as `0` by convention.
     pub gimbal_lock: bool,
-}
-
-/// Wraps an angle from `[−π, π]` into `(−π, π]` (maps `−π` to `π`).
-#[inline]
-fn half_open(angle: f64) -> f64 {
-    if angle <= -PI { angle + TAU } else { angle }
 }
 
 impl EulerSequence {
@@ -86,113 +78,12 @@ impl EulerSequence {
         let v = scatter(a, b, u);
         DQuat::from_xyzw(v.x, v.y, v.z, w)
     }
-
-    /// Euler angles of a rotation (`world_from_body`) in this convention.
-    ///
-    /// The direct method of Bernardes & Viollet, "Quaternion to Euler angles
-    /// conversion: a direct, general and computationally efficient method",
-    /// PLoS ONE 17:e0276302 (2022), in its atan2/hypot form and rewritten for
-    /// intrinsic sequences `ABC` (an extrinsic `abc` is the intrinsic `CBA`
-    /// with the angles reversed). With `l` the axis that is neither A nor B
-    /// and `ε = ε_{ABl}` (Levi-Civita):
-    ///
-    /// ```text
-    /// proper (C = A):      x = (w, q_A),              y = (q_B, ε q_l)
-    /// Tait–Bryan (C = l):  x = (w − q_B, q_A − ε q_C),  y = (w + q_B, q_A + ε q_C)
-    /// middle β = 2 atan2(|y|, |x|) = atan2(2|x||y|, |x|² − |y|²)   (proper)
-    ///        β = atan2(|y|² − |x|², 2|x||y|)                     (Tait–Bryan: the above − π/2)
-    /// first  α = atan2(x₁y₀ + x₀y₁, x₀y₀ − x₁y₁)          = X + Y
-    /// third  γ = s · atan2(x₁y₀ − x₀y₁, x₀y₀ + x₁y₁)      = s (X − Y),  s = 1 proper, −ε Tait–Bryan
-    /// where x = |x| (cos X, sin X), y = |y| (cos Y, sin Y)
-    /// ```
-    ///
-    /// No acos/asin is used, so the middle angle keeps full precision next to
-    /// the lock, and the first and third angles come from the products of
-    /// `x` and `y`, which stay well-defined however small `|y|` or `|x|` get.
-    /// Only exactly at the lock (`|y| = 0` or `|x| = 0`) is the
-    /// decomposition not unique; then the third angle is set to 0, the first
-    /// carries the whole rotation, and `gimbal_lock` is `true`.
-    ///
-    /// The quaternion need not be normalised (the formulas are
-    /// scale-invariant), but must be non-zero and finite.
-    ///
-    /// ```
-    /// use glam::DVec3;
-    /// use kreisel_kinematics::{EulerSequence, rotation_angle_between};
-    /// let seq: EulerSequence = "xyz".parse()?;
-    /// // 1e-12 rad from gimbal lock (middle angle π/2 − 1e-12):
-    /// let angles = DVec3::new(0.3, core::f64::consts::FRAC_PI_2 - 1e-12, -1.2);
-    /// let q = seq.to_quat(angles);
-    /// let found = seq.from_quat(q);
-    /// assert!(!found.gimbal_lock);
-    /// assert!(rotation_angle_between(q, seq.to_quat(found.angles)) < 1e-15);
-    /// assert!((found.angles.y - angles.y).abs() < 1e-15);
-    /// # Ok::<(), kreisel_kinematics::KinematicsError>(())
-    /// ```
-    #[inline]
-    pub fn from_quat(self, world_from_body: DQuat) -> EulerDecomposition {
-        let q = world_from_body;
-        let [a, b, c] = self.intrinsic_axes();
-        // Components along (A, B, T), T the third axis; for Tait–Bryan C = T.
-        let (u, eps) = gather(a, b, DVec3::new(q.x, q.y, q.z));
-        let proper = a == c;
-        let (x0, x1, y0, y1, sign) = if proper {
-            (q.w, u.x, u.y, eps * u.z, 1.0)
-        } else {
-            let (qa, qb, qc) = (u.x, u.y, eps * u.z);
-            (q.w - qb, qa - qc, q.w + qb, qa + qc, -eps)
-        };
-        // β = 2 atan2(|y|, |x|) = atan2(2|x||y|, |x|² − |y|²): one square
-        // root instead of two, and as accurate (absolute error ~1e-16 rad
-        // for every β). For Tait–Bryan, β − π/2 = atan2(|y|² − |x|², 2|x||y|)
-        // lands in [−π/2, π/2] directly, without rounding in a subtraction.
-        // q is unit (or of moderate size): the squares cannot overflow, and
-        // they underflow only ~1e-162 from the lock, where treating the
-        // rotation as locked costs < 1e-160 rad.
-        let (nx2, ny2) = (x0 * x0 + x1 * x1, y0 * y0 + y1 * y1);
-        let (sin_m, cos_m) = (2.0 * (nx2 * ny2).sqrt(), nx2 - ny2);
-        let middle = if proper {
-            sin_m.atan2(cos_m)
-        } else {
-            (-cos_m).atan2(sin_m)
-        };
-
-        // Which intrinsic angle is the sequence's *third* one (set to 0 at the lock).
-        let zero_first = self.frame() == Frame::Extrinsic;
-        let (first, third, gimbal_lock) = if ny2 == 0.0 || nx2 == 0.0 {
-            // α + sγ = 2X when |y| = 0;  α − sγ = 2Y when |x| = 0.
-            let (p0, p1, s) = if ny2 == 0.0 {
-                (x0, x1, sign)
-            } else {
-                (y0, y1, -sign)
-            };
-            let double = (2.0 * p0 * p1).atan2(p0 * p0 - p1 * p1);
-            if zero_first {
-                (0.0, half_open(s * double), true)
-            } else {
-                (half_open(double), 0.0, true)
-            }
-        } else {
-            let alpha = (x1 * y0 + x0 * y1).atan2(x0 * y0 - x1 * y1);
-            let gamma = sign * (x1 * y0 - x0 * y1).atan2(x0 * y0 + x1 * y1);
-            (half_open(alpha), half_open(gamma), false)
-        };
-        let angles = match self.frame() {
-            Frame::Intrinsic => DVec3::new(first, middle, third),
-            Frame::Extrinsic => DVec3::new(third, middle, first),
-        };
-        EulerDecomposition {
-            angles,
-            gimbal_lock,
-        }
-    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::rotation_angle_between;
-    use core::f64::consts::FRAC_PI_2;
 
     fn seqs() -> [EulerSequence; 24] {
         EulerSequence::all()
@@ -230,56 +121,6 @@ mod tests {
                 (d2.angles - angles).abs().max_element() < 1e-14,
                 "{seq}: {d2:?}"
             );
-        }
-    }
-
-    #[test]
-    fn exact_lock_sets_third_angle_zero_and_flags_it() {
-        for seq in seqs() {
-            for lock in seq.gimbal_lock_angles() {
-                let angles = DVec3::new(0.3, lock, -0.9);
-                let q = seq.to_quat(angles);
-                let d = seq.from_quat(q);
-                // The lock is flagged when the quaternion lands exactly on it.
-                if d.gimbal_lock {
-                    assert_eq!(d.angles.z, 0.0, "{seq}");
-                    assert_eq!(d.angles.y, lock, "{seq}");
-                }
-                let err = rotation_angle_between(q, seq.to_quat(d.angles));
-                assert!(err < 1e-15, "{seq} at {lock}: {err}");
-            }
-        }
-    }
-
-    #[test]
-    fn axis_quaternion_at_lock_is_flagged() {
-        // A pure rotation about the first axis has middle angle 0 for proper sequences.
-        let zxz: EulerSequence = "ZXZ".parse().unwrap();
-        let d = zxz.from_quat(DQuat::from_rotation_z(1.0));
-        assert!(d.gimbal_lock);
-        assert_eq!(d.angles, DVec3::new(1.0, 0.0, 0.0));
-        let zxz_ext: EulerSequence = "zxz".parse().unwrap();
-        let d = zxz_ext.from_quat(DQuat::from_rotation_z(1.0));
-        assert!(d.gimbal_lock);
-        assert!((d.angles - DVec3::new(1.0, 0.0, 0.0)).abs().max_element() < 1e-15);
-        // Half a turn about y for XYZ Tait–Bryan lock: y = π/2 exactly.
-        let xyz: EulerSequence = "XYZ".parse().unwrap();
-        let q = DQuat::from_xyzw(0.0, 0.5f64.sqrt(), 0.0, 0.5f64.sqrt());
-        let d = xyz.from_quat(q);
-        assert!(d.gimbal_lock);
-        assert_eq!(d.angles.y, FRAC_PI_2);
-    }
-
-    #[test]
-    fn ranges_are_half_open() {
-        for seq in seqs() {
-            let d = seq.from_quat(seq.to_quat(DVec3::new(
-                PI,
-                if seq.is_proper() { 1.0 } else { 0.5 },
-                PI,
-            )));
-            assert!(d.angles.x > -PI && d.angles.x <= PI, "{seq} {d:?}");
-            assert!(d.angles.z > -PI && d.angles.z <= PI, "{seq} {d:?}");
         }
     }
 }

@@ -38,14 +38,17 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+mod atan2;
 mod axis_angle;
 mod error;
 mod euler_angles;
 mod euler_f32;
+mod euler_from_quat;
 mod euler_rates;
 mod euler_sequence;
 #[cfg(feature = "glam033")]
 pub mod glam033_interop;
+mod lanes;
 #[cfg(feature = "nalgebra")]
 pub mod nalgebra_interop;
 mod quaternion;

@@ -3,7 +3,7 @@ accuracy side by side in one run.
 
     python crates/python/bench/bench_rotations.py [--n 1000000] [--repeat 7]
 
-Speed: median wall time of --repeat runs of
+Speed: median wall time of --repeat runs of (kreisel and scipy alternately)
     kreisel.from_euler(seq, a)              vs  Rotation.from_euler(seq, a).as_quat()
     kreisel.as_euler(seq, q)                vs  Rotation.from_quat(q).as_euler(seq)
 (both scalar-first where scipy offers it: as_quat(scalar_first=True) and
@@ -18,9 +18,17 @@ from the lock), over a sample of each set (mpmath is slow).
 
 import argparse
 import math
+import os
+
+# numpy's OpenBLAS worker threads spin-wait after a BLAS call and take a core
+# from whatever runs next (`perf`: blas_thread_server); neither library's
+# rotations use BLAS threads (scipy's times are the same either way), so
+# keep them from skewing the comparison. Set before numpy is imported.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import statistics
 import sys
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -40,13 +48,16 @@ def exact_error(q, seq, angles):
     return exact_angle_between(q, exact_quat_of_euler(seq, angles))
 
 
-def median_time(f, repeat):
-    times = []
+def median_times(f, g, repeat):
+    """Median wall times of f and g, called alternately (so that a change in
+    the machine's load hits both alike)."""
+    tf, tg = [], []
     for _ in range(repeat):
-        t0 = time.perf_counter()
-        f()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
+        for fn, times in ((f, tf), (g, tg)):
+            t0 = time.perf_counter()
+            fn()
+            times.append(time.perf_counter() - t0)
+    return statistics.median(tf), statistics.median(tg)
 
 
 def near_lock(seq, n, rng):
@@ -68,16 +79,19 @@ def main():
     rng = np.random.default_rng(1)
     import scipy
 
+    # scipy warns on every row at the lock (the near-lock accuracy sets)
+    warnings.filterwarnings("ignore", message="Gimbal lock detected")
     print(f"kreisel {kreisel.__version__}, scipy {scipy.__version__}, numpy {np.__version__}, "
-          f"python {sys.version.split()[0]}; n = {args.n}, median of {args.repeat}")
+          f"python {sys.version.split()[0]}; n = {args.n}, median of {args.repeat}; "
+          f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}")
     print(f"{'seq':4} {'op':10} {'kreisel ms':>10} {'scipy ms':>9} {'ratio':>6}   "
           f"{'kreisel err random':>18} {'scipy err random':>16} {'kreisel err lock':>16} {'scipy err lock':>14}")
     worst = {"ratio_from": math.inf, "ratio_as": math.inf, "k_err": 0.0, "s_err": 0.0}
     for seq in SEQS:
         angles = rng.uniform(-math.pi, math.pi, size=(args.n, 3))
         quats = kreisel.from_euler(seq, angles)
-        tk = median_time(lambda: kreisel.from_euler(seq, angles), args.repeat)
-        ts = median_time(lambda: Rotation.from_euler(seq, angles).as_quat(scalar_first=True), args.repeat)
+        tk, ts = median_times(lambda: kreisel.from_euler(seq, angles),
+                              lambda: Rotation.from_euler(seq, angles).as_quat(scalar_first=True), args.repeat)
         # accuracy of from_euler: exact quaternion of the f64 angles
         idx = rng.integers(0, args.n, size=args.sample)
         qk = quats[idx]
@@ -93,8 +107,8 @@ def main():
         worst["ratio_from"] = min(worst["ratio_from"], ts / tk)
         worst["k_err"] = max(worst["k_err"], ek, ekl)
 
-        tk = median_time(lambda: kreisel.as_euler(seq, quats), args.repeat)
-        ts = median_time(lambda: Rotation.from_quat(quats, scalar_first=True).as_euler(seq), args.repeat)
+        tk, ts = median_times(lambda: kreisel.as_euler(seq, quats),
+                              lambda: Rotation.from_quat(quats, scalar_first=True).as_euler(seq), args.repeat)
         ak = kreisel.as_euler(seq, quats[idx])
         as_ = Rotation.from_quat(quats[idx], scalar_first=True).as_euler(seq)
         ek = max(exact_error(q, seq, a) for q, a in zip(quats[idx], ak))

@@ -10,8 +10,8 @@
 
 use glam::DQuat;
 use kreisel_cli::error::LineProblem;
-use kreisel_cli::representation::Representation;
-use kreisel_kinematics::{EulerSequence, try_normalize_quat};
+use kreisel_cli::representation::{Representation, euler_angles_of_quat, euler_angles_of_quats};
+use kreisel_kinematics::EulerSequence;
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 
@@ -62,8 +62,10 @@ fn convert_rows(
     to: Representation,
     degrees: bool,
 ) -> Result<(), (usize, LineProblem)> {
-    if let (Representation::Quat, Representation::Euler(sequence)) = (from, to) {
-        return quat_rows_to_euler(input, output, sequence, degrees);
+    if let (Representation::Quat | Representation::QuatXyzw, Representation::Euler(sequence)) =
+        (from, to)
+    {
+        return quat_rows_to_euler(input, output, from, sequence, degrees);
     }
     let rows = input.chunks_exact(from.count());
     for (i, (row, slot)) in rows.zip(output.chunks_exact_mut(to.count())).enumerate() {
@@ -78,29 +80,62 @@ fn convert_rows(
     Ok(())
 }
 
-/// Quaternion rows `(w, x, y, z)` → Euler angles: the calls of
-/// `Representation::Quat.quat_from_numbers` and
-/// `Representation::Euler(..).numbers_from_quat` in the same order (so the
-/// same bits), without their generic row of numbers — a fifth of the time
-/// of `as_euler` (`perf`).
+/// Quaternion rows (`(w, x, y, z)`, or `(x, y, z, w)` for `quat-xyzw`) →
+/// Euler angles: the CLI's own [`euler_angles_of_quat`] (what
+/// `Representation::convert_numbers` calls for `quat → euler:SEQ`), four
+/// rows at a time in SIMD registers ([`euler_angles_of_quats`]: the same
+/// bits), without the CLI's generic row of numbers. A function of its own
+/// (never inlined into [`convert_rows`]), so that the generic loop's code
+/// cannot change how this one is compiled: the SIMD lanes proved sensitive
+/// to inlining (a const-generic variant ran at 93 instead of 42 ns a row).
+#[inline(never)]
 fn quat_rows_to_euler(
     input: &[f64],
     output: &mut [f64],
+    from: Representation,
     sequence: EulerSequence,
     degrees: bool,
 ) -> Result<(), (usize, LineProblem)> {
-    for (i, (r, slot)) in (input.chunks_exact(4))
-        .zip(output.chunks_exact_mut(3))
+    /// Rows converted side by side (four measured fastest on x86-64: two
+    /// SSE2 registers a number; `quats` below lists them).
+    const LANES: usize = 4;
+    let xyzw = from == Representation::QuatXyzw;
+    let quat = |r: &[f64]| {
+        if xyzw {
+            DQuat::from_xyzw(r[0], r[1], r[2], r[3])
+        } else {
+            DQuat::from_xyzw(r[1], r[2], r[3], r[0])
+        }
+    };
+    let mut blocks_in = input.chunks_exact(4 * LANES);
+    let mut blocks_out = output.chunks_exact_mut(3 * LANES);
+    for (k, (rows, slots)) in (&mut blocks_in).zip(&mut blocks_out).enumerate() {
+        // (not array::from_fn: its closure was left out of line, `perf`)
+        let quats = [
+            quat(&rows[..4]),
+            quat(&rows[4..8]),
+            quat(&rows[8..12]),
+            quat(&rows[12..]),
+        ];
+        match euler_angles_of_quats::<LANES>(sequence, quats, degrees) {
+            Ok(angles) => slots.copy_from_slice(angles.as_flattened()),
+            Err((j, e)) => {
+                // The rows before j are rotations; j is not, and the CLI
+                // names a number that is not finite first.
+                let problem = non_finite(&rows[4 * j..4 * j + 4]).unwrap_or(LineProblem::from(e));
+                return Err((k * LANES + j, problem));
+            }
+        }
+    }
+    let done = input.len() / 4 / LANES * LANES;
+    let rest = blocks_in.remainder().chunks_exact(4);
+    for (j, (row, slot)) in rest
+        .zip(blocks_out.into_remainder().chunks_exact_mut(3))
         .enumerate()
     {
-        if let Some(problem) = non_finite(r) {
-            return Err((i, problem));
-        }
-        let q = try_normalize_quat(DQuat::from_xyzw(r[1], r[2], r[3], r[0]))
-            .map_err(|e| (i, LineProblem::from(e)))?;
-        let a = sequence.from_quat(q).angles;
-        let angle = |a: f64| if degrees { a.to_degrees() } else { a };
-        slot.copy_from_slice(&[angle(a.x), angle(a.y), angle(a.z)]);
+        let angles = euler_angles_of_quat(sequence, quat(row), degrees)
+            .map_err(|e| (done + j, non_finite(row).unwrap_or(LineProblem::from(e))))?;
+        slot.copy_from_slice(&angles);
     }
     Ok(())
 }

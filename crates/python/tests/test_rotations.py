@@ -287,6 +287,50 @@ def test_same_numbers_as_the_cli(cli, tmp_path):
                 assert np.array_equal(got, expect), (src, dst, degrees)
 
 
+@pytest.mark.parametrize("seq", ["ZYX", "xyz", "ZXZ", "yxy"])
+def test_as_euler_side_by_side_same_numbers_as_the_cli(cli, seq):
+    """as_euler converts four rows at a time (SIMD lanes), the CLI one: every
+    row the same f64s, whatever its neighbours — generic, next to and at the
+    lock, unnormalised (tiny, huge, subnormal) — for 1 … 11 rows (whole
+    blocks and the rest), and in degrees."""
+    rng = np.random.default_rng(11)
+    angles = np.concatenate([rng.uniform(-math.pi, math.pi, size=(8, 3)), near_lock_angles(seq, rng, per_delta=1)])
+    locks = np.array([[0.3, lock, -1.2] for lock in lock_angles(seq)])
+    q = kreisel.from_euler(seq, np.concatenate([angles, locks]))
+    scales = rng.choice([1.0, 3.0, 1e-200, 1e200, 1e-310, -2.5], size=len(q))
+    q = q * scales[:, None]
+    rng.shuffle(q)
+    text = "".join(",".join(repr(float(x)) for x in row) + "\n" for row in q)
+    for degrees in (False, True):
+        flags = ["--degrees"] if degrees else []
+        status, out, err = cli("convert", "--from", "quat", "--to", f"euler:{seq}", *flags, stdin=text)
+        assert status == 0, err
+        expect = np.array([[float(x) for x in line.split(",")] for line in out.splitlines()])
+        for n in range(1, 12):
+            for start in (0, 5):
+                got = kreisel.as_euler(seq, q[start : start + n], degrees=degrees)
+                assert np.array_equal(got, expect[start : start + n]), (n, start, degrees)
+        assert np.array_equal(kreisel.as_euler(seq, q, degrees=degrees), expect)
+
+
+def test_as_euler_names_the_first_bad_row_in_a_block():
+    q = kreisel.from_euler("ZYX", np.zeros((10, 3)))
+    q[6] = [0.0, 0.0, np.inf, 1.0]
+    q[5] = 0.0
+    with pytest.raises(kreisel.KreiselError, match=r"^quats\[5\]: .*zero"):
+        kreisel.as_euler("ZYX", q)
+    q[5] = [1.0, np.nan, 0.0, 0.0]
+    with pytest.raises(kreisel.KreiselError, match=r"^quats\[5\]: .*NaN"):
+        kreisel.as_euler("ZYX", q)
+    q[5] = 1.0
+    with pytest.raises(kreisel.KreiselError, match=r"^quats\[6\]: .*inf"):
+        kreisel.as_euler("ZYX", q)
+    q[6] = 1.0
+    q[9] = 0.0  # in the rest after two blocks of four
+    with pytest.raises(kreisel.KreiselError, match=r"^quats\[9\]: .*zero"):
+        kreisel.as_euler("ZYX", q)
+
+
 @pytest.mark.parametrize(
     "src, dst, line",
     [
