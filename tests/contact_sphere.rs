@@ -657,3 +657,69 @@ fn outside_the_window_the_top_settles_on_the_tilted_rolling_state() {
     assert!((theta - theta_star).abs() < 1e-6, "{theta} vs {theta_star}");
     assert!((phi_dot.abs() / rate(theta_star) - 1.0).abs() < 1e-6);
 }
+
+/// Inside the window (`I₁/I₃ = 8/7`), the threshold of full inversion:
+/// `λ_thres = √(m g R³ I₃ α) (1 + α)² / √(1 + α − I₁/I₃)` (SIGMA 10 (2014)
+/// 017), reached here at the spin `ω_thres = λ_thres / (I₃ (R cos θ₀ − a))`
+/// (λ of a spin about the axis, by hand). At 0.9 ω_thres the top settles
+/// on the tilted rolling state (the root of the equations of the previous
+/// test, which has one there); at 1.1 ω_thres, where those equations have
+/// no root, it turns over fully.
+#[test]
+fn the_inversion_threshold_separates_tilted_and_inverted_ends() {
+    let alpha = A / R;
+    let lambda_thres = (M * G * R.powi(3) * I3 * alpha).sqrt() * (1.0 + alpha).powi(2)
+        / (1.0 + alpha - I1 / I3).sqrt();
+    let omega_thres = lambda_thres / (I3 * (R * THETA0.cos() - A));
+    let rate = |th: f64| (M * G * R * alpha / (alpha * I3 + (I1 - I3) * th.cos())).sqrt();
+    let residual = |th: f64, lambda: f64| {
+        rate(th) * R * (I1 * th.sin().powi(2) + I3 * (th.cos() - alpha).powi(2)) - lambda
+    };
+    let (top, _) = leine_glocker(Friction::try_viscous(0.3).unwrap());
+    let q = DQuat::from_rotation_x(THETA0);
+    let h = 4e-5;
+    let mut ends = Vec::new();
+    for (factor, duration) in [(0.9, 80.0), (1.1, 40.0)] {
+        let mut s = top
+            .try_state_on_ground(
+                q,
+                q * DVec3::new(0.0, 0.0, factor * omega_thres),
+                DVec2::ZERO,
+            )
+            .unwrap();
+        let lambda = top.jellett(&s);
+        assert!((lambda / (factor * lambda_thres) - 1.0).abs() < 1e-14);
+        top.try_advance(&mut s, 0.0, h, (duration / h).round() as usize, |_, _| {})
+            .unwrap();
+        let theta = (s.world_from_body.normalize() * DVec3::Z).z.acos();
+        // Sign changes of the residual on a 0.5° grid over (0, π).
+        let grid: Vec<f64> = (1..360).map(|k| (k as f64 * 0.5).to_radians()).collect();
+        let roots: Vec<f64> = grid
+            .windows(2)
+            .filter(|w| residual(w[0], lambda).signum() != residual(w[1], lambda).signum())
+            .map(|w| w[0])
+            .collect();
+        ends.push((factor, theta, roots));
+    }
+    eprintln!("ω_thres {omega_thres} rad/s, λ_thres {lambda_thres:e}; ends {ends:?}");
+    let (_, theta_below, roots_below) = &ends[0];
+    assert_eq!(roots_below.len(), 1, "{roots_below:?}");
+    let (mut lo, mut hi) = (roots_below[0], roots_below[0] + 0.5f64.to_radians());
+    let lambda_below = 0.9 * lambda_thres;
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if residual(lo, lambda_below).signum() == residual(mid, lambda_below).signum() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    // Measured (h = 4e-5 s): ω_thres = 120.35 rad/s; at 0.9 ω_thres after
+    // 80 s θ = 2.7229557 vs 2.7229562 rad (156.01°; 5e-7 rad, still
+    // settling); at 1.1 ω_thres after 40 s θ = 3.1025 rad (177.8°).
+    eprintln!("below: θ {theta_below} vs tilted state {lo} rad");
+    assert!((theta_below - lo).abs() < 1e-4, "{theta_below} vs {lo}");
+    let (_, theta_above, roots_above) = &ends[1];
+    assert!(roots_above.is_empty(), "{roots_above:?}");
+    assert!(*theta_above > 175f64.to_radians(), "{theta_above}");
+}
