@@ -316,7 +316,10 @@ fn bad_input_gives_typed_errors() {
             ..
         })
     ));
-    assert!("rolling".parse::<FrictionModel>().is_err());
+    assert!(matches!(
+        "rolling".parse::<FrictionModel>(),
+        Err(DynamicsError::UnknownFriction { .. })
+    ));
     // Non-finite states and steps.
     let (top, s) = leine_glocker(Friction::None);
     assert!(matches!(

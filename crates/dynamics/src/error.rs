@@ -189,6 +189,15 @@ pub enum DynamicsError {
         /// The coefficient of `N`, 1/kg.
         compliance: f64,
     },
+    /// A friction model name other than those of
+    /// [`crate::FrictionModel::ALL`].
+    #[error("unknown friction model `{name}` (known: {known})")]
+    UnknownFriction {
+        /// The name given.
+        name: String,
+        /// The known names, comma-separated.
+        known: String,
+    },
     /// A method name that the registry does not know.
     #[error("unknown method `{name}` (known: {known})")]
     UnknownMethod {

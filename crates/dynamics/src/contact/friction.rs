@@ -54,7 +54,7 @@ impl FromStr for FrictionModel {
         Self::ALL
             .into_iter()
             .find(|m| m.name() == s)
-            .ok_or_else(|| DynamicsError::UnknownMethod {
+            .ok_or_else(|| DynamicsError::UnknownFriction {
                 name: s.to_string(),
                 known: Self::ALL.map(Self::name).join(", "),
             })
