@@ -157,6 +157,47 @@ pub enum DynamicsError {
         /// The methods that can, comma-separated.
         known: &'static str,
     },
+    /// A contact parameter outside its domain (a sphere radius that is
+    /// not positive, a negative friction coefficient, a mass or inertia
+    /// tensor no body has, …).
+    #[error("contact: {parameter} = {value}: {reason}")]
+    InvalidContact {
+        /// The parameter's name (`"radius"`, `"mu"`, `"slip_velocity"`, …).
+        parameter: &'static str,
+        /// The value given (a component, or a leading minor of the inertia).
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// The normal force of a ground contact reached zero: the body lifts
+    /// off the plane, which the contact model does not follow.
+    #[error("the contact lifts off at t = {time} s (normal force {normal_force:e} N)")]
+    ContactLost {
+        /// The lift-off time, s.
+        time: f64,
+        /// The normal force found there, N (≈ 0 when located, negative
+        /// when the step could not be taken).
+        normal_force: f64,
+    },
+    /// No normal force keeps the contact: its coefficient in the
+    /// constraint's second derivative is not positive (Painlevé's paradox
+    /// of strong friction).
+    #[error("the contact is indeterminate at t = {time} s (compliance {compliance:e} 1/kg ≤ 0)")]
+    ContactIndeterminate {
+        /// The time, s (NaN when asked outside a run).
+        time: f64,
+        /// The coefficient of `N`, 1/kg.
+        compliance: f64,
+    },
+    /// A friction model name other than those of
+    /// [`crate::FrictionModel::ALL`].
+    #[error("unknown friction model `{name}` (known: {known})")]
+    UnknownFriction {
+        /// The name given.
+        name: String,
+        /// The known names, comma-separated.
+        known: String,
+    },
     /// A method name that the registry does not know.
     #[error("unknown method `{name}` (known: {known})")]
     UnknownMethod {

@@ -29,6 +29,9 @@
 //!   integrator, in one list ([`FreeBodyMethod::ALL`]) that the CLI, the
 //!   benches and the tests read. [`method`] and [`METHODS`] (and their
 //!   heavy-top twins) are thin wrappers over them;
+//! - a body touching the ground plane with a sphere (the tippe top),
+//!   [`GroundTop`]: the normal force solved from the constraint, friction
+//!   models [`Friction`], lift-off reported ([`contact`]);
 //! - [`World`]: bodies ([`Body`]: mass properties, attitude, spin, a free
 //!   or pivot [`Support`]) under gravity, moved by `step(h)` for game loops
 //!   or `advance_to(t)` for simulations along each body's cheapest exact
@@ -59,6 +62,7 @@
 #![forbid(unsafe_code)]
 
 mod composition;
+pub mod contact;
 mod divergence;
 pub mod elliptic;
 mod error;
@@ -80,6 +84,7 @@ mod state;
 mod world;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
+pub use contact::{Friction, FrictionModel, GroundTop, GroundTopState, SphereContact};
 pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
 pub use error::{Divergence, DynamicsError};
 pub use exact::{ExactFlow, ExactPropagator, ExactSolution};

@@ -1,0 +1,356 @@
+//! The equations of motion of a rigid body touching the ground plane with
+//! one body-fixed sphere: the state, the normal force solved from the
+//! constraint, and the invariants.
+
+use glam::{DMat3, DQuat, DVec2, DVec3};
+
+use super::{Friction, SphereContact};
+use crate::DynamicsError;
+
+/// A rigid body whose sphere touches the plane `z = 0`, gravity `−g ẑ`.
+///
+/// ```text
+/// m v̇_G = N ẑ + F − m g ẑ,   L̇ = ρ × (N ẑ + F),   q̇ = ½ (0, ω) ⊗ q
+/// ω = A I⁻¹ Aᵀ L,   ρ = A c − R ẑ,   F = N f(v_P),   v_P = v_G + ω × ρ
+/// N = [g − ((I_w⁻¹ (L × ω)) × A c)_z − (ω × (ω × A c))_z]
+///     / [1/m + ((I_w⁻¹ (ρ × (ẑ + f))) × A c)_z]
+/// ```
+///
+/// (`I` the inertia tensor about the centre of mass in body axes, `A` the
+/// rotation of the attitude, `L` the angular momentum about the centre of
+/// mass in world axes; the derivation is in the module docs,
+/// [`crate::contact`].)
+///
+/// ```
+/// use glam::{DMat3, DQuat, DVec2, DVec3};
+/// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+/// // Leine & Glocker's tippe top, resting upright: N = m g.
+/// let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?;
+/// let inertia = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+/// let top = GroundTop::try_new(0.006, inertia, sphere, Friction::try_viscous(0.3)?, 9.81)?;
+/// let s = top.try_state_on_ground(DQuat::IDENTITY, DVec3::ZERO, DVec2::ZERO)?;
+/// assert!((top.normal_force(&s)? - 0.006 * 9.81).abs() < 1e-15);
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GroundTop {
+    mass: f64,
+    inertia_body: DMat3,
+    inverse_inertia_body: DMat3,
+    gravity: f64,
+    sphere: SphereContact,
+    friction: Friction,
+}
+
+/// The state of a [`GroundTop`]: centre of mass, its velocity, attitude
+/// and angular momentum about the centre of mass, all in world axes.
+///
+/// The attitude is not renormalised by the integrator (the crate's rule for
+/// its Runge–Kutta methods); every function reads it through `q/|q|`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GroundTopState {
+    /// The centre of mass `r_G`, m.
+    pub com_world: DVec3,
+    /// Its velocity `v_G`, m/s.
+    pub velocity_world: DVec3,
+    /// The attitude, body → world.
+    pub world_from_body: DQuat,
+    /// The angular momentum about the centre of mass `L`, kg·m²/s.
+    pub l_world: DVec3,
+}
+
+/// The time derivative of a [`GroundTopState`], with the normal force that
+/// produced it.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Rates {
+    pub(crate) d_com: DVec3,
+    pub(crate) d_velocity: DVec3,
+    pub(crate) d_attitude: DQuat,
+    pub(crate) d_l: DVec3,
+    /// `N`, newtons.
+    pub(crate) normal_force: f64,
+    /// The coefficient of `N` in the constraint's second derivative, 1/kg;
+    /// not positive means no normal force can keep the contact (Painlevé).
+    pub(crate) compliance: f64,
+}
+
+impl GroundTopState {
+    /// `self + h · rates`, component by component.
+    pub(crate) fn plus(&self, rates: &Rates, h: f64) -> Self {
+        Self {
+            com_world: self.com_world + rates.d_com * h,
+            velocity_world: self.velocity_world + rates.d_velocity * h,
+            world_from_body: self.world_from_body + rates.d_attitude * h,
+            l_world: self.l_world + rates.d_l * h,
+        }
+    }
+
+    /// Whether every component is finite and the attitude is not zero.
+    pub fn is_valid(&self) -> bool {
+        self.com_world.is_finite()
+            && self.velocity_world.is_finite()
+            && self.world_from_body.is_finite()
+            && self.l_world.is_finite()
+            && self.world_from_body.length_squared() > 0.0
+    }
+}
+
+/// A typed error for a bad contact parameter.
+fn invalid(parameter: &'static str, value: f64, reason: &'static str) -> DynamicsError {
+    DynamicsError::InvalidContact {
+        parameter,
+        value,
+        reason,
+    }
+}
+
+impl GroundTop {
+    /// A body of `mass` kg with inertia tensor `inertia_body` about its
+    /// centre of mass (body axes), touching with `sphere`, under gravity
+    /// `g` m/s² along −z.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidContact`] for a mass or `g` that is not
+    /// positive and finite, an inertia tensor that is not finite, symmetric
+    /// and positive definite, or bad friction parameters
+    /// ([`Friction::validate`]).
+    ///
+    /// ```
+    /// use glam::{DMat3, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?;
+    /// let i = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+    /// assert!(GroundTop::try_new(0.006, i, sphere, Friction::None, 9.81).is_ok());
+    /// assert!(GroundTop::try_new(0.006, -i, sphere, Friction::None, 9.81).is_err());
+    /// assert!(GroundTop::try_new(0.006, i, sphere, Friction::Viscous { mu: -0.3 }, 9.81).is_err());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_new(
+        mass: f64,
+        inertia_body: DMat3,
+        sphere: SphereContact,
+        friction: Friction,
+        gravity: f64,
+    ) -> Result<Self, DynamicsError> {
+        if !(mass.is_finite() && mass > 0.0) {
+            return Err(invalid("mass", mass, "must be positive and finite"));
+        }
+        if !(gravity.is_finite() && gravity > 0.0) {
+            return Err(invalid(
+                "gravity",
+                gravity,
+                "must be positive and finite (gravity along −z)",
+            ));
+        }
+        friction.validate()?;
+        let m = inertia_body;
+        if let Some(x) = m.to_cols_array().into_iter().find(|x| !x.is_finite()) {
+            return Err(invalid("inertia", x, "must be finite"));
+        }
+        let asym = (m - m.transpose()).abs().to_cols_array();
+        let scale = m.abs().to_cols_array().into_iter().fold(0.0, f64::max);
+        if let Some(x) = asym.into_iter().find(|x| *x > 1e-12 * scale) {
+            return Err(invalid("inertia", x, "must be symmetric"));
+        }
+        // Sylvester's criterion: the leading minors are positive.
+        let minors = [
+            m.x_axis.x,
+            m.x_axis.x * m.y_axis.y - m.x_axis.y * m.y_axis.x,
+            m.determinant(),
+        ];
+        if let Some(x) = minors.into_iter().find(|x| *x <= 0.0) {
+            return Err(invalid(
+                "inertia",
+                x,
+                "must be positive definite (a leading minor is not positive)",
+            ));
+        }
+        Ok(Self {
+            mass,
+            inertia_body: m,
+            inverse_inertia_body: m.inverse(),
+            gravity,
+            sphere,
+            friction,
+        })
+    }
+
+    /// The mass `m`, kg.
+    pub fn mass(&self) -> f64 {
+        self.mass
+    }
+
+    /// The inertia tensor `I` about the centre of mass, body axes, kg·m².
+    pub fn inertia_body(&self) -> DMat3 {
+        self.inertia_body
+    }
+
+    /// `g`, m/s² (gravity is `−g ẑ`).
+    pub fn gravity(&self) -> f64 {
+        self.gravity
+    }
+
+    /// The contact sphere.
+    pub fn sphere(&self) -> SphereContact {
+        self.sphere
+    }
+
+    /// The friction model.
+    pub fn friction(&self) -> Friction {
+        self.friction
+    }
+
+    /// A state touching the plane: attitude `world_from_body`, angular
+    /// velocity `omega_world`, horizontal centre-of-mass velocity
+    /// `velocity_xy`; the centre of mass above the origin at the height
+    /// where the sphere touches, its vertical velocity the one that keeps
+    /// the contact point on the plane.
+    ///
+    /// ```text
+    /// z_G = R − (A c)_z,   ż_G = −(ω × A c)_z,   L = A I Aᵀ ω
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude or
+    /// a non-finite velocity.
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec2, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?;
+    /// let top = GroundTop::try_new(0.006, DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7)), sphere, Friction::None, 9.81)?;
+    /// let q = DQuat::from_rotation_x(0.1);
+    /// let s = top.try_state_on_ground(q, q * DVec3::new(0.0, 0.0, 180.0), DVec2::ZERO)?;
+    /// assert!(top.gap(&s).abs() < 1e-18 && top.gap_rate(&s).abs() < 1e-18);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_state_on_ground(
+        &self,
+        world_from_body: DQuat,
+        omega_world: DVec3,
+        velocity_xy: DVec2,
+    ) -> Result<GroundTopState, DynamicsError> {
+        if !(world_from_body.is_finite() && world_from_body.length_squared() > 0.0) {
+            return Err(DynamicsError::InvalidState {
+                reason: "the attitude must be a finite, non-zero quaternion",
+            });
+        }
+        if !(omega_world.is_finite() && velocity_xy.is_finite()) {
+            return Err(DynamicsError::InvalidState {
+                reason: "the angular and centre-of-mass velocities must be finite",
+            });
+        }
+        let q = world_from_body.normalize();
+        let c = self.sphere.center_from_com_world(q);
+        let a = DMat3::from_quat(q);
+        Ok(GroundTopState {
+            com_world: DVec3::new(0.0, 0.0, self.sphere.radius() - c.z),
+            velocity_world: DVec3::new(velocity_xy.x, velocity_xy.y, -omega_world.cross(c).z),
+            world_from_body: q,
+            l_world: a * self.inertia_body * a.transpose() * omega_world,
+        })
+    }
+
+    /// The angular velocity in world axes: `ω = A I⁻¹ Aᵀ L`.
+    pub fn omega_world(&self, state: &GroundTopState) -> DVec3 {
+        let a = DMat3::from_quat(state.world_from_body.normalize());
+        a * (self.inverse_inertia_body * (a.transpose() * state.l_world))
+    }
+
+    /// The constraint's residual, the height of the sphere's lowest point:
+    /// `z_G + (A c)_z − R` (m).
+    pub fn gap(&self, state: &GroundTopState) -> f64 {
+        self.sphere.gap(state.com_world, state.world_from_body)
+    }
+
+    /// Its rate, the vertical velocity of the contact point:
+    /// `ż_G + (ω × A c)_z` (m/s).
+    pub fn gap_rate(&self, state: &GroundTopState) -> f64 {
+        let c = self.sphere.center_from_com_world(state.world_from_body);
+        state.velocity_world.z + self.omega_world(state).cross(c).z
+    }
+
+    /// The velocity of the body's material point at the contact:
+    /// `v_P = v_G + ω × ρ` (m/s; horizontal while the contact holds).
+    pub fn slip_velocity(&self, state: &GroundTopState) -> DVec3 {
+        let rho = self.sphere.contact_from_com_world(state.world_from_body);
+        state.velocity_world + self.omega_world(state).cross(rho)
+    }
+
+    /// The mechanical energy, zero potential at `z_G = 0`.
+    ///
+    /// ```text
+    /// E = ½ m |v_G|² + ½ L·ω + m g z_G
+    /// ```
+    pub fn energy(&self, state: &GroundTopState) -> f64 {
+        0.5 * self.mass * state.velocity_world.length_squared()
+            + 0.5 * state.l_world.dot(self.omega_world(state))
+            + self.mass * self.gravity * state.com_world.z
+    }
+
+    /// Jellett's integral, conserved by every contact force of a sphere
+    /// whose centre lies on an axis of symmetry of the inertia tensor.
+    ///
+    /// ```text
+    /// λ = L · (R ẑ − A c) = −L · ρ = L · (r_G − r_P)
+    /// ```
+    pub fn jellett(&self, state: &GroundTopState) -> f64 {
+        -state
+            .l_world
+            .dot(self.sphere.contact_from_com_world(state.world_from_body))
+    }
+
+    /// The normal force `N` the plane exerts in `state`, newtons.
+    ///
+    /// # Errors
+    /// [`DynamicsError::ContactIndeterminate`] when no normal force can
+    /// keep the contact (the coefficient of `N` in the constraint is not
+    /// positive: Painlevé's paradox, possible with strong friction);
+    /// [`DynamicsError::InvalidState`] for a non-finite state. A negative
+    /// value is returned as it is: the contact would need to pull.
+    pub fn normal_force(&self, state: &GroundTopState) -> Result<f64, DynamicsError> {
+        if !state.is_valid() {
+            return Err(DynamicsError::InvalidState {
+                reason: "the ground-top state is not finite",
+            });
+        }
+        let r = self.rates(state);
+        if r.compliance > 0.0 {
+            Ok(r.normal_force)
+        } else {
+            Err(DynamicsError::ContactIndeterminate {
+                time: f64::NAN,
+                compliance: r.compliance,
+            })
+        }
+    }
+
+    /// The vector field and the normal force at `state`.
+    pub(crate) fn rates(&self, state: &GroundTopState) -> Rates {
+        let q = state.world_from_body.normalize();
+        let a = DMat3::from_quat(q);
+        let inverse_world = a * self.inverse_inertia_body * a.transpose();
+        let l = state.l_world;
+        let omega = inverse_world * l;
+        let c = a * self.sphere.center_body();
+        let rho = c - self.sphere.radius() * DVec3::Z;
+        let slip = state.velocity_world + omega.cross(rho);
+        let e = DVec3::Z
+            + self
+                .friction
+                .force_per_normal(DVec3::new(slip.x, slip.y, 0.0));
+        let gyroscopic = inverse_world * l.cross(omega);
+        let per_newton = inverse_world * rho.cross(e);
+        let compliance = 1.0 / self.mass + per_newton.cross(c).z;
+        let free = gyroscopic.cross(c).z + omega.cross(omega.cross(c)).z;
+        let normal_force = (self.gravity - free) / compliance;
+        Rates {
+            d_com: state.velocity_world,
+            d_velocity: e * (normal_force / self.mass) - self.gravity * DVec3::Z,
+            d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
+            d_l: rho.cross(e) * normal_force,
+            normal_force,
+            compliance,
+        }
+    }
+}

@@ -1,0 +1,106 @@
+//! Bodies on a table: a rigid body touching the ground plane `z = 0`
+//! (gravity `−g ẑ`) with a body-fixed sphere — the ball-ended top, the
+//! tippe top.
+//!
+//! - [`SphereContact`]: the sphere's geometry (radius `R`, centre `c` in
+//!   body axes from the centre of mass) and the constraint's residual;
+//! - [`Friction`] ([`FrictionModel`] names it): `none`, `viscous`,
+//!   regularised Coulomb `sliding`;
+//! - [`GroundTop`], [`GroundTopState`]: the equations of motion, energy,
+//!   Jellett's integral, the normal force; a fixed-step RK4 with lift-off
+//!   located and reported ([`GroundTop::try_step`]).
+//!
+//! # The model
+//! State: centre of mass `r_G`, its velocity `v_G`, attitude `q`
+//! (body → world, rotation `A`), angular momentum about the centre of mass
+//! in world axes `L`. Inertia `I` about the centre of mass in body axes
+//! (any symmetric positive-definite tensor), in world axes
+//! `I_w = A I Aᵀ`, `ω = I_w⁻¹ L`. The sphere's centre seen from the centre
+//! of mass is `A c`; its lowest point, the contact point, is
+//! `r_P = r_G + ρ` with `ρ = A c − R ẑ`.
+//!
+//! While the sphere touches, the holonomic constraint and its derivatives
+//! are (`(ω × ẑ)_z = 0`, so the vertical velocity of the contact point is
+//! `ġ`):
+//!
+//! ```text
+//! g  = z_G + (A c)_z − R = 0
+//! ġ  = ż_G + (ω × A c)_z = (v_P)_z,          v_P = v_G + ω × ρ
+//! g̈  = z̈_G + (ω̇ × A c)_z + (ω × (ω × A c))_z = 0
+//! ```
+//!
+//! The plane pushes with `N ẑ` and rubs with `F = N f(v_P)`, `f` the
+//! horizontal force per newton of [`Friction`] evaluated on the horizontal
+//! part of `v_P` (not on accelerations), so the contact force is `N e`,
+//! `e = ẑ + f`. Newton and Euler about the centre of mass, with
+//! `d(I_w ω)/dt = I_w ω̇ + ω × L`:
+//!
+//! ```text
+//! m v̇_G = N e − m g ẑ
+//! L̇     = ρ × N e
+//! ω̇     = I_w⁻¹ (L̇ + L × ω)
+//! q̇     = ½ (0, ω) ⊗ q
+//! ```
+//!
+//! Putting `z̈_G = N/m − g` (`e_z = 1`) and `ω̇` into `g̈ = 0` gives one
+//! linear equation for `N` — the DAE of index 3 reduced to an ODE, as in
+//! the tippe-top models of Leine & Glocker (2003), Ueda, Sasaki & Watanabe
+//! (2005) and Rauch-Wojciechowski & Rutstam (2014):
+//!
+//! ```text
+//! N = [g − ((I_w⁻¹ (L × ω)) × A c)_z − (ω × (ω × A c))_z] / κ
+//! κ = 1/m + ((I_w⁻¹ (ρ × e)) × A c)_z
+//! ```
+//!
+//! Without friction `κ = 1/m + (ρ × ẑ)·I_w⁻¹(ρ × ẑ) > 0`; with strong
+//! friction `κ` may vanish (Painlevé), reported as
+//! [`crate::DynamicsError::ContactIndeterminate`]. `N ≤ 0` is lift-off,
+//! reported as [`crate::DynamicsError::ContactLost`] with its time: the
+//! model never lets the contact pull.
+//!
+//! # What is conserved
+//! The energy `E = ½ m |v_G|² + ½ L·ω + m g z_G` changes by the power of the
+//! contact force at the contact point's velocity:
+//!
+//! ```text
+//! Ė = N e · v_P = N ġ + N f·v_P  =  N f·v_P ≤ 0   on the constraint
+//! ```
+//!
+//! so it is conserved without friction and never increases with it.
+//! Jellett's integral `λ = L·(R ẑ − A c) = −L·ρ` (for a tippe top
+//! `A c = a ŝ`, `ŝ` the unit vector from the centre of mass to the ball's
+//! centre): with `ρ̇ = ω × A c`,
+//!
+//! ```text
+//! λ̇ = −(ρ × N e)·ρ − L·(ω × A c) = −L·(ω × A c)
+//! ```
+//!
+//! and for `c` on an axis of symmetry of `I` (`I₁ = I₂`, `c ∥ e₃`),
+//! `L = I₁ ω + (I₃ − I₁)(ω·ĉ) ĉ` is in the plane of `ω` and `ĉ`, so
+//! `λ̇ = 0` for every force applied at the contact point, whatever the
+//! friction.
+//!
+//! # Numerics
+//! Classical RK4 at a fixed step on `(r_G, v_G, q, L)`: `q` is never
+//! renormalised (every function reads `q/|q|`), the constraint is never
+//! projected, and nothing conserved is restored. The energy, `λ` and the
+//! constraint's residuals `g`, `ġ` (which the ODE keeps at `g̈ = 0` only
+//! up to the method's error) drift by `O(h⁴)` and are the measures of
+//! accuracy (tests in `tests/contact_sphere.rs`).
+//!
+//! # Conventions
+//! A tippe top's body axis `e₃` points to the stem; the ball's centre lies
+//! at `c = +a e₃` from the centre of mass (the centre of mass is `a` *below*
+//! the ball's centre when the stem points up, `α = a/R`). Upright, the
+//! centre of mass is at height `R − a`; standing on the inverted ball, at
+//! `R + a`. From `λ`, spinning at `ω₀` about `e₃` tilted by `θ₀`, a full
+//! inversion ends at `ω_z = ω₀ (cos θ₀ − α)/(1 + α)`.
+
+mod friction;
+mod ground_top;
+mod rk4;
+mod sphere_contact;
+
+pub use self::friction::{Friction, FrictionModel};
+pub use self::ground_top::{GroundTop, GroundTopState};
+pub use self::sphere_contact::SphereContact;

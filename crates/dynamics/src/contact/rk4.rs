@@ -1,0 +1,179 @@
+//! Fixed-step classical RK4 for a [`GroundTop`], with lift-off detection.
+
+use super::ground_top::Rates;
+use super::{GroundTop, GroundTopState};
+use crate::{Divergence, DynamicsError};
+
+/// The method's name in [`DynamicsError::Diverged`].
+const METHOD: &str = "ground-top rk4";
+
+/// Bisection steps that locate a lift-off inside a step (2⁻⁶⁰ of it).
+const BISECTIONS: usize = 60;
+
+/// One classical RK4 step and the smallest normal force and compliance of
+/// its four stages.
+fn rk4(top: &GroundTop, s: &GroundTopState, h: f64) -> (GroundTopState, f64, f64) {
+    let k1 = top.rates(s);
+    let k2 = top.rates(&s.plus(&k1, 0.5 * h));
+    let k3 = top.rates(&s.plus(&k2, 0.5 * h));
+    let k4 = top.rates(&s.plus(&k3, h));
+    let sum = Rates {
+        d_com: k1.d_com + (k2.d_com + k3.d_com) * 2.0 + k4.d_com,
+        d_velocity: k1.d_velocity + (k2.d_velocity + k3.d_velocity) * 2.0 + k4.d_velocity,
+        d_attitude: k1.d_attitude + (k2.d_attitude + k3.d_attitude) * 2.0 + k4.d_attitude,
+        d_l: k1.d_l + (k2.d_l + k3.d_l) * 2.0 + k4.d_l,
+        normal_force: 0.0,
+        compliance: 0.0,
+    };
+    let stages = [k1, k2, k3, k4];
+    let n = stages
+        .iter()
+        .map(|k| k.normal_force)
+        .fold(f64::INFINITY, f64::min);
+    let c = stages
+        .iter()
+        .map(|k| k.compliance)
+        .fold(f64::INFINITY, f64::min);
+    (s.plus(&sum, h / 6.0), n, c)
+}
+
+impl GroundTop {
+    /// Advances `state`, at time `time`, by one classical RK4 step of `h`
+    /// seconds (Kutta 1901; the attitude is not renormalised, the crate's
+    /// rule for its Runge–Kutta methods, and the constraint is not
+    /// projected: its drift is the method's error, measured by
+    /// [`GroundTop::gap`]).
+    ///
+    /// ```text
+    /// x(t + h) = x + h (k₁ + 2k₂ + 2k₃ + k₄)/6
+    /// ```
+    ///
+    /// # Errors
+    /// - [`DynamicsError::ContactLost`] when the normal force reaches zero
+    ///   inside the step (lift-off; the body would leave the plane). The
+    ///   instant is located by bisection on the step size, and `state` is
+    ///   left there (`N ≈ 0`); when only an inner stage saw `N ≤ 0`, the
+    ///   step is not taken and the time is the step's start.
+    /// - [`DynamicsError::ContactIndeterminate`] when no normal force can
+    ///   keep the contact (see [`GroundTop::normal_force`]).
+    /// - [`DynamicsError::InvalidStep`] for `h` not positive and finite,
+    ///   [`DynamicsError::InvalidState`] for a non-finite `state`,
+    ///   [`DynamicsError::Diverged`] when the step leaves a non-finite state.
+    ///   `state` is unchanged on these errors.
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec2, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?;
+    /// let inertia = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+    /// let top = GroundTop::try_new(0.006, inertia, sphere, Friction::None, 9.81)?;
+    /// let q = DQuat::from_rotation_x(0.1);
+    /// let mut s = top.try_state_on_ground(q, q * DVec3::new(0.0, 0.0, 180.0), DVec2::ZERO)?;
+    /// let e0 = top.energy(&s);
+    /// for n in 0..1000 {
+    ///     top.try_step(&mut s, n as f64 * 1e-4, 1e-4)?;
+    /// }
+    /// assert!((top.energy(&s) - e0).abs() < 1e-9 * e0);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_step(
+        &self,
+        state: &mut GroundTopState,
+        time: f64,
+        h: f64,
+    ) -> Result<(), DynamicsError> {
+        if !(h.is_finite() && h > 0.0) {
+            return Err(DynamicsError::InvalidStep { h });
+        }
+        if !state.is_valid() {
+            return Err(DynamicsError::InvalidState {
+                reason: "the ground-top state is not finite",
+            });
+        }
+        let (next, n_min, c_min) = rk4(self, state, h);
+        if c_min <= 0.0 {
+            return Err(DynamicsError::ContactIndeterminate {
+                time,
+                compliance: c_min,
+            });
+        }
+        if !next.is_valid() || !n_min.is_finite() {
+            return Err(DynamicsError::Diverged {
+                method: METHOD,
+                time: time + h,
+                reason: Divergence::NonFinite,
+            });
+        }
+        let n_end = self.rates(&next).normal_force;
+        if n_end <= 0.0 {
+            let (tau, at) = self.lift_off_in(state, h);
+            *state = at;
+            return Err(DynamicsError::ContactLost {
+                time: time + tau,
+                normal_force: self.rates(&at).normal_force,
+            });
+        }
+        if n_min <= 0.0 {
+            return Err(DynamicsError::ContactLost {
+                time,
+                normal_force: n_min,
+            });
+        }
+        *state = next;
+        Ok(())
+    }
+
+    /// The instant `τ ∈ (0, h]` where `N` along the RK4 step from `state`
+    /// reaches zero (bisection; `N > 0` at the start, `≤ 0` at `h`), and the
+    /// state there.
+    fn lift_off_in(&self, state: &GroundTopState, h: f64) -> (f64, GroundTopState) {
+        let (mut lo, mut hi) = (0.0, h);
+        for _ in 0..BISECTIONS {
+            let mid = 0.5 * (lo + hi);
+            if self.rates(&rk4(self, state, mid).0).normal_force > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        (hi, rk4(self, state, hi).0)
+    }
+
+    /// Takes `steps` steps of `h` from `time`, calling `observe(t, state)`
+    /// after each, and returns the final time.
+    ///
+    /// # Errors
+    /// As [`GroundTop::try_step`], at the first step that fails (`state`
+    /// left as that function says).
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec2, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?;
+    /// let inertia = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+    /// let top = GroundTop::try_new(0.006, inertia, sphere, Friction::try_viscous(0.3)?, 9.81)?;
+    /// let q = DQuat::from_rotation_x(0.1);
+    /// let mut s = top.try_state_on_ground(q, q * DVec3::new(0.0, 0.0, 180.0), DVec2::ZERO)?;
+    /// let lambda0 = top.jellett(&s);
+    /// let t = top.try_advance(&mut s, 0.0, 1e-4, 1000, |_, _| {})?;
+    /// assert!((t - 0.1).abs() < 1e-12);
+    /// assert!((top.jellett(&s) - lambda0).abs() < 1e-10 * lambda0.abs());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_advance(
+        &self,
+        state: &mut GroundTopState,
+        time: f64,
+        h: f64,
+        steps: usize,
+        mut observe: impl FnMut(f64, &GroundTopState),
+    ) -> Result<f64, DynamicsError> {
+        let mut t = time;
+        for n in 0..steps {
+            self.try_step(state, t, h)?;
+            t = time + (n + 1) as f64 * h;
+            observe(t, state);
+        }
+        Ok(t)
+    }
+}
