@@ -30,7 +30,7 @@
 //! there (the best of `--repeat` runs), then the successive differences,
 //! the observed orders, and the largest step whose answer is within 1e-6
 //! relative of the finest. Then the state after 15 s (tilt θ of the axis,
-//! E/E₀), the numbers MuJoCo's runs are compared with (for the tutorial
+//! E/E₀, the drift of Jellett's λ), the numbers MuJoCo's runs are compared with (for the tutorial
 //! top only meaningful before its stem would touch, θ < 136°).
 
 use std::process::ExitCode;
@@ -171,22 +171,23 @@ fn time_to_horizontal(case: &Case, h: f64) -> Result<(Option<f64>, usize), Dynam
     Ok((None, steps))
 }
 
-/// The tilt (degrees) and E/E₀ after `END_TIME` s at `END_STEP`, or the
+/// The tilt (degrees), E/E₀ and |λ/λ₀ − 1| after `END_TIME` s at `END_STEP`, or the
 /// error that stopped the run (lift-off) as text.
 fn end_state(case: &Case) -> String {
     let mut s = case.start;
-    let e0 = case.top.energy(&s);
+    let (e0, l0) = (case.top.energy(&s), case.top.jellett(&s));
     let steps = (END_TIME / END_STEP).round() as usize;
     match case
         .top
         .try_advance(&mut s, 0.0, END_STEP, steps, |_, _| {})
     {
         Ok(_) => format!(
-            "{:.2},{:.4}",
+            "{:.2},{:.4},{:.1e}",
             axis_z(&s).clamp(-1.0, 1.0).acos().to_degrees(),
-            case.top.energy(&s) / e0
+            case.top.energy(&s) / e0,
+            (case.top.jellett(&s) / l0 - 1.0).abs()
         ),
-        Err(e) => format!("stopped: {e},"),
+        Err(e) => format!("stopped: {e},,"),
     }
 }
 
@@ -270,7 +271,9 @@ fn run(csv: bool, repeat: usize) -> Result<(), DynamicsError> {
             if csv {
                 println!("# {} end,{END_STEP:e},{end}", case.name);
             } else {
-                println!("  after {END_TIME} s at dt = {END_STEP:e}: θ (deg), E/E0 = {end}");
+                println!(
+                    "  after {END_TIME} s at dt = {END_STEP:e}: θ (deg), E/E0, |λ/λ0 − 1| = {end}"
+                );
             }
         }
     }
