@@ -1,0 +1,85 @@
+//! Criterion timings of the tippe top on the ground plane
+//! (`kreisel::dynamics::GroundTop`): one RK4 step (`GroundTop::try_step`)
+//! of Leine & Glocker's top with each friction model, and the whole run to
+//! the inversion at dt = 1e-4 s (27 095 steps, where the inversion time is
+//! converged to 7e-8 relative at ε = 1 mm/s; `examples/tippe_top_timing.rs`).
+//!
+//! ```text
+//! cargo bench --bench tippe_top
+//! ```
+//!
+//! The MuJoCo side by side is `benches/mujoco_tippe_top.py`; both are in
+//! `BENCHMARKS.md` ("Tops on a table (issue #17)").
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use glam::{DMat3, DQuat, DVec2, DVec3};
+use kreisel::dynamics::{Friction, GroundTop, GroundTopState, SphereContact};
+
+/// Leine & Glocker's top (m = 6 g, I₁ = 8e-7, I₃ = 7e-7 kg m², R = 15 mm,
+/// a = 3 mm) with `friction`, tilted by 0.1 rad, spinning at 180 rad/s.
+fn leine_glocker(friction: Friction) -> (GroundTop, GroundTopState) {
+    let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003)).unwrap();
+    let inertia = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+    let top = GroundTop::try_new(0.006, inertia, sphere, friction, 9.81).unwrap();
+    let q = DQuat::from_rotation_x(0.1);
+    let s = top
+        .try_state_on_ground(q, q * DVec3::new(0.0, 0.0, 180.0), DVec2::ZERO)
+        .unwrap();
+    (top, s)
+}
+
+fn frictions() -> [(&'static str, Friction); 3] {
+    [
+        ("none", Friction::None),
+        ("viscous", Friction::try_viscous(0.3).unwrap()),
+        ("sliding_eps1mm", Friction::try_sliding(0.3, 1e-3).unwrap()),
+    ]
+}
+
+fn step(c: &mut Criterion) {
+    let mut group = c.benchmark_group("tippe_top_step");
+    group
+        .sample_size(20)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1))
+        .throughput(Throughput::Elements(1));
+    for (name, friction) in frictions() {
+        let (top, start) = leine_glocker(friction);
+        group.bench_with_input(BenchmarkId::from_parameter(name), &start, |b, start| {
+            b.iter(|| {
+                let mut s = *start;
+                top.try_step(&mut s, 0.0, black_box(1e-4)).unwrap();
+                s
+            })
+        });
+    }
+    group.finish();
+}
+
+fn to_inversion(c: &mut Criterion) {
+    let mut group = c.benchmark_group("tippe_top_to_inversion_dt1e-4");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(2));
+    let (top, start) = leine_glocker(Friction::try_sliding(0.3, 1e-3).unwrap());
+    group.bench_function("sliding_eps1mm", |b| {
+        b.iter(|| {
+            let (mut s, h) = (start, black_box(1e-4));
+            let mut n = 0usize;
+            while (s.world_from_body.normalize() * DVec3::Z).z > 0.0 {
+                top.try_step(&mut s, n as f64 * h, h).unwrap();
+                n += 1;
+            }
+            assert_eq!(n, 27_095, "the inversion moved");
+            s
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, step, to_inversion);
+criterion_main!(benches);
