@@ -182,12 +182,12 @@ fn end_state(case: &Case) -> String {
         .try_advance(&mut s, 0.0, END_STEP, steps, |_, _| {})
     {
         Ok(_) => format!(
-            "{:.2},{:.4},{:.1e}",
+            "θ = {:.2}°, E/E₀ = {:.4}, |λ/λ₀ − 1| = {:.1e}",
             axis_z(&s).clamp(-1.0, 1.0).acos().to_degrees(),
             case.top.energy(&s) / e0,
             (case.top.jellett(&s) / l0 - 1.0).abs()
         ),
-        Err(e) => format!("stopped: {e},,"),
+        Err(e) => format!("stopped: {e}"),
     }
 }
 
@@ -269,11 +269,12 @@ fn run(csv: bool, repeat: usize) -> Result<(), DynamicsError> {
         {
             let end = end_state(case);
             if csv {
-                println!("# {} end,{END_STEP:e},{end}", case.name);
-            } else {
                 println!(
-                    "  after {END_TIME} s at dt = {END_STEP:e}: θ (deg), E/E0, |λ/λ0 − 1| = {end}"
+                    "# {}: at {END_TIME} s (dt = {END_STEP:e} s): {end}",
+                    case.name
                 );
+            } else {
+                println!("  after {END_TIME} s at dt = {END_STEP:e}: {end}");
             }
         }
     }
