@@ -55,7 +55,8 @@ LEINE_GLOCKER = """
 </mujoco>
 """
 
-# MuJoCo's tutorial notebook (python/tutorial.ipynb), "tippe top" (test data).
+# MuJoCo's tutorial notebook (google-deepmind/mujoco, python/tutorial.ipynb),
+# "tippe top" (test data); its texture, material, light and camera left out.
 TUTORIAL = """
 <mujoco model="tippe top">
   <option integrator="RK4"/>

@@ -21,8 +21,8 @@
 //!   properties computed below by the closed forms; upright, ω = (0, 1,
 //!   200) rad/s in body axes, the ball's centre at rest), with μ = 1 (the
 //!   tutorial's friction) at ε = 1 mm/s and 0.1 mm/s. kreisel models the
-//!   ball only; the stem touches down only after the axis passes ≈ 136°,
-//!   after the horizontal this program reports.
+//!   ball only; the rim of the stem's end touches down only after the
+//!   axis passes ≈ 127°, after the horizontal this program reports.
 //!
 //! For each case and step `dt` (1e-4 … 1.25e-5 s, fixed-step RK4) it prints
 //! the first time the symmetry axis passes the horizontal going down
@@ -31,7 +31,7 @@
 //! the observed orders, and the largest step whose answer is within 1e-6
 //! relative of the finest. Then the state after 15 s (tilt θ of the axis,
 //! E/E₀, the drift of Jellett's λ), the numbers MuJoCo's runs are compared with (for the tutorial
-//! top only meaningful before its stem would touch, θ < 136°).
+//! top only meaningful before its stem would touch, θ < 127°).
 
 use std::process::ExitCode;
 use std::time::Instant;
