@@ -20,25 +20,6 @@ use super::simulation::{Simulation, tilt};
 /// Samples of the run kept for the chart and the GIF's tilt trace (about).
 const SAMPLES: f64 = 2000.0;
 
-/// Fails unless the directory `path` is to be written in exists.
-fn check_directory(path: &Path) -> Result<(), DemoError> {
-    let dir = match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir,
-        _ => Path::new("."),
-    };
-    if dir.is_dir() {
-        Ok(())
-    } else {
-        Err(DemoError::Write {
-            path: path.to_path_buf(),
-            source: std::io::Error::new(
-                std::io::ErrorKind::NotFound,
-                format!("no directory {}", dir.display()),
-            ),
-        })
-    }
-}
-
 /// The GIF, streamed to a temporary file beside the target as the frames
 /// come, renamed over it when complete.
 struct GifRecorder {
@@ -97,27 +78,8 @@ impl GifRecorder {
 /// output that cannot be written; the library's errors; [`DemoError::Gif`],
 /// [`DemoError::Plot`], [`DemoError::Write`] after it.
 pub fn run(options: &Options, mut sim: Simulation, out: &mut dyn Write) -> Result<(), DemoError> {
-    let plot_format = match &options.plot {
-        Some(path) => Some(
-            ImageFormat::from_path(path).ok_or_else(|| DemoError::PlotFormat {
-                path: path.to_path_buf(),
-            })?,
-        ),
-        None => None,
-    };
-    if let Some(path) = &options.gif
-        && path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase)
-            .as_deref()
-            != Some("gif")
-    {
-        return Err(DemoError::GifFormat { path: path.clone() });
-    }
-    for path in options.gif.iter().chain(&options.plot) {
-        check_directory(path)?;
-    }
+    // Checked by Options::validate: a known format in an existing directory.
+    let plot_format = options.plot.as_deref().and_then(ImageFormat::from_path);
     let mut gif = options
         .gif
         .as_deref()

@@ -127,10 +127,16 @@ where
             return Ok(());
         }
         Err(e) => {
+            // clap's first paragraph (the error and, for a bad value, the
+            // possible values) on one line.
             let text = e.to_string();
-            let line = text.lines().next().unwrap_or("bad arguments");
+            let line: Vec<&str> = text
+                .lines()
+                .map(str::trim)
+                .take_while(|l| !l.is_empty())
+                .collect();
             return Err(DemoError::Usage(
-                line.trim_start_matches("error: ").to_owned(),
+                line.join(" ").trim_start_matches("error: ").to_owned(),
             ));
         }
     };

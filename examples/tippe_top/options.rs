@@ -1,9 +1,10 @@
 //! The demo's command line.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use clap::Parser;
 use kreisel::dynamics::Friction;
+use kreisel_plot::ImageFormat;
 
 use super::DemoError;
 
@@ -62,6 +63,25 @@ pub const MAX_DURATION: f64 = 1000.0;
 /// The shortest and longest steps accepted, s.
 pub const DT_RANGE: (f64, f64) = (1e-7, 1e-3);
 
+/// Fails unless the directory `path` is to be written in exists.
+fn check_directory(path: &Path) -> Result<(), DemoError> {
+    let dir = match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    if dir.is_dir() {
+        Ok(())
+    } else {
+        Err(DemoError::Write {
+            path: path.to_path_buf(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                format!("no directory {}", dir.display()),
+            ),
+        })
+    }
+}
+
 /// `Err(DemoError::Option)` unless `ok`.
 fn check(ok: bool, name: &'static str, value: f64, range: &'static str) -> Result<(), DemoError> {
     if ok {
@@ -72,10 +92,12 @@ fn check(ok: bool, name: &'static str, value: f64, range: &'static str) -> Resul
 }
 
 impl Options {
-    /// Checks the numbers.
+    /// Checks the numbers and the output files (before the run is spent on them).
     ///
     /// # Errors
-    /// [`DemoError::Option`] naming the first option out of range.
+    /// [`DemoError::Option`] naming the first option out of range;
+    /// [`DemoError::GifFormat`], [`DemoError::PlotFormat`], [`DemoError::Write`]
+    /// for an output of the wrong kind or in a missing directory.
     pub fn validate(&self) -> Result<(), DemoError> {
         check(
             self.duration > 0.0 && self.duration <= MAX_DURATION,
@@ -112,7 +134,22 @@ impl Options {
             "--slip-velocity",
             self.slip_velocity,
             "positive and finite",
-        )
+        )?;
+        if let Some(path) = &self.gif {
+            let ext = path.extension().and_then(|e| e.to_str());
+            if !ext.is_some_and(|e| e.eq_ignore_ascii_case("gif")) {
+                return Err(DemoError::GifFormat { path: path.clone() });
+            }
+        }
+        if let Some(path) = &self.plot
+            && ImageFormat::from_path(path).is_none()
+        {
+            return Err(DemoError::PlotFormat { path: path.clone() });
+        }
+        for path in self.gif.iter().chain(&self.plot) {
+            check_directory(path)?;
+        }
+        Ok(())
     }
 
     /// The friction model with its parameters.
