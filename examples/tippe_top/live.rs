@@ -1,6 +1,7 @@
 //! The window (minifb, X11, software rendering): the side view and the
 //! tilt chart of [`super::drawing`], the simulation advanced in real time
-//! until `--duration`, then held until closed. Keys: q or Esc quit.
+//! until `--duration` (the physics printed then), then held until closed.
+//! Keys: q or Esc quit.
 
 use std::io::Write;
 use std::time::Instant;
@@ -58,6 +59,7 @@ pub fn run(
     window.set_target_fps(60);
     let mut tilts = vec![(0.0, tilt(&sim.state).to_degrees())];
     let mut owed = 0.0;
+    let mut reported = false;
     let mut last = Instant::now();
     while window.is_open() && !window.is_key_down(Key::Escape) && !window.is_key_down(Key::Q) {
         let now = Instant::now();
@@ -77,13 +79,22 @@ pub fn run(
             duration: options.duration,
             inverted_at: sim.events.inverted_at,
         })?;
+        if !reported && (sim.time >= options.duration || sim.stopped()) {
+            for line in result_lines(&sim) {
+                writeln!(out, "{line}")?;
+            }
+            out.flush()?;
+            reported = true;
+        }
         if let Err(e) = window.update_with_buffer(&pixels, WIDTH as usize, HEIGHT as usize) {
             writeln!(out, "window closed: {e}")?;
             break;
         }
     }
-    for line in result_lines(&sim) {
-        writeln!(out, "{line}")?;
+    if !reported {
+        for line in result_lines(&sim) {
+            writeln!(out, "{line}")?;
+        }
     }
     Ok(Outcome::Closed)
 }
