@@ -160,3 +160,39 @@ fn bad_arguments_are_one_line_errors() {
         assert_eq!(e.lines().count(), 1, "{args:?}: {e}");
     }
 }
+
+#[test]
+fn readme_example_prints_what_the_readme_shows() {
+    const COMMAND: &str = "cargo run --release --example tippe_top -- ";
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(root.join("README.md")).expect("README.md");
+    let lines: Vec<&str> = readme.lines().collect();
+    let at = lines
+        .iter()
+        .position(|l| l.starts_with(COMMAND))
+        .expect("the README's tippe-top command");
+    let rest = &lines[at + 1..];
+    let open = rest
+        .iter()
+        .position(|l| *l == "```text")
+        .expect("a ```text block");
+    assert!(rest[..open].iter().any(|l| l.trim() == "prints"));
+    let expected: Vec<&str> = rest[open + 1..]
+        .iter()
+        .take_while(|l| !l.starts_with("```"))
+        .copied()
+        .collect();
+    // The chart goes to a scratch directory; its README path is put back.
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("tippe_top_readme");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scratch = format!("{}/", dir.display());
+    let args: Vec<String> = lines[at][COMMAND.len()..]
+        .split_whitespace()
+        .map(|a| a.replace("docs/", &scratch))
+        .collect();
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let printed = run_demo(&args).expect("the README's command runs");
+    let printed = printed.replace(&scratch, "docs/");
+    assert_eq!(printed.lines().collect::<Vec<_>>(), expected);
+}
