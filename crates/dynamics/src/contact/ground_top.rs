@@ -69,6 +69,8 @@ pub(crate) struct Rates {
     pub(crate) d_l: DVec3,
     /// `N`, newtons.
     pub(crate) normal_force: f64,
+    /// The whole contact force `N ẑ + F`, world axes, newtons.
+    pub(crate) contact_force: DVec3,
     /// The coefficient of `N` in the constraint's second derivative, 1/kg;
     /// not positive means no normal force can keep the contact (Painlevé).
     pub(crate) compliance: f64,
@@ -210,9 +212,16 @@ impl GroundTop {
     /// z_G = R − (A c)_z,   ż_G = −(ω × A c)_z,   L = A I Aᵀ ω
     /// ```
     ///
+    /// With [`Friction::Rolling`] the velocities must already satisfy the
+    /// rolling constraint `v_P = v_G + ω × ρ = 0` (the model keeps `v_P`
+    /// constant, so a start with slip would slide for ever at constant
+    /// slip); [`GroundTop::try_rolling_state_on_ground`] sets `v_G` from
+    /// `ω`.
+    ///
     /// # Errors
-    /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude or
-    /// a non-finite velocity.
+    /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude, a
+    /// non-finite velocity, or, with [`Friction::Rolling`], a horizontal
+    /// slip `|v_P|` above `1e-12 (|v_G| + |ω| |ρ|)`.
     ///
     /// ```
     /// use glam::{DMat3, DQuat, DVec2, DVec3};
@@ -243,12 +252,70 @@ impl GroundTop {
         let q = world_from_body.normalize();
         let c = self.sphere.center_from_com_world(q);
         let a = DMat3::from_quat(q);
-        Ok(GroundTopState {
+        let state = GroundTopState {
             com_world: DVec3::new(0.0, 0.0, self.sphere.radius() - c.z),
             velocity_world: DVec3::new(velocity_xy.x, velocity_xy.y, -omega_world.cross(c).z),
             world_from_body: q,
             l_world: a * self.inertia_body * a.transpose() * omega_world,
-        })
+        };
+        if self.friction == Friction::Rolling {
+            let rho = c - self.sphere.radius() * DVec3::Z;
+            let scale = state.velocity_world.length() + omega_world.length() * rho.length();
+            if self.slip_velocity(&state).length() > 1e-12 * scale {
+                return Err(DynamicsError::InvalidState {
+                    reason: "rolling without slipping needs v_G = −ω × ρ at the start \
+                             (use try_rolling_state_on_ground)",
+                });
+            }
+        }
+        Ok(state)
+    }
+
+    /// A state touching the plane and rolling without slipping: as
+    /// [`GroundTop::try_state_on_ground`], with the centre of mass moving
+    /// so that the contact point is at rest.
+    ///
+    /// ```text
+    /// z_G = R − (A c)_z,   v_G = −ω × ρ,   ρ = A c − R ẑ,   L = A I Aᵀ ω
+    /// ```
+    ///
+    /// (the vertical component `−(ω × ρ)_z = −(ω × A c)_z` is the one of
+    /// [`GroundTop::try_state_on_ground`]). Any friction model accepts it.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude or
+    /// a non-finite angular velocity.
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?;
+    /// let i = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+    /// let top = GroundTop::try_new(0.006, i, sphere, Friction::Rolling, 9.81)?;
+    /// let q = DQuat::from_rotation_x(0.5);
+    /// let s = top.try_rolling_state_on_ground(q, DVec3::new(3.0, -20.0, 40.0))?;
+    /// assert!(top.slip_velocity(&s).length() < 1e-15);
+    /// assert!(top.gap(&s).abs() < 1e-18);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_rolling_state_on_ground(
+        &self,
+        world_from_body: DQuat,
+        omega_world: DVec3,
+    ) -> Result<GroundTopState, DynamicsError> {
+        if !(world_from_body.is_finite() && world_from_body.length_squared() > 0.0) {
+            return Err(DynamicsError::InvalidState {
+                reason: "the attitude must be a finite, non-zero quaternion",
+            });
+        }
+        if !omega_world.is_finite() {
+            return Err(DynamicsError::InvalidState {
+                reason: "the angular velocity must be finite",
+            });
+        }
+        let rho = self.sphere.contact_from_com_world(world_from_body);
+        let v = -omega_world.cross(rho);
+        self.try_state_on_ground(world_from_body, omega_world, DVec2::new(v.x, v.y))
     }
 
     /// The angular velocity in world axes: `ω = A I⁻¹ Aᵀ L`.
@@ -325,6 +392,32 @@ impl GroundTop {
         }
     }
 
+    /// The whole contact force `N ẑ + F` the plane exerts in `state`, world
+    /// axes, newtons: `N (ẑ + f(v_P))` for a friction law, the reaction
+    /// `K⁻¹ b` of the rolling constraint for [`Friction::Rolling`] (module
+    /// docs, [`crate::contact`]).
+    ///
+    /// # Errors
+    /// As [`GroundTop::normal_force`].
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// // A homogeneous ball rolling straight: the plane only carries it.
+    /// let (m, r) = (0.2, 0.03);
+    /// let ball = SphereContact::try_new(r, DVec3::ZERO)?;
+    /// let i = DMat3::from_diagonal(DVec3::splat(0.4 * m * r * r));
+    /// let top = GroundTop::try_new(m, i, ball, Friction::Rolling, 9.81)?;
+    /// let s = top.try_rolling_state_on_ground(DQuat::IDENTITY, DVec3::new(10.0, 0.0, 0.0))?;
+    /// let f = top.contact_force(&s)?;
+    /// assert!((f - DVec3::new(0.0, 0.0, m * 9.81)).length() < 1e-15);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn contact_force(&self, state: &GroundTopState) -> Result<DVec3, DynamicsError> {
+        self.normal_force(state)?;
+        Ok(self.rates(state).contact_force)
+    }
+
     /// The vector field and the normal force at `state`.
     pub(crate) fn rates(&self, state: &GroundTopState) -> Rates {
         let q = state.world_from_body.normalize();
@@ -334,6 +427,9 @@ impl GroundTop {
         let omega = inverse_world * l;
         let c = a * self.sphere.center_body();
         let rho = c - self.sphere.radius() * DVec3::Z;
+        if self.friction == Friction::Rolling {
+            return self.rolling_rates(state, inverse_world, omega, c, rho);
+        }
         let slip = state.velocity_world + omega.cross(rho);
         let e = DVec3::Z
             + self
@@ -350,7 +446,52 @@ impl GroundTop {
             d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
             d_l: rho.cross(e) * normal_force,
             normal_force,
+            contact_force: e * normal_force,
             compliance,
         }
     }
+
+    /// The vector field of rolling without slipping: the contact force
+    /// `F` from `K F = b` (module docs, [`crate::contact`]).
+    ///
+    /// ```text
+    /// K = 1/m 𝟙 − [ρ]× I_w⁻¹ [ρ]×
+    /// b = g ẑ + ρ × (I_w⁻¹ (L × ω)) − ω × (ω × A c)
+    /// ```
+    fn rolling_rates(
+        &self,
+        state: &GroundTopState,
+        inverse_world: DMat3,
+        omega: DVec3,
+        c: DVec3,
+        rho: DVec3,
+    ) -> Rates {
+        let cross_rho = skew(rho);
+        let k = DMat3::from_diagonal(DVec3::splat(1.0 / self.mass))
+            - cross_rho * inverse_world * cross_rho;
+        let gyroscopic = inverse_world * state.l_world.cross(omega);
+        let b = self.gravity * DVec3::Z + rho.cross(gyroscopic) - omega.cross(omega.cross(c));
+        let k_inverse = k.inverse();
+        let force = k_inverse * b;
+        Rates {
+            d_com: state.velocity_world,
+            d_velocity: force / self.mass - self.gravity * DVec3::Z,
+            d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
+            d_l: rho.cross(force),
+            normal_force: force.z,
+            contact_force: force,
+            // The vertical compliance with the contact point held
+            // horizontally: 1/(K⁻¹)_zz, positive as K is positive definite.
+            compliance: 1.0 / k_inverse.z_axis.z,
+        }
+    }
+}
+
+/// The cross-product matrix: `skew(r) x = r × x`.
+fn skew(r: DVec3) -> DMat3 {
+    DMat3::from_cols(
+        DVec3::new(0.0, r.z, -r.y),
+        DVec3::new(-r.z, 0.0, r.x),
+        DVec3::new(r.y, -r.x, 0.0),
+    )
 }

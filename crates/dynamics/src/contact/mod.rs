@@ -5,7 +5,8 @@
 //! - [`SphereContact`]: the sphere's geometry (radius `R`, centre `c` in
 //!   body axes from the centre of mass) and the constraint's residual;
 //! - [`Friction`] ([`FrictionModel`] names it): `none`, `viscous`,
-//!   regularised Coulomb `sliding`;
+//!   regularised Coulomb `sliding`, and `rolling` without slipping
+//!   (nonholonomic, conservative);
 //! - [`GroundTop`], [`GroundTopState`]: the equations of motion, energy,
 //!   Jellett's integral, the normal force; a fixed-step RK4 with lift-off
 //!   located and reported ([`GroundTop::try_step`]).
@@ -57,6 +58,41 @@
 //! [`crate::DynamicsError::ContactIndeterminate`]. `N ≤ 0` is lift-off,
 //! reported as [`crate::DynamicsError::ContactLost`] with its time: the
 //! model never lets the contact pull.
+//!
+//! # Rolling without slipping
+//! With [`Friction::Rolling`] the contact point's material velocity is
+//! held at zero, all three components (the vertical one is `ġ`):
+//!
+//! ```text
+//! v_P = v_G + ω × ρ = 0,     ρ̇ = ω × A c   (ẑ is fixed)
+//! ```
+//!
+//! The whole contact force `F` (three unknowns: normal and tangential) is
+//! the reaction that keeps it there. Differentiating, with `v̇_G = F/m − g ẑ`,
+//! `L̇ = ρ × F` and `ω̇ = I_w⁻¹ (ρ × F) + I_w⁻¹ (L × ω)`:
+//!
+//! ```text
+//! 0 = d v_P/dt = F/m − g ẑ + ω̇ × ρ + ω × (ω × A c)
+//!   = F/m − g ẑ − ρ × (I_w⁻¹ (ρ × F)) − ρ × (I_w⁻¹ (L × ω)) + ω × (ω × A c)
+//!
+//! K F = b,   K = 1/m 𝟙 − [ρ]× I_w⁻¹ [ρ]× = 1/m 𝟙 + [ρ]×ᵀ I_w⁻¹ [ρ]×
+//!            b = g ẑ + ρ × (I_w⁻¹ (L × ω)) − ω × (ω × A c)
+//! ```
+//!
+//! (`[ρ]× x = ρ × x`). `K` is symmetric positive definite (`x·K x =
+//! |x|²/m + (ρ × x)·I_w⁻¹(ρ × x)`), so `F` always exists and is unique —
+//! no Painlevé case; its vertical row is the `g̈ = 0` equation of the
+//! friction laws. `F_z ≤ 0` is lift-off, reported as
+//! [`crate::DynamicsError::ContactLost`] as for the other models. The
+//! reaction does no work (`Ė = F·v_P = 0`), so the energy is conserved,
+//! and λ as for every force at the contact point.
+//!
+//! The initial state must satisfy the constraint:
+//! [`GroundTop::try_rolling_state_on_ground`] sets `v_G = −ω × ρ`;
+//! [`GroundTop::try_state_on_ground`] refuses a rolling start with slip.
+//! The ODE keeps `d v_P/dt = 0` exactly, so RK4 keeps `v_P` constant up to
+//! its `O(h⁴)` error per unit time: `v_P` drifts, it is not projected back
+//! (measured in `tests/contact_sphere_rolling.rs`).
 //!
 //! # What is conserved
 //! The energy `E = ½ m |v_G|² + ½ L·ω + m g z_G` changes by the power of the

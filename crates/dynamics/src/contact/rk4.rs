@@ -23,6 +23,7 @@ fn rk4(top: &GroundTop, s: &GroundTopState, h: f64) -> (GroundTopState, f64, f64
         d_attitude: k1.d_attitude + (k2.d_attitude + k3.d_attitude) * 2.0 + k4.d_attitude,
         d_l: k1.d_l + (k2.d_l + k3.d_l) * 2.0 + k4.d_l,
         normal_force: 0.0,
+        contact_force: glam::DVec3::ZERO,
         compliance: 0.0,
     };
     let stages = [k1, k2, k3, k4];
