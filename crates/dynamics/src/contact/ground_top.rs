@@ -1,6 +1,6 @@
 //! The equations of motion of a rigid body touching the ground plane with
-//! one body-fixed sphere or disk rim: the state, the normal force solved from the
-//! constraint, and the invariants.
+//! one body-fixed sphere or disk rim: the state, the normal force solved
+//! from the constraint, and the invariants.
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
@@ -251,7 +251,8 @@ impl GroundTop {
     /// the contact point on the plane.
     ///
     /// ```text
-    /// z_G = R − (A c)_z,   ż_G = −(ω × A c)_z,   L = A I Aᵀ ω
+    /// z_G = −ρ_z,   ż_G = −(ω × ρ)_z,   L = A I Aᵀ ω
+    /// (a sphere: ρ_z = (A c)_z − R, (ω × ρ)_z = (ω × A c)_z)
     /// ```
     ///
     /// With [`Friction::Rolling`] the velocities must already satisfy the
@@ -262,8 +263,8 @@ impl GroundTop {
     ///
     /// # Errors
     /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude, a
-    /// non-finite velocity, a disk lying flat, or, with [`Friction::Rolling`], a horizontal
-    /// slip `|v_P|` above `1e-12 (|v_G| + |ω| |ρ|)`.
+    /// non-finite velocity, a disk lying flat, or, with
+    /// [`Friction::Rolling`], a slip `|v_P|` above `1e-12 (|v_G| + |ω| |ρ|)`.
     ///
     /// ```
     /// use glam::{DMat3, DQuat, DVec2, DVec3};
@@ -322,11 +323,12 @@ impl GroundTop {
     /// so that the contact point is at rest.
     ///
     /// ```text
-    /// z_G = R − (A c)_z,   v_G = −ω × ρ,   ρ = A c − R ẑ,   L = A I Aᵀ ω
+    /// z_G = −ρ_z,   v_G = −ω × ρ,   L = A I Aᵀ ω
     /// ```
     ///
-    /// (the vertical component `−(ω × ρ)_z = −(ω × A c)_z` is the one of
-    /// [`GroundTop::try_state_on_ground`]). Any friction model accepts it.
+    /// (`ρ = A c − R ẑ` for a sphere; the vertical component `−(ω × ρ)_z`
+    /// is the one of [`GroundTop::try_state_on_ground`]). Any friction
+    /// model accepts it.
     ///
     /// # Errors
     /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude, a
@@ -370,14 +372,14 @@ impl GroundTop {
         a * (self.inverse_inertia_body * (a.transpose() * state.l_world))
     }
 
-    /// The constraint's residual, the height of the sphere's lowest point:
-    /// `z_G + (A c)_z − R` (m).
+    /// The constraint's residual, the height of the lowest point:
+    /// `z_G + ρ_z` (m; `z_G + (A c)_z − R` for a sphere).
     pub fn gap(&self, state: &GroundTopState) -> f64 {
         state.com_world.z + self.shape.contact_from_com_world(state.world_from_body).z
     }
 
     /// Its rate, the vertical velocity of the contact point:
-    /// `ż_G + (ω × A c)_z` (m/s).
+    /// `(v_P)_z = ż_G + (ω × ρ)_z` (m/s; `ż_G + (ω × A c)_z` for a sphere).
     pub fn gap_rate(&self, state: &GroundTopState) -> f64 {
         self.slip_velocity(state).z
     }
