@@ -317,7 +317,7 @@ fn bad_input_gives_typed_errors() {
         })
     ));
     assert!(matches!(
-        "rolling".parse::<FrictionModel>(),
+        "coulomb".parse::<FrictionModel>(),
         Err(DynamicsError::UnknownFriction { .. })
     ));
     // Non-finite states and steps.

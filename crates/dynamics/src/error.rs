@@ -179,6 +179,18 @@ pub enum DynamicsError {
         /// when the step could not be taken).
         normal_force: f64,
     },
+    /// A disk rim reached (or stepped through) lying flat: the contact
+    /// point would jump across the rim (its far side touches down, an
+    /// impact the contact model does not follow), or one step turned the
+    /// contact more than a quarter of the way round the rim.
+    #[error(
+        "the disk's contact jumps across its rim in the step from t = {time} s \
+         (it lies flat: the far side touches down; or the step is far too large)"
+    )]
+    DiskFlat {
+        /// The start of the step, s (the state is left there).
+        time: f64,
+    },
     /// No normal force keeps the contact: its coefficient in the
     /// constraint's second derivative is not positive (Painlevé's paradox
     /// of strong friction).

@@ -84,7 +84,9 @@ mod state;
 mod world;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
-pub use contact::{Friction, FrictionModel, GroundTop, GroundTopState, SphereContact};
+pub use contact::{
+    ContactShape, DiskContact, Friction, FrictionModel, GroundTop, GroundTopState, SphereContact,
+};
 pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
 pub use error::{Divergence, DynamicsError};
 pub use exact::{ExactFlow, ExactPropagator, ExactSolution};

@@ -14,7 +14,8 @@ use crate::DynamicsError;
 /// use kreisel_dynamics::FrictionModel;
 /// assert_eq!("sliding".parse::<FrictionModel>()?, FrictionModel::Sliding);
 /// assert_eq!(FrictionModel::Viscous.to_string(), "viscous");
-/// assert!("rolling".parse::<FrictionModel>().is_err());
+/// assert_eq!("rolling".parse::<FrictionModel>()?, FrictionModel::Rolling);
+/// assert!("coulomb".parse::<FrictionModel>().is_err());
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -25,18 +26,21 @@ pub enum FrictionModel {
     Viscous,
     /// Regularised Coulomb friction (`"sliding"`).
     Sliding,
+    /// Rolling without slipping (`"rolling"`).
+    Rolling,
 }
 
 impl FrictionModel {
     /// Every model, in the order the docs list them.
-    pub const ALL: [FrictionModel; 3] = [Self::None, Self::Viscous, Self::Sliding];
+    pub const ALL: [FrictionModel; 4] = [Self::None, Self::Viscous, Self::Sliding, Self::Rolling];
 
-    /// The model's name (`"none"`, `"viscous"`, `"sliding"`).
+    /// The model's name (`"none"`, `"viscous"`, `"sliding"`, `"rolling"`).
     pub fn name(self) -> &'static str {
         match self {
             Self::None => "none",
             Self::Viscous => "viscous",
             Self::Sliding => "sliding",
+            Self::Rolling => "rolling",
         }
     }
 }
@@ -61,20 +65,26 @@ impl FromStr for FrictionModel {
     }
 }
 
-/// The tangential force at the contact point per unit normal force.
+/// The tangential force at the contact point.
 ///
 /// ```text
 /// none:     F = 0
 /// viscous:  F = −μ N v          (μ in s/m)
 /// sliding:  F = −μ N v / √(|v|² + ε²)   (μ the Coulomb coefficient, ε = slip_velocity in m/s)
+/// rolling:  v_P = 0 held by a constraint force (no parameter)
 /// ```
+///
+/// `rolling` is not a law of the slip: the whole contact force (normal
+/// and tangential) is the reaction that keeps the contact point at rest,
+/// solved from `d v_P/dt = 0` (module docs, [`crate::contact`]); it does
+/// no work, so the motion conserves the energy.
 ///
 /// `v` is the horizontal slip velocity of the material point of the body
 /// at the contact. `sliding` is Coulomb's law regularised: `|F| → μ N` for
 /// `|v| ≫ ε`, a steep viscous law `F ≈ −(μ N/ε) v` for `|v| ≪ ε`. It is
 /// not exact stick–slip; answers depend on `ε` (Leine & Glocker's tippe
 /// top inverts in ≈ 2.7 s at ε = 1 mm/s, ≈ 20 s at 0.1 mm/s). Each model
-/// dissipates: `F·v ≤ 0`.
+/// but `rolling` dissipates: `F·v ≤ 0`.
 ///
 /// ```
 /// use glam::DVec3;
@@ -100,6 +110,8 @@ pub enum Friction {
         /// The regularisation `ε`, m/s (> 0).
         slip_velocity: f64,
     },
+    /// Rolling without slipping: `v_P = 0`, nonholonomic, conservative.
+    Rolling,
 }
 
 /// A typed error for a bad friction parameter.
@@ -151,6 +163,7 @@ impl Friction {
             Self::None => FrictionModel::None,
             Self::Viscous { .. } => FrictionModel::Viscous,
             Self::Sliding { .. } => FrictionModel::Sliding,
+            Self::Rolling => FrictionModel::Rolling,
         }
     }
 
@@ -168,7 +181,7 @@ impl Friction {
             }
         };
         match *self {
-            Self::None => Ok(()),
+            Self::None | Self::Rolling => Ok(()),
             Self::Viscous { mu } => check_mu(mu),
             Self::Sliding { mu, slip_velocity } => {
                 check_mu(mu)?;
@@ -191,9 +204,21 @@ impl Friction {
     /// ```text
     /// f(v) = F / N = 0,  −μ v,  or  −μ v/√(|v|² + ε²)
     /// ```
+    ///
+    /// For [`Friction::Rolling`] the force is no function of the slip (it
+    /// is the constraint's reaction, [`crate::GroundTop::contact_force`]):
+    /// the answer is NaN in every component, never a plausible number.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::Friction;
+    /// assert!(Friction::Rolling.force_per_normal(DVec3::X).x.is_nan());
+    /// assert_eq!(Friction::None.force_per_normal(DVec3::X), DVec3::ZERO);
+    /// ```
     pub fn force_per_normal(&self, slip: DVec3) -> DVec3 {
         match *self {
             Self::None => DVec3::ZERO,
+            Self::Rolling => DVec3::NAN,
             Self::Viscous { mu } => -mu * slip,
             Self::Sliding { mu, slip_velocity } => {
                 -mu * slip / (slip.length_squared() + slip_velocity * slip_velocity).sqrt()
@@ -212,7 +237,10 @@ mod tests {
             assert_eq!(m.name().parse::<FrictionModel>().unwrap(), m);
         }
         let err = "coulomb".parse::<FrictionModel>().unwrap_err();
-        assert!(err.to_string().contains("none, viscous, sliding"), "{err}");
+        assert!(
+            err.to_string().contains("none, viscous, sliding, rolling"),
+            "{err}"
+        );
     }
 
     #[test]

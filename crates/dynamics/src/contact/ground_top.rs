@@ -1,13 +1,14 @@
 //! The equations of motion of a rigid body touching the ground plane with
-//! one body-fixed sphere: the state, the normal force solved from the
-//! constraint, and the invariants.
+//! one body-fixed sphere or disk rim: the state, the normal force solved
+//! from the constraint, and the invariants.
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
-use super::{Friction, SphereContact};
+use super::{ContactShape, Friction, SphereContact};
 use crate::DynamicsError;
 
-/// A rigid body whose sphere touches the plane `z = 0`, gravity `−g ẑ`.
+/// A rigid body whose sphere (or disk rim, [`GroundTop::try_with_shape`])
+/// touches the plane `z = 0`, gravity `−g ẑ`. For a sphere:
 ///
 /// ```text
 /// m v̇_G = N ẑ + F − m g ẑ,   L̇ = ρ × (N ẑ + F),   q̇ = ½ (0, ω) ⊗ q
@@ -38,7 +39,7 @@ pub struct GroundTop {
     inertia_body: DMat3,
     inverse_inertia_body: DMat3,
     gravity: f64,
-    sphere: SphereContact,
+    shape: ContactShape,
     friction: Friction,
 }
 
@@ -69,6 +70,8 @@ pub(crate) struct Rates {
     pub(crate) d_l: DVec3,
     /// `N`, newtons.
     pub(crate) normal_force: f64,
+    /// The whole contact force `N ẑ + F`, world axes, newtons.
+    pub(crate) contact_force: DVec3,
     /// The coefficient of `N` in the constraint's second derivative, 1/kg;
     /// not positive means no normal force can keep the contact (Painlevé).
     pub(crate) compliance: f64,
@@ -132,6 +135,39 @@ impl GroundTop {
         friction: Friction,
         gravity: f64,
     ) -> Result<Self, DynamicsError> {
+        Self::try_with_shape(
+            mass,
+            inertia_body,
+            ContactShape::Sphere(sphere),
+            friction,
+            gravity,
+        )
+    }
+
+    /// A body touching with any [`ContactShape`] (a sphere or a disk rim);
+    /// otherwise as [`GroundTop::try_new`].
+    ///
+    /// # Errors
+    /// As [`GroundTop::try_new`].
+    ///
+    /// ```
+    /// use glam::{DMat3, DVec3};
+    /// use kreisel_dynamics::{ContactShape, DiskContact, Friction, GroundTop};
+    /// // A coin: 5 g, radius 1 cm, axis e₃.
+    /// let (m, a) = (0.005, 0.01);
+    /// let rim = DiskContact::try_new(a, DVec3::ZERO, DVec3::Z)?;
+    /// let i = DMat3::from_diagonal(DVec3::new(0.25, 0.25, 0.5) * m * a * a);
+    /// let coin = GroundTop::try_with_shape(m, i, ContactShape::Disk(rim), Friction::Rolling, 9.81)?;
+    /// assert!(coin.sphere().is_none());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_with_shape(
+        mass: f64,
+        inertia_body: DMat3,
+        shape: ContactShape,
+        friction: Friction,
+        gravity: f64,
+    ) -> Result<Self, DynamicsError> {
         if !(mass.is_finite() && mass > 0.0) {
             return Err(invalid("mass", mass, "must be positive and finite"));
         }
@@ -170,7 +206,7 @@ impl GroundTop {
             inertia_body: m,
             inverse_inertia_body: m.inverse(),
             gravity,
-            sphere,
+            shape,
             friction,
         })
     }
@@ -190,9 +226,17 @@ impl GroundTop {
         self.gravity
     }
 
-    /// The contact sphere.
-    pub fn sphere(&self) -> SphereContact {
-        self.sphere
+    /// The contact sphere (`None` for a disk rim).
+    pub fn sphere(&self) -> Option<SphereContact> {
+        match self.shape {
+            ContactShape::Sphere(s) => Some(s),
+            ContactShape::Disk(_) => None,
+        }
+    }
+
+    /// The contact surface.
+    pub fn shape(&self) -> ContactShape {
+        self.shape
     }
 
     /// The friction model.
@@ -207,12 +251,20 @@ impl GroundTop {
     /// the contact point on the plane.
     ///
     /// ```text
-    /// z_G = R − (A c)_z,   ż_G = −(ω × A c)_z,   L = A I Aᵀ ω
+    /// z_G = −ρ_z,   ż_G = −(ω × ρ)_z,   L = A I Aᵀ ω
+    /// (a sphere: ρ_z = (A c)_z − R, (ω × ρ)_z = (ω × A c)_z)
     /// ```
     ///
+    /// With [`Friction::Rolling`] the velocities must already satisfy the
+    /// rolling constraint `v_P = v_G + ω × ρ = 0` (the model keeps `v_P`
+    /// constant, so a start with slip would slide for ever at constant
+    /// slip); [`GroundTop::try_rolling_state_on_ground`] sets `v_G` from
+    /// `ω`.
+    ///
     /// # Errors
-    /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude or
-    /// a non-finite velocity.
+    /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude, a
+    /// non-finite velocity, a disk lying flat, or, with
+    /// [`Friction::Rolling`], a slip `|v_P|` above `1e-12 (|v_G| + |ω| |ρ|)`.
     ///
     /// ```
     /// use glam::{DMat3, DQuat, DVec2, DVec3};
@@ -241,14 +293,77 @@ impl GroundTop {
             });
         }
         let q = world_from_body.normalize();
-        let c = self.sphere.center_from_com_world(q);
+        let rho = self.shape.contact_from_com_world(q);
+        if !rho.is_finite() {
+            return Err(DynamicsError::InvalidState {
+                reason: "the disk lies flat (axis vertical): no single contact point",
+            });
+        }
         let a = DMat3::from_quat(q);
-        Ok(GroundTopState {
-            com_world: DVec3::new(0.0, 0.0, self.sphere.radius() - c.z),
-            velocity_world: DVec3::new(velocity_xy.x, velocity_xy.y, -omega_world.cross(c).z),
+        let state = GroundTopState {
+            com_world: DVec3::new(0.0, 0.0, -rho.z),
+            velocity_world: DVec3::new(velocity_xy.x, velocity_xy.y, -omega_world.cross(rho).z),
             world_from_body: q,
             l_world: a * self.inertia_body * a.transpose() * omega_world,
-        })
+        };
+        if self.friction == Friction::Rolling {
+            let scale = state.velocity_world.length() + omega_world.length() * rho.length();
+            if self.slip_velocity(&state).length() > 1e-12 * scale {
+                return Err(DynamicsError::InvalidState {
+                    reason: "rolling without slipping needs v_G = −ω × ρ at the start \
+                             (use try_rolling_state_on_ground)",
+                });
+            }
+        }
+        Ok(state)
+    }
+
+    /// A state touching the plane and rolling without slipping: as
+    /// [`GroundTop::try_state_on_ground`], with the centre of mass moving
+    /// so that the contact point is at rest.
+    ///
+    /// ```text
+    /// z_G = −ρ_z,   v_G = −ω × ρ,   L = A I Aᵀ ω
+    /// ```
+    ///
+    /// (`ρ = A c − R ẑ` for a sphere; the vertical component `−(ω × ρ)_z`
+    /// is the one of [`GroundTop::try_state_on_ground`]). Any friction
+    /// model accepts it.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude, a
+    /// non-finite angular velocity or a disk lying flat.
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?;
+    /// let i = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+    /// let top = GroundTop::try_new(0.006, i, sphere, Friction::Rolling, 9.81)?;
+    /// let q = DQuat::from_rotation_x(0.5);
+    /// let s = top.try_rolling_state_on_ground(q, DVec3::new(3.0, -20.0, 40.0))?;
+    /// assert!(top.slip_velocity(&s).length() < 1e-15);
+    /// assert!(top.gap(&s).abs() < 1e-18);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_rolling_state_on_ground(
+        &self,
+        world_from_body: DQuat,
+        omega_world: DVec3,
+    ) -> Result<GroundTopState, DynamicsError> {
+        if !(world_from_body.is_finite() && world_from_body.length_squared() > 0.0) {
+            return Err(DynamicsError::InvalidState {
+                reason: "the attitude must be a finite, non-zero quaternion",
+            });
+        }
+        if !omega_world.is_finite() {
+            return Err(DynamicsError::InvalidState {
+                reason: "the angular velocity must be finite",
+            });
+        }
+        let rho = self.shape.contact_from_com_world(world_from_body);
+        let v = -omega_world.cross(rho);
+        self.try_state_on_ground(world_from_body, omega_world, DVec2::new(v.x, v.y))
     }
 
     /// The angular velocity in world axes: `ω = A I⁻¹ Aᵀ L`.
@@ -257,23 +372,22 @@ impl GroundTop {
         a * (self.inverse_inertia_body * (a.transpose() * state.l_world))
     }
 
-    /// The constraint's residual, the height of the sphere's lowest point:
-    /// `z_G + (A c)_z − R` (m).
+    /// The constraint's residual, the height of the lowest point:
+    /// `z_G + ρ_z` (m; `z_G + (A c)_z − R` for a sphere).
     pub fn gap(&self, state: &GroundTopState) -> f64 {
-        self.sphere.gap(state.com_world, state.world_from_body)
+        state.com_world.z + self.shape.contact_from_com_world(state.world_from_body).z
     }
 
     /// Its rate, the vertical velocity of the contact point:
-    /// `ż_G + (ω × A c)_z` (m/s).
+    /// `(v_P)_z = ż_G + (ω × ρ)_z` (m/s; `ż_G + (ω × A c)_z` for a sphere).
     pub fn gap_rate(&self, state: &GroundTopState) -> f64 {
-        let c = self.sphere.center_from_com_world(state.world_from_body);
-        state.velocity_world.z + self.omega_world(state).cross(c).z
+        self.slip_velocity(state).z
     }
 
     /// The velocity of the body's material point at the contact:
     /// `v_P = v_G + ω × ρ` (m/s; horizontal while the contact holds).
     pub fn slip_velocity(&self, state: &GroundTopState) -> DVec3 {
-        let rho = self.sphere.contact_from_com_world(state.world_from_body);
+        let rho = self.shape.contact_from_com_world(state.world_from_body);
         state.velocity_world + self.omega_world(state).cross(rho)
     }
 
@@ -289,7 +403,8 @@ impl GroundTop {
     }
 
     /// Jellett's integral, conserved by every contact force of a sphere
-    /// whose centre lies on an axis of symmetry of the inertia tensor.
+    /// whose centre lies on an axis of symmetry of the inertia tensor (for
+    /// a disk rim the same expression, not conserved).
     ///
     /// ```text
     /// λ = L · (R ẑ − A c) = −L · ρ = L · (r_G − r_P)
@@ -297,7 +412,7 @@ impl GroundTop {
     pub fn jellett(&self, state: &GroundTopState) -> f64 {
         -state
             .l_world
-            .dot(self.sphere.contact_from_com_world(state.world_from_body))
+            .dot(self.shape.contact_from_com_world(state.world_from_body))
     }
 
     /// The normal force `N` the plane exerts in `state`, newtons.
@@ -325,6 +440,46 @@ impl GroundTop {
         }
     }
 
+    /// The whole contact force `N ẑ + F` the plane exerts in `state`, world
+    /// axes, newtons: `N (ẑ + f(v_P))` for a friction law, the reaction
+    /// `K⁻¹ b` of the rolling constraint for [`Friction::Rolling`] (module
+    /// docs, [`crate::contact`]).
+    ///
+    /// # Errors
+    /// As [`GroundTop::normal_force`].
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, SphereContact};
+    /// // A homogeneous ball rolling straight: the plane only carries it.
+    /// let (m, r) = (0.2, 0.03);
+    /// let ball = SphereContact::try_new(r, DVec3::ZERO)?;
+    /// let i = DMat3::from_diagonal(DVec3::splat(0.4 * m * r * r));
+    /// let top = GroundTop::try_new(m, i, ball, Friction::Rolling, 9.81)?;
+    /// let s = top.try_rolling_state_on_ground(DQuat::IDENTITY, DVec3::new(10.0, 0.0, 0.0))?;
+    /// let f = top.contact_force(&s)?;
+    /// assert!((f - DVec3::new(0.0, 0.0, m * 9.81)).length() < 1e-15);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn contact_force(&self, state: &GroundTopState) -> Result<DVec3, DynamicsError> {
+        self.normal_force(state)?;
+        Ok(self.rates(state).contact_force)
+    }
+
+    /// For a disk rim, the unit direction from the rim's centre to the
+    /// contact point in body axes, `Aᵀ û` (NaN lying flat); `None` for a
+    /// sphere.
+    pub(crate) fn rim_direction_body(&self, state: &GroundTopState) -> Option<DVec3> {
+        match self.shape {
+            ContactShape::Sphere(_) => None,
+            ContactShape::Disk(d) => {
+                let q = state.world_from_body.normalize();
+                let rho = d.contact_from_com_world(q);
+                Some(q.conjugate() * (rho - q * d.center_body()) / d.radius())
+            }
+        }
+    }
+
     /// The vector field and the normal force at `state`.
     pub(crate) fn rates(&self, state: &GroundTopState) -> Rates {
         let q = state.world_from_body.normalize();
@@ -332,8 +487,10 @@ impl GroundTop {
         let inverse_world = a * self.inverse_inertia_body * a.transpose();
         let l = state.l_world;
         let omega = inverse_world * l;
-        let c = a * self.sphere.center_body();
-        let rho = c - self.sphere.radius() * DVec3::Z;
+        let (rho, rho_rate) = self.shape.offset_and_rate(q, omega);
+        if self.friction == Friction::Rolling {
+            return self.rolling_rates(state, inverse_world, omega, rho, rho_rate);
+        }
         let slip = state.velocity_world + omega.cross(rho);
         let e = DVec3::Z
             + self
@@ -341,8 +498,8 @@ impl GroundTop {
                 .force_per_normal(DVec3::new(slip.x, slip.y, 0.0));
         let gyroscopic = inverse_world * l.cross(omega);
         let per_newton = inverse_world * rho.cross(e);
-        let compliance = 1.0 / self.mass + per_newton.cross(c).z;
-        let free = gyroscopic.cross(c).z + omega.cross(omega.cross(c)).z;
+        let compliance = 1.0 / self.mass + per_newton.cross(rho).z;
+        let free = gyroscopic.cross(rho).z + omega.cross(rho_rate).z;
         let normal_force = (self.gravity - free) / compliance;
         Rates {
             d_com: state.velocity_world,
@@ -350,7 +507,52 @@ impl GroundTop {
             d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
             d_l: rho.cross(e) * normal_force,
             normal_force,
+            contact_force: e * normal_force,
             compliance,
         }
     }
+
+    /// The vector field of rolling without slipping: the contact force
+    /// `F` from `K F = b` (module docs, [`crate::contact`]).
+    ///
+    /// ```text
+    /// K = 1/m 𝟙 − [ρ]× I_w⁻¹ [ρ]×
+    /// b = g ẑ + ρ × (I_w⁻¹ (L × ω)) − ω × ρ̇
+    /// ```
+    fn rolling_rates(
+        &self,
+        state: &GroundTopState,
+        inverse_world: DMat3,
+        omega: DVec3,
+        rho: DVec3,
+        rho_rate: DVec3,
+    ) -> Rates {
+        let cross_rho = skew(rho);
+        let k = DMat3::from_diagonal(DVec3::splat(1.0 / self.mass))
+            - cross_rho * inverse_world * cross_rho;
+        let gyroscopic = inverse_world * state.l_world.cross(omega);
+        let b = self.gravity * DVec3::Z + rho.cross(gyroscopic) - omega.cross(rho_rate);
+        let k_inverse = k.inverse();
+        let force = k_inverse * b;
+        Rates {
+            d_com: state.velocity_world,
+            d_velocity: force / self.mass - self.gravity * DVec3::Z,
+            d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
+            d_l: rho.cross(force),
+            normal_force: force.z,
+            contact_force: force,
+            // The vertical compliance with the contact point held
+            // horizontally: 1/(K⁻¹)_zz, positive as K is positive definite.
+            compliance: 1.0 / k_inverse.z_axis.z,
+        }
+    }
+}
+
+/// The cross-product matrix: `skew(r) x = r × x`.
+fn skew(r: DVec3) -> DMat3 {
+    DMat3::from_cols(
+        DVec3::new(0.0, r.z, -r.y),
+        DVec3::new(-r.z, 0.0, r.x),
+        DVec3::new(r.y, -r.x, 0.0),
+    )
 }

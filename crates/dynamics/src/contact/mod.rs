@@ -1,11 +1,15 @@
 //! Bodies on a table: a rigid body touching the ground plane `z = 0`
 //! (gravity `−g ẑ`) with a body-fixed sphere — the ball-ended top, the
-//! tippe top.
+//! tippe top — or a circular rim — a coin, Euler's disk.
 //!
 //! - [`SphereContact`]: the sphere's geometry (radius `R`, centre `c` in
 //!   body axes from the centre of mass) and the constraint's residual;
+//! - [`DiskContact`]: a rim (radius `r`, centre `c`, axis `n` in body
+//!   axes), its lowest point and that point's rate; [`ContactShape`]
+//!   chooses between the two ([`GroundTop::try_with_shape`]);
 //! - [`Friction`] ([`FrictionModel`] names it): `none`, `viscous`,
-//!   regularised Coulomb `sliding`;
+//!   regularised Coulomb `sliding`, and `rolling` without slipping
+//!   (nonholonomic, conservative);
 //! - [`GroundTop`], [`GroundTopState`]: the equations of motion, energy,
 //!   Jellett's integral, the normal force; a fixed-step RK4 with lift-off
 //!   located and reported ([`GroundTop::try_step`]).
@@ -58,6 +62,59 @@
 //! reported as [`crate::DynamicsError::ContactLost`] with its time: the
 //! model never lets the contact pull.
 //!
+//! # Rolling without slipping
+//! With [`Friction::Rolling`] the contact point's material velocity is
+//! held at zero, all three components (the vertical one is `ġ`):
+//!
+//! ```text
+//! v_P = v_G + ω × ρ = 0,     ρ̇ = ω × A c   (ẑ is fixed)
+//! ```
+//!
+//! The whole contact force `F` (three unknowns: normal and tangential) is
+//! the reaction that keeps it there. Differentiating, with `v̇_G = F/m − g ẑ`,
+//! `L̇ = ρ × F` and `ω̇ = I_w⁻¹ (ρ × F) + I_w⁻¹ (L × ω)`:
+//!
+//! ```text
+//! 0 = d v_P/dt = F/m − g ẑ + ω̇ × ρ + ω × (ω × A c)
+//!   = F/m − g ẑ − ρ × (I_w⁻¹ (ρ × F)) − ρ × (I_w⁻¹ (L × ω)) + ω × (ω × A c)
+//!
+//! K F = b,   K = 1/m 𝟙 − [ρ]× I_w⁻¹ [ρ]× = 1/m 𝟙 + [ρ]×ᵀ I_w⁻¹ [ρ]×
+//!            b = g ẑ + ρ × (I_w⁻¹ (L × ω)) − ω × (ω × A c)
+//! ```
+//!
+//! (`[ρ]× x = ρ × x`). `K` is symmetric positive definite (`x·K x =
+//! |x|²/m + (ρ × x)·I_w⁻¹(ρ × x)`), so `F` always exists and is unique —
+//! no Painlevé case; its vertical row is the `g̈ = 0` equation of the
+//! friction laws. `F_z ≤ 0` is lift-off, reported as
+//! [`crate::DynamicsError::ContactLost`] as for the other models. The
+//! reaction does no work (`Ė = F·v_P = 0`), so the energy is conserved,
+//! and λ as for every force at the contact point.
+//!
+//! The initial state must satisfy the constraint:
+//! [`GroundTop::try_rolling_state_on_ground`] sets `v_G = −ω × ρ`;
+//! [`GroundTop::try_state_on_ground`] refuses a rolling start with slip.
+//! The ODE keeps `d v_P/dt = 0` exactly, so RK4 keeps `v_P` constant up to
+//! its `O(h⁴)` error per unit time: `v_P` drifts, it is not projected back
+//! (measured in `tests/contact_sphere_rolling.rs`).
+//!
+//! # A disk rim
+//! For a [`DiskContact`] the contact point moves over the rim, so
+//! `ρ = A c + r û` (formulas at [`DiskContact`]) has a rate `ρ̇` other than
+//! `ω × A c`. Everything above holds with `A c` replaced by `ρ` in the
+//! cross products with `ω̇` and `ω × (ω × A c)` replaced by `ω × ρ̇`: for a
+//! convex contact `ġ = (v_P)_z` (the lowest point is a minimum of the
+//! height over the surface), so `g̈ = d(v_P)_z/dt` and
+//!
+//! ```text
+//! d v_P/dt = v̇_G + ω̇ × ρ + ω × ρ̇
+//! N = [g − ((I_w⁻¹ (L × ω)) × ρ)_z − (ω × ρ̇)_z] / [1/m + ((I_w⁻¹ (ρ × e)) × ρ)_z]
+//! b = g ẑ + ρ × (I_w⁻¹ (L × ω)) − ω × ρ̇          (rolling)
+//! ```
+//!
+//! (for a sphere `(x × ρ)_z = (x × A c)_z` and `ρ̇ = ω × A c`: the same
+//! equations; the code evaluates this general form for both). Jellett's
+//! λ is an integral of the sphere only.
+//!
 //! # What is conserved
 //! The energy `E = ½ m |v_G|² + ½ L·ω + m g z_G` changes by the power of the
 //! contact force at the contact point's velocity:
@@ -96,11 +153,13 @@
 //! `R + a`. From `λ`, spinning at `ω₀` about `e₃` tilted by `θ₀`, a full
 //! inversion ends at `ω_z = ω₀ (cos θ₀ − α)/(1 + α)`.
 
+mod disk_contact;
 mod friction;
 mod ground_top;
 mod rk4;
 mod sphere_contact;
 
+pub use self::disk_contact::{ContactShape, DiskContact};
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;

@@ -1,5 +1,7 @@
 //! Fixed-step classical RK4 for a [`GroundTop`], with lift-off detection.
 
+use glam::DVec3;
+
 use super::ground_top::Rates;
 use super::{GroundTop, GroundTopState};
 use crate::{Divergence, DynamicsError};
@@ -23,6 +25,7 @@ fn rk4(top: &GroundTop, s: &GroundTopState, h: f64) -> (GroundTopState, f64, f64
         d_attitude: k1.d_attitude + (k2.d_attitude + k3.d_attitude) * 2.0 + k4.d_attitude,
         d_l: k1.d_l + (k2.d_l + k3.d_l) * 2.0 + k4.d_l,
         normal_force: 0.0,
+        contact_force: DVec3::ZERO,
         compliance: 0.0,
     };
     let stages = [k1, k2, k3, k4];
@@ -54,6 +57,10 @@ impl GroundTop {
     ///   instant is located by bisection on the step size, and `state` is
     ///   left there (`N ≈ 0`); when only an inner stage saw `N ≤ 0`, the
     ///   step is not taken and the time is the step's start.
+    /// - [`DynamicsError::DiskFlat`] when a disk rim's contact point, in
+    ///   body axes, turns by more than 90° in the step (the disk passed
+    ///   through lying flat, where its far side touches down, or the step
+    ///   is far too large); `state` is left at the step's start.
     /// - [`DynamicsError::ContactIndeterminate`] when no normal force can
     ///   keep the contact (see [`GroundTop::normal_force`]).
     /// - [`DynamicsError::InvalidStep`] for `h` not positive and finite,
@@ -103,6 +110,14 @@ impl GroundTop {
                 time: time + h,
                 reason: Divergence::NonFinite,
             });
+        }
+        if let Some(start) = self.rim_direction_body(state) {
+            let end = self.rim_direction_body(&next).unwrap_or(DVec3::NAN);
+            // NaN: exactly flat.
+            let dot = start.dot(end);
+            if dot.is_nan() || dot <= 0.0 {
+                return Err(DynamicsError::DiskFlat { time });
+            }
         }
         let n_end = self.rates(&next).normal_force;
         if n_end <= 0.0 {
