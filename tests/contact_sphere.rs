@@ -7,6 +7,8 @@
 //! form of a one-degree-of-freedom reduction, and the measured order of
 //! the integrator.
 
+mod common;
+
 use glam::{DMat3, DQuat, DVec2, DVec3};
 use kreisel::dynamics::{
     DynamicsError, Friction, FrictionModel, GroundTop, GroundTopState, SphereContact,
@@ -231,26 +233,12 @@ fn lift_off_is_reported_at_the_hand_computed_time() {
     assert!(n0 > 0.0);
     assert!((top.normal_force(&s).unwrap() / n0 - 1.0).abs() < 1e-13);
     // θ* by bisection on the closed form, t* by Simpson's rule.
-    let (mut lo, mut hi) = (theta_s, 0.0);
-    for _ in 0..100 {
-        let mid = 0.5 * (lo + hi);
-        if dof.normal_force(mid) > 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let theta_star = lo;
-    let n = 20_000;
-    let dx = (theta_star - theta_s) / n as f64;
-    let f = |th: f64| 1.0 / dof.rate2(th).sqrt();
-    let t_star = (f(theta_s)
-        + f(theta_star)
-        + (1..n)
-            .map(|k| if k % 2 == 1 { 4.0 } else { 2.0 } * f(theta_s + k as f64 * dx))
-            .sum::<f64>())
-        * dx
-        / 3.0;
+    let (theta_star, t_star) = common::contact::lift_off_by_hand(
+        theta_s,
+        0.0,
+        |th| dof.normal_force(th),
+        |th| dof.rate2(th),
+    );
     let err = top
         .try_advance(&mut s, 0.0, 1e-4, 1000, |_, _| {})
         .unwrap_err();
