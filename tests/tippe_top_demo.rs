@@ -135,9 +135,21 @@ fn frictionless_top_does_not_invert() {
 }
 
 #[test]
+fn rolling_top_keeps_its_energy_and_jellett() {
+    let printed = run_demo(&["--headless", "--duration", "0.5", "--friction", "rolling"]).unwrap();
+    assert!(printed.contains("rolling without slipping"), "{printed}");
+    assert!(printed.contains("not inverted within 0.5 s"), "{printed}");
+    let line = printed.lines().find(|l| l.starts_with("energy: ")).unwrap();
+    let e = number_after(line, "energy: E/E₀ = ");
+    assert!((e - 1.0).abs() < 1e-4, "{line}");
+    let lambda: f64 = line.rsplit(" = ").next().unwrap().parse().unwrap();
+    assert!(lambda <= 1e-10, "{line}");
+}
+
+#[test]
 fn bad_arguments_are_one_line_errors() {
     for (args, expected) in [
-        (&["--friction", "rolling"][..], "rolling"),
+        (&["--friction", "coulomb"][..], "coulomb"),
         (&["--duration", "-1"][..], "--duration = -1 is out of range"),
         (&["--dt", "0.1"][..], "--dt = 0.1 is out of range"),
         (&["--mu", "-0.3"][..], "--mu = -0.3 is out of range"),

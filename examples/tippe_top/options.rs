@@ -27,7 +27,7 @@ pub struct Options {
     /// Simulated time, s (up to 1000).
     #[arg(long, value_name = "S", default_value_t = 4.0)]
     pub duration: f64,
-    /// Friction at the contact: sliding (regularised Coulomb), viscous, none.
+    /// Friction at the contact: sliding (regularised Coulomb), viscous, rolling (no slip), none.
     #[arg(long, value_enum, default_value_t = FrictionChoice::Sliding)]
     pub friction: FrictionChoice,
     /// Friction coefficient: Coulomb's μ for sliding, s/m for viscous.
@@ -54,6 +54,8 @@ pub enum FrictionChoice {
     Sliding,
     /// Viscous friction: F = −μ N v (μ in s/m).
     Viscous,
+    /// Rolling without slipping (the contact point at rest; conservative).
+    Rolling,
     /// No friction.
     None,
 }
@@ -161,14 +163,16 @@ impl Options {
             FrictionChoice::None => Friction::None,
             FrictionChoice::Viscous => Friction::try_viscous(self.mu)?,
             FrictionChoice::Sliding => Friction::try_sliding(self.mu, self.slip_velocity)?,
+            FrictionChoice::Rolling => Friction::Rolling,
         })
     }
 
-    /// The friction model's name (`sliding`, `viscous`, `none`).
+    /// The friction model's name (`sliding`, `viscous`, `rolling`, `none`).
     pub fn friction_name(&self) -> &'static str {
         match self.friction {
             FrictionChoice::Sliding => "sliding",
             FrictionChoice::Viscous => "viscous",
+            FrictionChoice::Rolling => "rolling",
             FrictionChoice::None => "none",
         }
     }
@@ -177,6 +181,7 @@ impl Options {
     pub fn friction_words(&self) -> String {
         match self.friction {
             FrictionChoice::None => "none".to_owned(),
+            FrictionChoice::Rolling => "rolling without slipping".to_owned(),
             FrictionChoice::Viscous => format!("viscous, μ = {} s/m", self.mu),
             FrictionChoice::Sliding => format!(
                 "sliding (regularised Coulomb), μ = {}, slip_velocity = {} mm/s",

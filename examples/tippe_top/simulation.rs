@@ -31,7 +31,8 @@ pub const GRAVITY: f64 = 9.81;
 const BISECTIONS: usize = 50;
 
 /// Leine & Glocker's top with `friction`, tilted by θ₀ about x, spinning
-/// at ω₀ about its axis, centre of mass at rest, touching the floor.
+/// at ω₀ about its axis, touching the floor: centre of mass at rest, or,
+/// rolling, moving so that the contact point is at rest.
 ///
 /// # Errors
 /// [`DynamicsError::InvalidContact`] for bad friction parameters.
@@ -40,7 +41,11 @@ pub fn leine_glocker(friction: Friction) -> Result<(GroundTop, GroundTopState), 
     let inertia = DMat3::from_diagonal(DVec3::new(I1, I1, I3));
     let top = GroundTop::try_new(MASS, inertia, ball, friction, GRAVITY)?;
     let q = DQuat::from_rotation_x(THETA0);
-    let start = top.try_state_on_ground(q, q * DVec3::new(0.0, 0.0, SPIN0), DVec2::ZERO)?;
+    let omega = q * DVec3::new(0.0, 0.0, SPIN0);
+    let start = match friction {
+        Friction::Rolling => top.try_rolling_state_on_ground(q, omega)?,
+        _ => top.try_state_on_ground(q, omega, DVec2::ZERO)?,
+    };
     Ok((top, start))
 }
 
