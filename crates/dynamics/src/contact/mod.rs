@@ -12,7 +12,10 @@
 //!   (nonholonomic, conservative);
 //! - [`GroundTop`], [`GroundTopState`]: the equations of motion, energy,
 //!   Jellett's integral, the normal force; a fixed-step RK4 with lift-off
-//!   located and reported ([`GroundTop::try_step`]).
+//!   located and reported ([`GroundTop::try_step`]);
+//! - [`GroundTop::try_advance_adaptive`]: Dormand–Prince 5(4) with
+//!   step-size control to an [`AdaptiveTolerance`], the same contact
+//!   checks, statistics in [`AdaptiveStats`].
 //!
 //! # The model
 //! State: centre of mass `r_G`, its velocity `v_G`, attitude `q`
@@ -153,12 +156,14 @@
 //! `R + a`. From `λ`, spinning at `ω₀` about `e₃` tilted by `θ₀`, a full
 //! inversion ends at `ω_z = ω₀ (cos θ₀ − α)/(1 + α)`.
 
+mod adaptive;
 mod disk_contact;
 mod friction;
 mod ground_top;
 mod rk4;
 mod sphere_contact;
 
+pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub use self::disk_contact::{ContactShape, DiskContact};
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_top::{GroundTop, GroundTopState};
