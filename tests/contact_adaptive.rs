@@ -335,3 +335,33 @@ fn bad_input_gives_typed_errors() {
         .unwrap_err();
     assert!(matches!(err, DynamicsError::StepTooSmall { .. }), "{err}");
 }
+
+#[test]
+fn painleve_contact_is_a_typed_error() {
+    // The setting of tests/contact_sphere.rs: a sphere centred beside the
+    // centre of mass, sliding so that friction lifts it, with
+    // κ = 1/m − (R μ − d) d / I < 0 at the start.
+    let (m, i, d, r0, mu) = (1.0, 1e-4, 0.05, 0.05, 2.0);
+    let sphere = SphereContact::try_new(r0, DVec3::new(d, 0.0, 0.0)).unwrap();
+    let friction = Friction::try_sliding(mu, 1e-9).unwrap();
+    let inertia = DMat3::from_diagonal(DVec3::splat(i));
+    let top = GroundTop::try_new(m, inertia, sphere, friction, G).unwrap();
+    let mut s = top
+        .try_state_on_ground(DQuat::IDENTITY, DVec3::ZERO, DVec2::new(1.0, 0.0))
+        .unwrap();
+    let start = s;
+    let err = top
+        .try_advance_adaptive(
+            &mut s,
+            0.5,
+            1.0,
+            AdaptiveTolerance::new(1e-8, 1e-8),
+            |_, _| panic!("no step"),
+        )
+        .unwrap_err();
+    assert!(
+        matches!(err, DynamicsError::ContactIndeterminate { time: 0.5, .. }),
+        "{err}"
+    );
+    assert_eq!(s, start);
+}

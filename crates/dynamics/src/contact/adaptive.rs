@@ -269,7 +269,9 @@ impl GroundTop {
     ///   finite; `state` is unchanged.
     /// - [`DynamicsError::StepTooSmall`] when the controller asks for a
     ///   step below `10⁻¹² max(|t0|, |t_end|, 1 s)`; `state` is left at the
-    ///   last accepted step.
+    ///   last accepted step. A trial step that leaves a non-finite state is
+    ///   rejected and shrunk like any other, so a field that blows up ends
+    ///   here too.
     /// - As [`GroundTop::try_step`] (`ContactLost` with its time,
     ///   `DiskFlat`, `ContactIndeterminate`, `InvalidState`, `Diverged`),
     ///   `state` left as that function says.
