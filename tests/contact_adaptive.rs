@@ -214,6 +214,9 @@ fn sliding_top_matches_the_independent_generator() {
     assert!(r.energy_rise <= 0.0, "E rose by {:e}", r.energy_rise);
 }
 
+// Measured (inversion time against the generator, ε = 1 mm/s): tol 1e-6:
+// 8.3e-5 s (8 974 steps), 1e-8: 4.3e-7 s (20 735), 1e-10: 3.2e-9 s
+// (50 149): 190× and 130× smaller per 100× tighter, about tol^1.1.
 #[test]
 fn tighter_tolerance_gives_smaller_error() {
     let t_ref = generator_inversion("sliding");
