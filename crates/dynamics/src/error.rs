@@ -201,6 +201,44 @@ pub enum DynamicsError {
         /// The coefficient of `N`, 1/kg.
         compliance: f64,
     },
+    /// An error tolerance of an adaptive integrator outside its domain
+    /// (see [`crate::AdaptiveTolerance::try_new`]).
+    #[error("adaptive tolerance: {parameter} = {value}: {reason}")]
+    InvalidTolerance {
+        /// `"rtol"` or `"atol"`.
+        parameter: &'static str,
+        /// The value given.
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// A time interval that cannot be integrated: `t_end` before `t0`, or
+    /// a time that is not finite.
+    #[error(
+        "cannot integrate from t = {t0} s to t = {t_end} s: the end must be finite and not before the start"
+    )]
+    InvalidInterval {
+        /// The start, s.
+        t0: f64,
+        /// The end asked, s.
+        t_end: f64,
+    },
+    /// An adaptive integrator whose error control asked for a step below
+    /// its minimum: the solution is not smooth enough there for the
+    /// tolerance (a discontinuity, stiffness, a singularity).
+    #[error(
+        "{method}: the error control needs a step of {h:e} s at t = {time} s, below the minimum {min:e} s"
+    )]
+    StepTooSmall {
+        /// The method's name.
+        method: &'static str,
+        /// The time reached, s (the state is left there).
+        time: f64,
+        /// The step the controller asked for, s.
+        h: f64,
+        /// The smallest step allowed, s.
+        min: f64,
+    },
     /// A friction model name other than those of
     /// [`crate::FrictionModel::ALL`].
     #[error("unknown friction model `{name}` (known: {known})")]

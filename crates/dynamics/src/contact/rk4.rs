@@ -1,6 +1,6 @@
 //! Fixed-step classical RK4 for a [`GroundTop`], with lift-off detection.
 
-use glam::DVec3;
+use glam::{DQuat, DVec3};
 
 use super::ground_top::Rates;
 use super::{GroundTop, GroundTopState};
@@ -12,32 +12,74 @@ const METHOD: &str = "ground-top rk4";
 /// Bisection steps that locate a lift-off inside a step (2⁻⁶⁰ of it).
 const BISECTIONS: usize = 60;
 
-/// One classical RK4 step and the smallest normal force and compliance of
-/// its four stages.
-fn rk4(top: &GroundTop, s: &GroundTopState, h: f64) -> (GroundTopState, f64, f64) {
-    let k1 = top.rates(s);
-    let k2 = top.rates(&s.plus(&k1, 0.5 * h));
-    let k3 = top.rates(&s.plus(&k2, 0.5 * h));
-    let k4 = top.rates(&s.plus(&k3, h));
-    let sum = Rates {
-        d_com: k1.d_com + (k2.d_com + k3.d_com) * 2.0 + k4.d_com,
-        d_velocity: k1.d_velocity + (k2.d_velocity + k3.d_velocity) * 2.0 + k4.d_velocity,
-        d_attitude: k1.d_attitude + (k2.d_attitude + k3.d_attitude) * 2.0 + k4.d_attitude,
-        d_l: k1.d_l + (k2.d_l + k3.d_l) * 2.0 + k4.d_l,
+/// `Σ wᵢ kᵢ` over Runge–Kutta stages (the normal force and compliance
+/// fields are left at zero: they are not rates).
+pub(super) fn weighted(stages: &[Rates], weights: &[f64]) -> Rates {
+    let mut sum = Rates {
+        d_com: DVec3::ZERO,
+        d_velocity: DVec3::ZERO,
+        d_attitude: DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0),
+        d_l: DVec3::ZERO,
         normal_force: 0.0,
         contact_force: DVec3::ZERO,
         compliance: 0.0,
     };
+    for (k, &w) in stages.iter().zip(weights) {
+        if w != 0.0 {
+            sum.d_com += k.d_com * w;
+            sum.d_velocity += k.d_velocity * w;
+            sum.d_attitude += k.d_attitude * w;
+            sum.d_l += k.d_l * w;
+        }
+    }
+    sum
+}
+
+/// A trial step: the state it ends at, the smallest normal force and
+/// compliance over its stages, and the rates at its end.
+pub(super) struct Trial {
+    pub(super) next: GroundTopState,
+    pub(super) normal_min: f64,
+    pub(super) compliance_min: f64,
+    pub(super) end: Rates,
+}
+
+impl Trial {
+    /// The trial of `stages` ending at `next`, whose rates are `end`.
+    pub(super) fn of(next: GroundTopState, stages: &[Rates], end: Rates) -> Self {
+        let min = |f: fn(&Rates) -> f64| stages.iter().map(f).fold(f64::INFINITY, f64::min);
+        Self {
+            next,
+            normal_min: min(|k| k.normal_force),
+            compliance_min: min(|k| k.compliance),
+            end,
+        }
+    }
+}
+
+/// One classical RK4 step.
+fn rk4(top: &GroundTop, s: &GroundTopState, h: f64) -> Trial {
+    let k1 = top.rates(s);
+    let k2 = top.rates(&s.plus(&k1, 0.5 * h));
+    let k3 = top.rates(&s.plus(&k2, 0.5 * h));
+    let k4 = top.rates(&s.plus(&k3, h));
     let stages = [k1, k2, k3, k4];
-    let n = stages
-        .iter()
-        .map(|k| k.normal_force)
-        .fold(f64::INFINITY, f64::min);
-    let c = stages
-        .iter()
-        .map(|k| k.compliance)
-        .fold(f64::INFINITY, f64::min);
-    (s.plus(&sum, h / 6.0), n, c)
+    let sum = weighted(&stages, &[1.0, 2.0, 2.0, 1.0]);
+    let next = s.plus(&sum, h / 6.0);
+    Trial::of(next, &stages, top.rates(&next))
+}
+
+/// `InvalidStep` / `InvalidState` for a step that cannot start.
+pub(super) fn check_start(state: &GroundTopState, h: f64) -> Result<(), DynamicsError> {
+    if !(h.is_finite() && h > 0.0) {
+        return Err(DynamicsError::InvalidStep { h });
+    }
+    if !state.is_valid() {
+        return Err(DynamicsError::InvalidState {
+            reason: "the ground-top state is not finite",
+        });
+    }
+    Ok(())
 }
 
 impl GroundTop {
@@ -89,24 +131,42 @@ impl GroundTop {
         time: f64,
         h: f64,
     ) -> Result<(), DynamicsError> {
-        if !(h.is_finite() && h > 0.0) {
-            return Err(DynamicsError::InvalidStep { h });
-        }
-        if !state.is_valid() {
-            return Err(DynamicsError::InvalidState {
-                reason: "the ground-top state is not finite",
-            });
-        }
-        let (next, n_min, c_min) = rk4(self, state, h);
-        if c_min <= 0.0 {
+        check_start(state, h)?;
+        let trial = rk4(self, state, h);
+        self.settle(state, time, h, METHOD, trial, |s, tau| {
+            rk4(self, s, tau).next
+        })
+    }
+
+    /// The contact checks after a trial step of `h` from `state` at `time`,
+    /// shared by every ground-top integrator: takes the step (`*state =
+    /// trial.next`) or returns the error [`GroundTop::try_step`] documents,
+    /// leaving `state` as it says. `redo(s, τ)` is the same method's step
+    /// of `τ ≤ h` from `s` (the step's start), for locating a lift-off.
+    pub(super) fn settle(
+        &self,
+        state: &mut GroundTopState,
+        time: f64,
+        h: f64,
+        method: &'static str,
+        trial: Trial,
+        redo: impl Fn(&GroundTopState, f64) -> GroundTopState,
+    ) -> Result<(), DynamicsError> {
+        let Trial {
+            next,
+            normal_min,
+            compliance_min,
+            end,
+        } = trial;
+        if compliance_min <= 0.0 {
             return Err(DynamicsError::ContactIndeterminate {
                 time,
-                compliance: c_min,
+                compliance: compliance_min,
             });
         }
-        if !next.is_valid() || !n_min.is_finite() {
+        if !next.is_valid() || !normal_min.is_finite() {
             return Err(DynamicsError::Diverged {
-                method: METHOD,
+                method,
                 time: time + h,
                 reason: Divergence::NonFinite,
             });
@@ -119,39 +179,39 @@ impl GroundTop {
                 return Err(DynamicsError::DiskFlat { time });
             }
         }
-        let n_end = self.rates(&next).normal_force;
-        if n_end <= 0.0 {
-            let (tau, at) = self.lift_off_in(state, h);
+        if end.normal_force <= 0.0 {
+            let start = *state;
+            let (tau, at) = self.lift_off_in(h, |tau| redo(&start, tau));
             *state = at;
             return Err(DynamicsError::ContactLost {
                 time: time + tau,
                 normal_force: self.rates(&at).normal_force,
             });
         }
-        if n_min <= 0.0 {
+        if normal_min <= 0.0 {
             return Err(DynamicsError::ContactLost {
                 time,
-                normal_force: n_min,
+                normal_force: normal_min,
             });
         }
         *state = next;
         Ok(())
     }
 
-    /// The instant `τ ∈ (0, h]` where `N` along the RK4 step from `state`
-    /// reaches zero (bisection; `N > 0` at the start, `≤ 0` at `h`), and the
-    /// state there.
-    fn lift_off_in(&self, state: &GroundTopState, h: f64) -> (f64, GroundTopState) {
+    /// The instant `τ ∈ (0, h]` where `N` along the step `redo(τ)` reaches
+    /// zero (bisection; `N > 0` at the start, `≤ 0` at `h`), and the state
+    /// there.
+    fn lift_off_in(&self, h: f64, redo: impl Fn(f64) -> GroundTopState) -> (f64, GroundTopState) {
         let (mut lo, mut hi) = (0.0, h);
         for _ in 0..BISECTIONS {
             let mid = 0.5 * (lo + hi);
-            if self.rates(&rk4(self, state, mid).0).normal_force > 0.0 {
+            if self.rates(&redo(mid)).normal_force > 0.0 {
                 lo = mid;
             } else {
                 hi = mid;
             }
         }
-        (hi, rk4(self, state, hi).0)
+        (hi, redo(hi))
     }
 
     /// Takes `steps` steps of `h` from `time`, calling `observe(t, state)`
