@@ -15,21 +15,14 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use glam::{DMat3, DQuat, DVec2, DVec3};
-use kreisel::dynamics::{Friction, GroundTop, GroundTopState, SphereContact};
+use glam::DVec3;
+use kreisel::dynamics::Friction;
 
-/// Leine & Glocker's top (m = 6 g, I₁ = 8e-7, I₃ = 7e-7 kg m², R = 15 mm,
-/// a = 3 mm) with `friction`, tilted by 0.1 rad, spinning at 180 rad/s.
-fn leine_glocker(friction: Friction) -> (GroundTop, GroundTopState) {
-    let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003)).unwrap();
-    let inertia = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
-    let top = GroundTop::try_new(0.006, inertia, sphere, friction, 9.81).unwrap();
-    let q = DQuat::from_rotation_x(0.1);
-    let s = top
-        .try_state_on_ground(q, q * DVec3::new(0.0, 0.0, 180.0), DVec2::ZERO)
-        .unwrap();
-    (top, s)
-}
+#[allow(dead_code)]
+#[path = "../tests/common/tippe_top.rs"]
+mod tippe_top;
+
+use tippe_top::leine_glocker;
 
 fn frictions() -> [(&'static str, Friction); 3] {
     [

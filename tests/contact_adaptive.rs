@@ -15,31 +15,14 @@ use kreisel::dynamics::{
     GroundTop, GroundTopState, SphereContact,
 };
 
-/// Leine & Glocker's tippe top (Eur. J. Mech. A/Solids 22 (2003) 193).
-const M: f64 = 0.006;
-const R: f64 = 0.015;
-const A: f64 = 0.003;
-const I1: f64 = 8e-7;
-const I3: f64 = 7e-7;
-const THETA0: f64 = 0.1;
-const OMEGA0: f64 = 180.0;
-const MU: f64 = 0.3;
-const G: f64 = 9.81;
+use common::tippe_top::{G, MU};
 
 /// The top with regularised Coulomb friction of slip velocity `eps`.
 fn leine_glocker(eps: f64) -> (GroundTop, GroundTopState) {
-    let friction = Friction::Sliding {
+    common::tippe_top::leine_glocker(Friction::Sliding {
         mu: MU,
         slip_velocity: eps,
-    };
-    let sphere = SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap();
-    let inertia = DMat3::from_diagonal(DVec3::new(I1, I1, I3));
-    let top = GroundTop::try_new(M, inertia, sphere, friction, G).unwrap();
-    let q = DQuat::from_rotation_x(THETA0);
-    let s = top
-        .try_state_on_ground(q, q * DVec3::new(0.0, 0.0, OMEGA0), DVec2::ZERO)
-        .unwrap();
-    (top, s)
+    })
 }
 
 /// cos θ of the symmetry axis and its rate `(ω × axis)_z`.

@@ -14,31 +14,7 @@ use kreisel::dynamics::{
     DynamicsError, Friction, FrictionModel, GroundTop, GroundTopState, SphereContact,
 };
 
-/// Leine & Glocker's tippe top (Eur. J. Mech. A/Solids 22 (2003) 193):
-/// mass, ball radius, ball centre from the centre of mass towards the
-/// stem (the centre of mass is `A` below the ball's centre with the stem
-/// up), initial tilt and spin.
-const M: f64 = 0.006;
-const R: f64 = 0.015;
-const A: f64 = 0.003;
-const I1: f64 = 8e-7;
-const I3: f64 = 7e-7;
-const THETA0: f64 = 0.1;
-const OMEGA0: f64 = 180.0;
-const G: f64 = 9.81;
-
-/// The top with `friction`, tilted by θ₀ about x, spinning at ω₀ about
-/// its axis, centre of mass at rest.
-fn leine_glocker(friction: Friction) -> (GroundTop, GroundTopState) {
-    let sphere = SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap();
-    let inertia = DMat3::from_diagonal(DVec3::new(I1, I1, I3));
-    let top = GroundTop::try_new(M, inertia, sphere, friction, G).unwrap();
-    let q = DQuat::from_rotation_x(THETA0);
-    let s = top
-        .try_state_on_ground(q, q * DVec3::new(0.0, 0.0, OMEGA0), DVec2::ZERO)
-        .unwrap();
-    (top, s)
-}
+use common::tippe_top::{A, G, I1, I3, M, OMEGA0, R, THETA0, distance, flat, leine_glocker};
 
 /// The height of the unit symmetry axis' tip (towards the stem): cos θ.
 fn axis_z(s: &GroundTopState) -> f64 {
@@ -351,26 +327,6 @@ fn bad_input_gives_typed_errors() {
         }
     }
     assert!(failed);
-}
-
-/// The state as one vector of comparable size: positions over R,
-/// velocities over R ω₀, the attitude, L over |L₀|.
-fn flat(s: &GroundTopState, l0: f64) -> Vec<f64> {
-    let q = s.world_from_body.normalize();
-    let mut v = Vec::new();
-    v.extend((s.com_world / R).to_array());
-    v.extend((s.velocity_world / (R * OMEGA0)).to_array());
-    v.extend(q.to_array());
-    v.extend((s.l_world / l0).to_array());
-    v
-}
-
-fn distance(a: &[f64], b: &[f64]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).powi(2))
-        .sum::<f64>()
-        .sqrt()
 }
 
 // Measured (t = 0.2 s, h = 1e-4, 5e-5, 2.5e-5 s): order 4.000 (viscous),

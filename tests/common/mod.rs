@@ -6,6 +6,7 @@ pub mod contact;
 pub mod free_body;
 pub mod heavy_top;
 pub mod shapes;
+pub mod tippe_top;
 
 use std::path::PathBuf;
 

@@ -168,11 +168,7 @@ fn rates_from_omega<'py>(
                 In::World => sequence.rates_from_omega_world(a, w)?,
             };
             Ok(if degrees {
-                DVec3::new(
-                    rates.x.to_degrees(),
-                    rates.y.to_degrees(),
-                    rates.z.to_degrees(),
-                )
+                rates.map(f64::to_degrees)
             } else {
                 rates
             })
