@@ -1,6 +1,5 @@
 //! The geometry of a body-fixed circular rim (a coin, Euler's disk)
-//! touching the ground plane `z = 0`, and [`ContactShape`], the surfaces a
-//! [`crate::GroundTop`] can touch with.
+//! touching the ground plane `z = 0`.
 
 use glam::{DQuat, DVec3};
 
@@ -99,70 +98,25 @@ impl DiskContact {
         let q = world_from_body.normalize();
         q * self.center_body + self.radius * down_in_plane(q * self.normal_body)
     }
+
+    /// `ρ` and its rate `ρ̇` for the angular velocity `omega_world` at the
+    /// unit attitude `q` (the formulas above).
+    pub(crate) fn offset_and_rate(&self, q: DQuat, omega_world: DVec3) -> (DVec3, DVec3) {
+        let c = q * self.center_body;
+        let n = q * self.normal_body;
+        let s = DVec3::Z.cross(n).length();
+        let u = (n.z * n - DVec3::Z) / s;
+        let dn = omega_world.cross(n);
+        let ds = -n.z * dn.z / s;
+        let du = (dn.z * n + n.z * dn) / s - u * (ds / s);
+        (c + self.radius * u, omega_world.cross(c) + self.radius * du)
+    }
 }
 
 /// `û = (n_z n − ẑ)/|ẑ × n|`, the steepest downward unit vector in the
 /// plane normal to the unit vector `n`.
 fn down_in_plane(n: DVec3) -> DVec3 {
     (n.z * n - DVec3::Z) / DVec3::Z.cross(n).length()
-}
-
-/// The surface near the contact: a sphere or a circular rim.
-///
-/// ```
-/// use glam::DVec3;
-/// use kreisel_dynamics::{ContactShape, SphereContact};
-/// let s = ContactShape::Sphere(SphereContact::try_new(0.015, DVec3::ZERO)?);
-/// assert!(matches!(s, ContactShape::Sphere(_)));
-/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum ContactShape {
-    /// A body-fixed sphere (ball-ended top, tippe top).
-    Sphere(SphereContact),
-    /// A body-fixed circular rim (coin, Euler's disk).
-    Disk(DiskContact),
-}
-
-impl ContactShape {
-    /// The contact point seen from the centre of mass, world axes: `ρ`.
-    pub fn contact_from_com_world(&self, world_from_body: DQuat) -> DVec3 {
-        match self {
-            Self::Sphere(s) => s.contact_from_com_world(world_from_body),
-            Self::Disk(d) => d.contact_from_com_world(world_from_body),
-        }
-    }
-
-    /// The shape's centre seen from the centre of mass, world axes: `A c`.
-    pub fn center_from_com_world(&self, world_from_body: DQuat) -> DVec3 {
-        let c = match self {
-            Self::Sphere(s) => s.center_body(),
-            Self::Disk(d) => d.center_body(),
-        };
-        world_from_body.normalize() * c
-    }
-
-    /// `ρ` and its rate `ρ̇` for the angular velocity `omega_world`, at
-    /// the unit attitude `q` (formulas at [`DiskContact`]; for a sphere
-    /// `ρ̇ = ω × A c`).
-    pub(crate) fn offset_and_rate(&self, q: DQuat, omega_world: DVec3) -> (DVec3, DVec3) {
-        match self {
-            Self::Sphere(s) => {
-                let c = q * s.center_body();
-                (c - s.radius() * DVec3::Z, omega_world.cross(c))
-            }
-            Self::Disk(d) => {
-                let c = q * d.center_body;
-                let n = q * d.normal_body;
-                let s = DVec3::Z.cross(n).length();
-                let u = (n.z * n - DVec3::Z) / s;
-                let dn = omega_world.cross(n);
-                let ds = -n.z * dn.z / s;
-                let du = (dn.z * n + n.z * dn) / s - u * (ds / s);
-                (c + d.radius * u, omega_world.cross(c) + d.radius * du)
-            }
-        }
-    }
 }
 
 #[cfg(test)]
@@ -177,7 +131,7 @@ mod tests {
             DVec3::new(0.2, 0.1, 1.0),
         )
         .unwrap();
-        let shape = ContactShape::Disk(d);
+        let shape = d;
         let q = DQuat::from_euler(glam::EulerRot::ZXZ, 0.3, 0.8, -0.4);
         let omega = DVec3::new(1.5, -2.0, 3.0);
         let (rho, rate) = shape.offset_and_rate(q, omega);

@@ -169,6 +169,7 @@
 //! inversion ends at `ω_z = ω₀ (cos θ₀ − α)/(1 + α)`.
 
 mod adaptive;
+mod contact_shape;
 mod disk_contact;
 mod friction;
 mod ground_top;
@@ -176,7 +177,8 @@ mod rk4;
 mod sphere_contact;
 
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
-pub use self::disk_contact::{ContactShape, DiskContact};
+pub use self::contact_shape::ContactShape;
+pub use self::disk_contact::DiskContact;
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;

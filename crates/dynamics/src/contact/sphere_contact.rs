@@ -93,6 +93,12 @@ impl SphereContact {
     pub fn gap(&self, com_world: DVec3, world_from_body: DQuat) -> f64 {
         com_world.z + self.center_from_com_world(world_from_body).z - self.radius
     }
+
+    /// `ρ = A c − R ẑ` and its rate `ρ̇ = ω × A c` at the unit attitude `q`.
+    pub(crate) fn offset_and_rate(&self, q: DQuat, omega_world: DVec3) -> (DVec3, DVec3) {
+        let c = q * self.center_body;
+        (c - self.radius * DVec3::Z, omega_world.cross(c))
+    }
 }
 
 #[cfg(test)]

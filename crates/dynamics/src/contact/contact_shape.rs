@@ -1,0 +1,53 @@
+//! [`ContactShape`]: the surfaces a [`crate::GroundTop`] can touch the
+//! ground with, their contact point seen from the centre of mass and its
+//! rate.
+
+use glam::{DQuat, DVec3};
+
+use super::{DiskContact, SphereContact};
+
+/// The surface near the contact: a sphere or a circular rim.
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::{ContactShape, SphereContact};
+/// let s = ContactShape::Sphere(SphereContact::try_new(0.015, DVec3::ZERO)?);
+/// assert!(matches!(s, ContactShape::Sphere(_)));
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ContactShape {
+    /// A body-fixed sphere (ball-ended top, tippe top).
+    Sphere(SphereContact),
+    /// A body-fixed circular rim (coin, Euler's disk).
+    Disk(DiskContact),
+}
+
+impl ContactShape {
+    /// The contact point seen from the centre of mass, world axes: `ρ`.
+    pub fn contact_from_com_world(&self, world_from_body: DQuat) -> DVec3 {
+        match self {
+            Self::Sphere(s) => s.contact_from_com_world(world_from_body),
+            Self::Disk(d) => d.contact_from_com_world(world_from_body),
+        }
+    }
+
+    /// The shape's centre seen from the centre of mass, world axes: `A c`.
+    pub fn center_from_com_world(&self, world_from_body: DQuat) -> DVec3 {
+        let c = match self {
+            Self::Sphere(s) => s.center_body(),
+            Self::Disk(d) => d.center_body(),
+        };
+        world_from_body.normalize() * c
+    }
+
+    /// `ρ` and its rate `ρ̇` for the angular velocity `omega_world`, at
+    /// the unit attitude `q` (formulas at [`DiskContact`]; for a sphere
+    /// `ρ̇ = ω × A c`).
+    pub(crate) fn offset_and_rate(&self, q: DQuat, omega_world: DVec3) -> (DVec3, DVec3) {
+        match self {
+            Self::Sphere(s) => s.offset_and_rate(q, omega_world),
+            Self::Disk(d) => d.offset_and_rate(q, omega_world),
+        }
+    }
+}
