@@ -1,4 +1,5 @@
-//! The edges of the tippe top's inversion window in the inertia ratio.
+//! The edges of the tippe top's inversion window in the inertia ratio, and
+//! the spin after a complete inversion.
 //!
 //! For a ball-ended top with `α = a/R` (the centre of mass `a` from the
 //! ball's centre) and any sliding friction, Rauch-Wojciechowski and
@@ -25,17 +26,19 @@
 mod common;
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
-use kreisel::dynamics::{AdaptiveTolerance, Friction, GroundTop, SphereContact};
+use std::f64::consts::PI;
 
-use common::tippe_top::{A, G, I3, M, R, THETA0};
+use kreisel::dynamics::{AdaptiveTolerance, Friction, GroundTop, GroundTopState, SphereContact};
+
+use common::tippe_top::{A, G, I1, I3, M, OMEGA0, R, THETA0};
 
 /// `α = a/R` of Leine & Glocker's top.
 const ALPHA: f64 = A / R;
 
-/// Where a top with `I₁ = ratio · I₃` is after `duration` s spun at `spin`
-/// rad/s about its axis from θ₀: the tilt θ of its axis, rad, its slip
-/// speed, m/s, and the largest relative change of Jellett's λ.
-fn end_state(ratio: f64, spin: f64, duration: f64) -> (f64, f64, f64) {
+/// A top with `I₁ = ratio · I₃` after `duration` s, spun at `spin` rad/s
+/// about its axis from θ₀: the top, its state and the largest relative
+/// change of Jellett's λ on the way.
+fn run(ratio: f64, spin: f64, duration: f64) -> (GroundTop, GroundTopState, f64) {
     let sphere = SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap();
     let inertia = DMat3::from_diagonal(DVec3::new(ratio * I3, ratio * I3, I3));
     let friction = Friction::try_viscous(0.3).unwrap();
@@ -51,9 +54,19 @@ fn end_state(ratio: f64, spin: f64, duration: f64) -> (f64, f64, f64) {
         drift = drift.max((top.jellett(s) / lambda0 - 1.0).abs());
     })
     .unwrap();
+    (top, s, drift)
+}
+
+/// The tilt θ of the symmetry axis, rad (atan2: exact near 0 and π).
+fn tilt(s: &GroundTopState) -> f64 {
     let axis = s.world_from_body.normalize() * DVec3::Z;
-    let theta = axis.truncate().length().atan2(axis.z);
-    (theta, top.slip_velocity(&s).length(), drift)
+    axis.truncate().length().atan2(axis.z)
+}
+
+/// [`run`]'s tilt, slip speed (m/s) and λ drift.
+fn end_state(ratio: f64, spin: f64, duration: f64) -> (f64, f64, f64) {
+    let (top, s, drift) = run(ratio, spin, duration);
+    (tilt(&s), top.slip_velocity(&s).length(), drift)
 }
 
 /// Jellett's λ of a spin `spin` about the axis tilted by θ₀, by hand:
@@ -144,4 +157,32 @@ fn the_lower_edge_separates_inversion_from_rising_upright() {
     assert!(theta_in > 175f64.to_radians(), "{theta_in}");
     assert!(theta_out < 1e-3 * THETA0, "{theta_out}");
     assert!(drift_in < 1e-10 && drift_out < 1e-10);
+}
+
+/// The final spin after a complete inversion on Leine & Glocker's top, run
+/// until its axis is vertical to round-off. By hand from λ: at the start
+/// `L = I₃ ω₀ ê₃`, `λ = I₃ ω₀ (R cos θ₀ − a)`; spinning upside down on the
+/// ball (`ê₃ = −ẑ`, ω = ω_z ẑ), `λ = I₃ ω_z (R + a)`, so
+/// `ω_z = ω₀ (cos θ₀ − α)/(1 + α)`, and the spin about the body axis
+/// changed sign.
+#[test]
+fn after_a_complete_inversion_the_spin_is_jelletts() {
+    let (top, s, drift) = run(I1 / I3, OMEGA0, 150.0);
+    let omega = top.omega_world(&s);
+    let expected = OMEGA0 * (THETA0.cos() - ALPHA) / (1.0 + ALPHA);
+    let spin_body = (s.world_from_body.normalize().conjugate() * omega).z;
+    let off = PI - tilt(&s);
+    eprintln!(
+        "after 150 s: π − θ {off:.1e} rad, ω {omega} vs ω_z {expected} rad/s \
+         ({:.1e} relative), λ drift {drift:.1e}",
+        omega.z / expected - 1.0
+    );
+    assert!(off < 1e-6, "{off}");
+    assert!(
+        (omega.z / expected - 1.0).abs() < 1e-8,
+        "{omega} vs {expected}"
+    );
+    assert!(omega.truncate().length() < 1e-5 * expected);
+    assert!(spin_body < 0.0);
+    assert!(drift < 1e-10);
 }
