@@ -12,6 +12,7 @@
 #![forbid(unsafe_code)]
 
 mod body;
+mod contact;
 mod figure;
 mod methods;
 mod output;
@@ -505,6 +506,12 @@ fn diverged(
         } => format!(
             "body `{body}`: method {used} diverged at t = {} s ({reason}); {hint}",
             crate::numbers::Shortest(*time)
+        ),
+        DynamicsError::ContactLost { .. }
+        | DynamicsError::DiskFlat { .. }
+        | DynamicsError::ContactIndeterminate { .. } => format!(
+            "body `{body}`: {error}: the run stops there (a body on the ground keeps one \
+             contact with the plane; what follows is not modelled)"
         ),
         other => format!(
             "body `{body}`: the step to t = {} s failed: {other}; {hint}",
