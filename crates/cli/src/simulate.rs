@@ -94,6 +94,26 @@ Scene (TOML; SI units, radians):
   angular_damping = 0.01     c >= 0: the torque -c omega, N m s [default: 0]
                              (torque, torque_body, force, angular_damping
                              with a pivot: a driven heavy top)
+  [body.contact]              the body stands on the ground plane z = 0
+                             (gravity must be [0, 0, -g]) touching it with:
+  shape = \"sphere\"           \"sphere\" | \"disk\" (\"ellipsoid\": not supported yet)
+  radius = 0.015             sphere or disk radius, m
+  center = [0, 0, 0.003]     its centre from the centre of mass, body axes,
+                             m [default: 0]
+  normal = [0, 0, 1]         disk only: its axis, body axes
+  friction = \"sliding\"       \"none\" | \"viscous\" (F = -mu N v_slip, mu in
+                             s/m) | \"sliding\" (Coulomb, regularised:
+                             F = -mu N v/sqrt(|v|^2 + eps^2)) | \"rolling\"
+                             (no slip)
+  mu = 0.3                   viscous and sliding only, >= 0
+  slip_velocity = 1e-3       sliding only: eps, m/s [default: 1e-3, Leine &
+                             Glocker's value; inversion times depend on it]
+                             The body starts touching: the height of its
+                             centre of mass follows from its attitude (a
+                             `position` z must agree to 1e-9 m); x, y from
+                             `position`; `velocity` horizontal (not with
+                             rolling: it follows from the spin). No pivot,
+                             torque, torque_body, force or angular_damping.
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
@@ -117,6 +137,11 @@ Motion:
   auto: splitting6 (order 6); strang, splitting4, splitting6, splitting8:
   the splitting of that order; the other methods cannot move it (an error).
   Its centre of mass moves under gravity and force: x'' = g + F/m.
+  A body with [body.contact] is moved by the contact model's RK4 every dt
+  (whatever the method or tolerance): its centre of mass and rotation
+  under gravity, the normal force and friction at the contact point; the
+  run stops with an error at a lift-off (normal force zero), a disk lying
+  flat, or an indeterminate contact, the rows before it valid.
   A heavy top with them is driven: the same splitting about the pivot, with
   gravity kicked exactly alongside the loads (a force turns the top about
   the pivot); auto: splitting8 sub-stepped within its stability limit.
@@ -144,7 +169,8 @@ Output (CSV; standard output unless --output):
              only with gravity), constant for an exact solution; with a
              pivot: rotational about the pivot - m g.x (x the centre of mass)
   lx..lz     angular momentum about the centre of mass, world axes, kg m^2/s
-             (about the pivot for a body with one)
+             (about the pivot for a body with one; about the centre of mass
+             for a body on the ground)
   With torque, torque_body, force or angular_damping, energy is the
   mechanical energy (the same formula): not conserved, its change is the
   work done by them (damping included).
@@ -181,6 +207,7 @@ Examples:
   kreisel simulate spin.toml --method rk4 | head
   kreisel simulate examples/scenes/heavy_top.toml
   kreisel simulate examples/scenes/heavy_top.toml --explain
+  kreisel simulate examples/scenes/tippe_top.toml --columns t,z,energy,lz
   kreisel simulate examples/scenes/spin_up.toml --columns t,wz,lz,energy
   kreisel simulate examples/scenes/dzhanibekov.toml --output run.csv --plot run.png
   kreisel simulate --list-methods";

@@ -75,6 +75,12 @@ fn place(
     position_xy: DVec2,
     velocity_xy: DVec2,
 ) -> Result<GroundTopState, DynamicsError> {
+    if !top.shape().contact_from_com_world(q).is_finite() {
+        // Said here: the rolling state would first find ω × ρ not finite.
+        return Err(DynamicsError::InvalidState {
+            reason: "the disk lies flat (axis vertical): no single contact point",
+        });
+    }
     let mut state = if top.friction() == Friction::Rolling && velocity_xy == DVec2::ZERO {
         top.try_rolling_state_on_ground(q, omega_world)?
     } else {
