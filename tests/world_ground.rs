@@ -245,6 +245,21 @@ fn lift_off_is_the_world_failure_at_the_hand_computed_time() {
 }
 
 #[test]
+fn ground_bodies_on_several_threads_move_bit_for_bit_as_on_one() {
+    let mut states = Vec::new();
+    for n in [1, 2] {
+        let mut world = World::try_new(GRAVITY, 1e-5).unwrap();
+        world.set_threads(std::num::NonZeroUsize::new(n).unwrap());
+        for friction in frictions() {
+            world.add(tippe_top(friction)).unwrap();
+        }
+        world.advance_to(0.01).unwrap();
+        states.push(world.states().map(|(_, s)| s).collect::<Vec<_>>());
+    }
+    assert_eq!(states[0], states[1]);
+}
+
+#[test]
 fn setters_place_the_body_on_the_plane_again() {
     let friction = Friction::try_sliding(MU, 1e-3).unwrap();
     let mut world = World::try_new(GRAVITY, 1e-5).unwrap();

@@ -663,7 +663,9 @@ mod tests {
         [[body]]\nname = \"ball\"\nmass = 1\ninertia = [2, 2, 2]\nangular_velocity = [1, 2, 3]\n\
         [[body]]\nname = \"disc\"\nmass = 1\ninertia = [1, 1, 2]\nangular_velocity = [0.1, 0, 1]\n\
         [[body]]\nname = \"handle\"\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0.01, 1, 0]\n\
-        [[body]]\nname = \"top\"\nmass = 1\ninertia = [0.02, 0.02, 0.01]\nangular_velocity = [0, 0, 50]\npivot = [0, 0, -0.1]\n";
+        [[body]]\nname = \"top\"\nmass = 1\ninertia = [0.02, 0.02, 0.01]\nangular_velocity = [0, 0, 50]\npivot = [0, 0, -0.1]\n\
+        [[body]]\nname = \"tippe\"\nmass = 0.006\ninertia = [8e-7, 8e-7, 7e-7]\nangular_velocity = [0, 0, 180]\n\
+        [body.contact]\nshape = \"sphere\"\nradius = 0.015\ncenter = [0, 0, 0.003]\nfriction = \"viscous\"\nmu = 0.3\n";
 
     fn plans(method: Option<&str>) -> Vec<String> {
         let scene = scene::parse_with_method(Path::new("s.toml"), SCENE, method).unwrap();
@@ -685,6 +687,7 @@ mod tests {
             "disc: symmetric free body: exact, closed form",
             "handle: asymmetric free body: exact, Jacobi elliptic solution",
             "top: Lagrange top on a pivot: exact, closed form",
+            "tippe: body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction viscous",
         ];
         assert_eq!(lines.len(), starts.len());
         for (line, start) in lines.iter().zip(starts) {
@@ -698,6 +701,11 @@ mod tests {
         );
         assert!(
             lines[4].starts_with("top: heavy top on a pivot: rk4 (order 4)"),
+            "{lines:?}"
+        );
+        // A body on the ground keeps its contact model's RK4.
+        assert!(
+            lines[5].starts_with("tippe: body on the ground: ground-top rk4"),
             "{lines:?}"
         );
     }

@@ -423,3 +423,24 @@ fn a_position_at_the_touching_height_places_the_body_there() {
     assert!((last[1] - (1.0 + 0.5 * 0.01)).abs() < 1e-15, "{last:?}");
     assert_eq!((last[2], last[3], last[4]), (2.0, 0.015, 0.5));
 }
+
+#[test]
+fn the_figure_says_the_body_is_on_the_ground() {
+    let scene = tippe_top_scene("0.01");
+    let path = scratch("c_plot.toml", &scene);
+    let svg = scratch("c_plot.svg", "");
+    let run = simulate_file(
+        &path,
+        &[
+            "--plot",
+            svg.to_str().unwrap(),
+            "--output",
+            scratch("c_plot.csv", "").to_str().unwrap(),
+        ],
+    );
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.contains("on the ground (contact with the plane z = 0)"));
+    assert!(text.contains("L turned by the contact force"));
+    assert!(!text.contains("pivot"));
+}
