@@ -94,7 +94,7 @@ Scene (TOML; SI units, radians):
   angular_damping = 0.01     c >= 0: the torque -c omega, N m s [default: 0]
                              (torque, torque_body, force, angular_damping
                              with a pivot: a driven heavy top)
-  [body.contact]              the body stands on the ground plane z = 0
+  [body.contact]             the body stands on the ground plane z = 0
                              (gravity must be [0, 0, -g]) touching it with:
   shape = \"sphere\"           \"sphere\" | \"disk\" (\"ellipsoid\": not supported yet)
   radius = 0.015             sphere or disk radius, m
@@ -137,14 +137,14 @@ Motion:
   auto: splitting6 (order 6); strang, splitting4, splitting6, splitting8:
   the splitting of that order; the other methods cannot move it (an error).
   Its centre of mass moves under gravity and force: x'' = g + F/m.
+  A heavy top with them is driven: the same splitting about the pivot, with
+  gravity kicked exactly alongside the loads (a force turns the top about
+  the pivot); auto: splitting8 sub-stepped within its stability limit.
   A body with [body.contact] is moved by the contact model's RK4 every dt
   (whatever the method or tolerance): its centre of mass and rotation
   under gravity, the normal force and friction at the contact point; the
   run stops with an error at a lift-off (normal force zero), a disk lying
   flat, or an indeterminate contact, the rows before it valid.
-  A heavy top with them is driven: the same splitting about the pivot, with
-  gravity kicked exactly alongside the loads (a force turns the top about
-  the pivot); auto: splitting8 sub-stepped within its stability limit.
   With tolerance, a driven body or heavy top takes the cheapest splitting
   and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
   or pdmv6 every dt where that is predicted to meet it for less work than
