@@ -314,6 +314,13 @@ fn bad_contacts_are_one_line_errors_at_their_line() {
         14,
         &["2 [[body.contact]] tables: only one contact"],
     );
+    check(
+        "c_empty.toml",
+        DOWN,
+        "contact = []\n",
+        10,
+        &["`contact` is an empty array"],
+    );
     // Gravity must point down.
     let ok = contact(&format!("{sphere}friction = \"none\"\n"));
     check(
