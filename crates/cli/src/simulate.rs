@@ -12,6 +12,7 @@
 #![forbid(unsafe_code)]
 
 mod body;
+mod contact;
 mod figure;
 mod methods;
 mod output;
@@ -93,6 +94,26 @@ Scene (TOML; SI units, radians):
   angular_damping = 0.01     c >= 0: the torque -c omega, N m s [default: 0]
                              (torque, torque_body, force, angular_damping
                              with a pivot: a driven heavy top)
+  [body.contact]             the body stands on the ground plane z = 0
+                             (gravity must be [0, 0, -g]) touching it with:
+  shape = \"sphere\"           \"sphere\" | \"disk\" (\"ellipsoid\": not supported yet)
+  radius = 0.015             sphere or disk radius, m
+  center = [0, 0, 0.003]     its centre from the centre of mass, body axes,
+                             m [default: 0]
+  normal = [0, 0, 1]         disk only: its axis, body axes
+  friction = \"sliding\"       \"none\" | \"viscous\" (F = -mu N v_slip, mu in
+                             s/m) | \"sliding\" (Coulomb, regularised:
+                             F = -mu N v/sqrt(|v|^2 + eps^2)) | \"rolling\"
+                             (no slip)
+  mu = 0.3                   viscous and sliding only, >= 0
+  slip_velocity = 1e-3       sliding only: eps, m/s [default: 1e-3, Leine &
+                             Glocker's value; inversion times depend on it]
+                             The body starts touching: the height of its
+                             centre of mass follows from its attitude (a
+                             `position` z must agree to 1e-9 m); x, y from
+                             `position`; `velocity` horizontal (not with
+                             rolling: it follows from the spin). No pivot,
+                             torque, torque_body, force or angular_damping.
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
@@ -119,6 +140,11 @@ Motion:
   A heavy top with them is driven: the same splitting about the pivot, with
   gravity kicked exactly alongside the loads (a force turns the top about
   the pivot); auto: splitting8 sub-stepped within its stability limit.
+  A body with [body.contact] is moved by the contact model's RK4 every dt
+  (whatever the method or tolerance): its centre of mass and rotation
+  under gravity, the normal force and friction at the contact point; the
+  run stops with an error at a lift-off (normal force zero), a disk lying
+  flat, or an indeterminate contact, the rows before it valid.
   With tolerance, a driven body or heavy top takes the cheapest splitting
   and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
   or pdmv6 every dt where that is predicted to meet it for less work than
@@ -143,7 +169,8 @@ Output (CSV; standard output unless --output):
              only with gravity), constant for an exact solution; with a
              pivot: rotational about the pivot - m g.x (x the centre of mass)
   lx..lz     angular momentum about the centre of mass, world axes, kg m^2/s
-             (about the pivot for a body with one)
+             (about the pivot for a body with one; about the centre of mass
+             for a body on the ground)
   With torque, torque_body, force or angular_damping, energy is the
   mechanical energy (the same formula): not conserved, its change is the
   work done by them (damping included).
@@ -180,6 +207,7 @@ Examples:
   kreisel simulate spin.toml --method rk4 | head
   kreisel simulate examples/scenes/heavy_top.toml
   kreisel simulate examples/scenes/heavy_top.toml --explain
+  kreisel simulate examples/scenes/tippe_top.toml --columns t,z,energy,lz
   kreisel simulate examples/scenes/spin_up.toml --columns t,wz,lz,energy
   kreisel simulate examples/scenes/dzhanibekov.toml --output run.csv --plot run.png
   kreisel simulate --list-methods";
@@ -506,6 +534,12 @@ fn diverged(
             "body `{body}`: method {used} diverged at t = {} s ({reason}); {hint}",
             crate::numbers::Shortest(*time)
         ),
+        DynamicsError::ContactLost { .. }
+        | DynamicsError::DiskFlat { .. }
+        | DynamicsError::ContactIndeterminate { .. } => format!(
+            "body `{body}`: {error}: the run stops there (a body on the ground keeps one \
+             contact with the plane; what follows is not modelled)"
+        ),
         other => format!(
             "body `{body}`: the step to t = {} s failed: {other}; {hint}",
             crate::numbers::Shortest(time)
@@ -629,7 +663,9 @@ mod tests {
         [[body]]\nname = \"ball\"\nmass = 1\ninertia = [2, 2, 2]\nangular_velocity = [1, 2, 3]\n\
         [[body]]\nname = \"disc\"\nmass = 1\ninertia = [1, 1, 2]\nangular_velocity = [0.1, 0, 1]\n\
         [[body]]\nname = \"handle\"\nmass = 1\ninertia = [1, 2, 3]\nangular_velocity = [0.01, 1, 0]\n\
-        [[body]]\nname = \"top\"\nmass = 1\ninertia = [0.02, 0.02, 0.01]\nangular_velocity = [0, 0, 50]\npivot = [0, 0, -0.1]\n";
+        [[body]]\nname = \"top\"\nmass = 1\ninertia = [0.02, 0.02, 0.01]\nangular_velocity = [0, 0, 50]\npivot = [0, 0, -0.1]\n\
+        [[body]]\nname = \"tippe\"\nmass = 0.006\ninertia = [8e-7, 8e-7, 7e-7]\nangular_velocity = [0, 0, 180]\n\
+        [body.contact]\nshape = \"sphere\"\nradius = 0.015\ncenter = [0, 0, 0.003]\nfriction = \"viscous\"\nmu = 0.3\n";
 
     fn plans(method: Option<&str>) -> Vec<String> {
         let scene = scene::parse_with_method(Path::new("s.toml"), SCENE, method).unwrap();
@@ -651,6 +687,7 @@ mod tests {
             "disc: symmetric free body: exact, closed form",
             "handle: asymmetric free body: exact, Jacobi elliptic solution",
             "top: Lagrange top on a pivot: exact, closed form",
+            "tippe: body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction viscous",
         ];
         assert_eq!(lines.len(), starts.len());
         for (line, start) in lines.iter().zip(starts) {
@@ -664,6 +701,11 @@ mod tests {
         );
         assert!(
             lines[4].starts_with("top: heavy top on a pivot: rk4 (order 4)"),
+            "{lines:?}"
+        );
+        // A body on the ground keeps its contact model's RK4.
+        assert!(
+            lines[5].starts_with("tippe: body on the ground: ground-top rk4"),
             "{lines:?}"
         );
     }

@@ -1,7 +1,8 @@
 //! One `[[body]]` of the scene: its inertia (moments, a tensor or a mesh),
-//! initial attitude, spin, support and applied inputs (torques, a force,
-//! damping), checked key by key and added to the scene's [`World`] (which
-//! holds the physics).
+//! initial attitude, spin, support (free, a pivot, or the ground with a
+//! `[body.contact]` table, `contact.rs`) and applied inputs (torques, a
+//! force, damping), checked key by key and added to the scene's [`World`]
+//! (which holds the physics).
 
 #![forbid(unsafe_code)]
 
@@ -9,13 +10,14 @@ use std::io::Write;
 use std::path::Path;
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{Body, BodyBuilder, BodyId, DynamicsError, Inputs, World};
+use kreisel_dynamics::{Body, BodyBuilder, BodyId, DynamicsError, Friction, Inputs, World};
 use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
 use kreisel_inertia::{MassProperties, Material};
 use kreisel_kinematics::{EulerSequence, try_normalize_quat};
 use serde::Deserialize;
 use toml::Spanned;
 
+use super::contact::{self, RawContacts};
 use super::scene::{Keys, SceneFile};
 use crate::error::CliError;
 use crate::numbers::Shortest;
@@ -40,6 +42,7 @@ pub struct RawBody {
     torque_body: Option<Spanned<[f64; 3]>>,
     force: Option<Spanned<[f64; 3]>>,
     angular_damping: Option<Spanned<f64>>,
+    contact: Option<Spanned<RawContacts>>,
 }
 
 /// `euler = { sequence = "ZXZ", angles = [..] }` as written.
@@ -54,6 +57,11 @@ impl RawBody {
     /// Whether the body has a `pivot` (is a heavy top).
     pub fn has_pivot(&self) -> bool {
         self.pivot.is_some()
+    }
+
+    /// Where the `contact` key is, if given (the body stands on the ground).
+    pub fn contact_span(&self) -> Option<std::ops::Range<usize>> {
+        self.contact.as_ref().map(Spanned::span)
     }
 
     /// Where the `name` key is, if given.
@@ -87,15 +95,52 @@ pub fn add_body(
     let velocity = optional_vector(&keys, "velocity", &b.velocity)?;
     let (inputs, first_input) = inputs(&keys, b)?;
     let builder = inertia.builder.world_from_body(attitude).omega_body(omega);
-    let builder = match &b.pivot {
-        Some(pivot) => {
+    let builder = match (&b.contact, &b.pivot) {
+        (Some(_), Some(pivot)) => {
+            let message = "`pivot` cannot be given with `contact`: a body turns about a \
+                           pivot or stands on the ground, not both";
+            return Err(keys.fail(pivot, message));
+        }
+        (Some(contact), None) => {
+            let checked = contact::check(&keys, contact)?;
+            if let Some((key, span)) = &first_input {
+                let message = format!(
+                    "`{key}` cannot be applied to a body on the ground (`contact`): \
+                     not supported"
+                );
+                return Err(keys.fail_at(span.clone(), &message));
+            }
+            if let Some(v) = &b.velocity {
+                if checked.friction == Friction::Rolling {
+                    let message = "`velocity` cannot be given with friction \"rolling\": \
+                                   it follows from rolling without slipping";
+                    return Err(keys.fail(v, message));
+                }
+                if velocity.z != 0.0 {
+                    let message = format!(
+                        "`velocity` of a body on the ground must be horizontal, \
+                         [vx, vy, 0], got vz = {}: the vertical velocity follows from \
+                         the spin",
+                        Shortest(velocity.z)
+                    );
+                    return Err(keys.fail(v, &message));
+                }
+            }
+            builder.on_ground_at(
+                checked.shape,
+                checked.friction,
+                position.truncate(),
+                velocity.truncate(),
+            )
+        }
+        (None, Some(pivot)) => {
             if let Some(v) = &b.velocity {
                 let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
                 return Err(keys.fail(v, message));
             }
             builder.pivot(keys.vector("pivot", pivot)?, position)
         }
-        None => builder.free(position, velocity),
+        (None, None) => builder.free(position, velocity),
     };
     let state_error = |e: DynamicsError| keys.fail(&b.angular_velocity, &e.to_string());
     let body = builder.try_build().map_err(|e| match e {
@@ -106,16 +151,57 @@ pub fn add_body(
     let body = body
         .with_inputs(inputs)
         .map_err(|e| keys.fail(raw, &e.to_string()))?;
-    let id = world.add(body).map_err(|e| match (e, &b.pivot) {
-        (e @ DynamicsError::InvalidState { .. }, _) => state_error(e),
-        (e @ DynamicsError::MethodTakesNoInputs { .. }, _) => match &first_input {
-            Some((key, span)) => keys.fail_at(span.clone(), &format!("`{key}`: {e}")),
-            None => keys.fail(raw, &e.to_string()),
-        },
-        (e, Some(pivot)) => keys.fail(pivot, &format!("`pivot`: {e}")),
-        (e, None) => keys.fail(raw, &e.to_string()),
-    })?;
+    let id = world
+        .add(body)
+        .map_err(|e| match (e, &b.pivot, &b.contact) {
+            (e, _, Some(contact)) => keys.fail(contact, &format!("`contact`: {e}")),
+            (e @ DynamicsError::InvalidState { .. }, _, _) => state_error(e),
+            (e @ DynamicsError::MethodTakesNoInputs { .. }, _, _) => match &first_input {
+                Some((key, span)) => keys.fail_at(span.clone(), &format!("`{key}`: {e}")),
+                None => keys.fail(raw, &e.to_string()),
+            },
+            (e, Some(pivot), _) => keys.fail(pivot, &format!("`pivot`: {e}")),
+            (e, None, _) => keys.fail(raw, &e.to_string()),
+        })?;
+    if let (Some(_), Some(given)) = (&b.contact, &b.position) {
+        check_height(&keys, given, world, id)?;
+    }
     Ok((name, id))
+}
+
+/// The largest difference between a ground body's `position` z and the
+/// height at which it touches the plane, m (a nanometre: the height is
+/// typed in, not computed).
+pub const HEIGHT_TOLERANCE: f64 = 1e-9;
+
+/// A ground body's `position` z must be the height at which it touches
+/// the plane at its attitude (within [`HEIGHT_TOLERANCE`]).
+fn check_height(
+    keys: &Keys<'_>,
+    given: &Spanned<[f64; 3]>,
+    world: &World,
+    id: BodyId,
+) -> Result<(), CliError> {
+    let Some(state) = world.state(id) else {
+        return Ok(());
+    };
+    let (z, touching) = (given.get_ref()[2], state.position.z);
+    if (z - touching).abs() <= HEIGHT_TOLERANCE {
+        return Ok(());
+    }
+    let side = if z < touching {
+        "below the plane"
+    } else {
+        "above the plane, not touching it"
+    };
+    let message = format!(
+        "`position` z = {} m puts the body {side}: at its attitude it touches the plane \
+         with its centre of mass at z = {} m (the height follows from the attitude: \
+         give that z, or leave `position` out)",
+        Shortest(z),
+        Shortest(touching)
+    );
+    Err(keys.fail(given, &message))
 }
 
 /// A key and where it is.

@@ -90,6 +90,7 @@ pub fn figure(title: &str, tracks: &[Track], recorded: Recorded) -> Figure {
 fn body_row(fig: &mut Figure, track: &Track, top: f64) {
     let m = track.principal.moments;
     let kind = match (track.pivot, track.driven) {
+        _ if track.ground => "on the ground (contact with the plane z = 0)",
         (false, false) => "torque-free",
         (false, true) => "driven (torques, forces or damping)",
         (true, false) => "heavy top on a pivot",
@@ -295,6 +296,8 @@ fn polhode_panel(fig: &mut Figure, track: &Track, top: f64) {
     }
     let note = if track.pivot {
         "L about the pivot (not conserved)"
+    } else if track.ground {
+        "on the ground: L turned by the contact force"
     } else if track.driven {
         "driven: L not conserved"
     } else if let Some(curves) = polhode::separatrices(track.principal.moments, 360) {

@@ -40,6 +40,9 @@ pub struct Track {
     pub principal: PrincipalAxes,
     /// Turns about a fixed pivot (L is then about the pivot).
     pub pivot: bool,
+    /// Stands on the ground plane (L about the centre of mass, turned by
+    /// the contact force).
+    pub ground: bool,
     /// Torques, forces or damping act on it.
     pub driven: bool,
     /// The kept rows, in time order.
@@ -74,7 +77,8 @@ impl Recorder {
                 Some(Track {
                     name: name.clone(),
                     principal: body.mass_properties().principal(),
-                    pivot: !matches!(body.support(), Support::Free { .. }),
+                    pivot: matches!(body.support(), Support::Pivot { .. }),
+                    ground: matches!(body.support(), Support::Ground { .. }),
                     driven: !body.inputs().is_none(),
                     samples: Vec::new(),
                 })
@@ -195,7 +199,7 @@ mod tests {
         }
         let last = (rows - 1) as f64 * 0.01;
         assert!((s.last().unwrap().t - last).abs() < 1e-9);
-        assert!(!tracks[0].pivot && !tracks[0].driven);
+        assert!(!tracks[0].pivot && !tracks[0].driven && !tracks[0].ground);
         // L in body axes is I ω.
         let l = s[0].l_body;
         assert!((l - DVec3::new(0.1, 2.0, 0.0)).length() < 1e-15, "{l}");

@@ -243,7 +243,21 @@ pub fn parse_with_method(
     // A set, not a search of the bodies so far: 10⁵ bodies took 31 s that way.
     let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());
     let mut has_pivot = false;
+    let down = gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0;
     for (n, raw_body) in raw.body.iter().enumerate() {
+        if let Some(contact) = raw_body.get_ref().contact_span()
+            && !down
+        {
+            let message = "a body with `contact` stands on the ground plane z = 0: \
+                           `gravity` must be [0, 0, -g] with g > 0";
+            return Err(match &sim.gravity {
+                Some(g) => keys.fail(g, message),
+                None => file.error(
+                    Some(contact),
+                    &format!("{message} (it is missing: no gravity)"),
+                ),
+            });
+        }
         let (name, id) = add_body(file, raw_body, n + 1, folder, &mut world)?;
         if !world.stays_finite(id, duration) {
             let message = format!(

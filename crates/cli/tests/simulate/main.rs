@@ -7,6 +7,7 @@
 
 mod divergence;
 mod errors;
+mod ground;
 mod heavy_top;
 mod inputs;
 mod output;

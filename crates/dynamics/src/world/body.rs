@@ -1,15 +1,16 @@
 //! [`Body`]: the one place a rigid body is built — its mass properties, its
 //! attitude and spin, and how it is held ([`Support`]).
 
-use glam::{DMat3, DQuat, DVec3};
+use glam::{DMat3, DQuat, DVec2, DVec3};
 use kreisel_inertia::MassProperties;
 
-use crate::{DynamicsError, Inputs, PrincipalState, RigidBody};
+use crate::{ContactShape, DynamicsError, Friction, Inputs, PrincipalState, RigidBody};
 
 /// How a body is held.
 ///
 /// Applied torques and forces are not part of the support: they are the
-/// body's [`Inputs`] ([`Body::with_inputs`]), for free bodies only.
+/// body's [`Inputs`] ([`Body::with_inputs`]), for free bodies and bodies
+/// on a pivot (not for a body on the ground).
 ///
 /// ```
 /// use glam::DVec3;
@@ -41,6 +42,33 @@ pub enum Support {
         pivot_body: DVec3,
         /// Where the pivot is, world axes, m.
         pivot_world: DVec3,
+    },
+    /// The body stands on the ground plane `z = 0` (the world's gravity
+    /// must point along −z) touching it with `shape`, which rubs with
+    /// `friction`: a [`crate::GroundTop`] in the world
+    /// ([`crate::Plan::OnGround`]). It starts touching: the height of the
+    /// centre of mass and its vertical velocity follow from the attitude
+    /// and the angular velocity, the horizontal part is given.
+    ///
+    /// ```text
+    /// z_G = −ρ_z,   ż_G = −(ω × ρ)_z,   (x_G, y_G) = position_xy
+    /// (ẋ_G, ẏ_G) = velocity_xy;  rolling: v_G = −ω × ρ (velocity_xy must agree)
+    /// ```
+    ///
+    /// (`ρ` the contact point seen from the centre of mass, world axes,
+    /// [`ContactShape::contact_from_com_world`].)
+    Ground {
+        /// The surface that touches: a sphere or a disk rim, centred in
+        /// body axes from the centre of mass.
+        shape: ContactShape,
+        /// The friction law at the contact point.
+        friction: Friction,
+        /// The centre of mass's horizontal position at the time the body
+        /// is added, m.
+        position_xy: DVec2,
+        /// Its horizontal velocity, m/s (with [`Friction::Rolling`] zero
+        /// means "as rolling needs"; any other value must be that one).
+        velocity_xy: DVec2,
     },
 }
 
@@ -247,6 +275,7 @@ impl Body {
     /// ```
     pub fn with_inputs(self, inputs: Inputs) -> Result<Self, DynamicsError> {
         inputs.validate()?;
+        refuse_inputs_on_ground(self.support, &inputs)?;
         Ok(Self { inputs, ..self })
     }
 
@@ -254,6 +283,22 @@ impl Body {
     pub(super) fn set_inputs(&mut self, inputs: Inputs) {
         self.inputs = inputs;
     }
+}
+
+/// [`DynamicsError::InvalidBody`] for inputs that are not all zero on a
+/// body on the ground (its contact model takes none).
+pub(super) fn refuse_inputs_on_ground(
+    support: Support,
+    inputs: &Inputs,
+) -> Result<(), DynamicsError> {
+    if matches!(support, Support::Ground { .. }) && !inputs.is_none() {
+        return Err(DynamicsError::InvalidBody {
+            field: "inputs",
+            reason: "cannot be applied to a body on the ground (not supported: \
+                     its contact model has no applied loads)",
+        });
+    }
+    Ok(())
 }
 
 impl BodyBuilder {
@@ -334,6 +379,65 @@ impl BodyBuilder {
         }
     }
 
+    /// A body standing on the ground plane with `shape` (centred in body
+    /// axes from the centre of mass), rubbing with `friction`, its centre
+    /// of mass above the origin and at rest horizontally (with
+    /// [`Friction::Rolling`]: moving as rolling needs); see
+    /// [`Support::Ground`].
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::{Body, ContactShape, Friction, SphereContact, World};
+    /// // Leine & Glocker's tippe top, tilted by 0.1 rad, spinning at 180 rad/s.
+    /// let ball = ContactShape::Sphere(SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?);
+    /// let top = Body::from_principal_moments(0.006, DVec3::new(8e-7, 8e-7, 7e-7))
+    ///     .world_from_body(DQuat::from_rotation_x(0.1))
+    ///     .omega_body(DVec3::new(0.0, 0.0, 180.0))
+    ///     .on_ground(ball, Friction::try_sliding(0.3, 1e-3)?)
+    ///     .try_build()?;
+    /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1e-5)?;
+    /// let id = world.add(top)?;
+    /// // Touching: the ball's centre is R above the floor.
+    /// let s = world.state(id).unwrap();
+    /// let centre = s.position + s.world_from_body * DVec3::new(0.0, 0.0, 0.003);
+    /// assert!((centre.z - 0.015).abs() < 1e-17);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn on_ground(self, shape: ContactShape, friction: Friction) -> Self {
+        self.on_ground_at(shape, friction, DVec2::ZERO, DVec2::ZERO)
+    }
+
+    /// As [`BodyBuilder::on_ground`], the centre of mass above
+    /// `position_xy` (m) moving horizontally at `velocity_xy` (m/s).
+    ///
+    /// ```
+    /// use glam::{DVec2, DVec3};
+    /// use kreisel_dynamics::{Body, ContactShape, Friction, SphereContact, Support};
+    /// let ball = ContactShape::Sphere(SphereContact::try_new(0.1, DVec3::ZERO)?);
+    /// let b = Body::from_principal_moments(1.0, DVec3::splat(0.004))
+    ///     .on_ground_at(ball, Friction::None, DVec2::new(1.0, 2.0), DVec2::X)
+    ///     .try_build()?;
+    /// assert!(matches!(b.support(), Support::Ground { velocity_xy, .. } if velocity_xy == DVec2::X));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn on_ground_at(
+        self,
+        shape: ContactShape,
+        friction: Friction,
+        position_xy: DVec2,
+        velocity_xy: DVec2,
+    ) -> Self {
+        Self {
+            support: Support::Ground {
+                shape,
+                friction,
+                position_xy,
+                velocity_xy,
+            },
+            ..self
+        }
+    }
+
     /// Checks the settings and builds the body.
     ///
     /// # Errors
@@ -343,7 +447,8 @@ impl BodyBuilder {
     /// [`DynamicsError::InvalidState`] for an attitude that is zero or not
     /// finite, an angular velocity that is not finite or whose energy
     /// overflows; [`DynamicsError::InvalidBody`] for a support with
-    /// non-finite vectors.
+    /// non-finite vectors; for a body on the ground the errors of
+    /// [`Friction::validate`].
     ///
     /// ```
     /// use glam::{DQuat, DVec3};
@@ -391,6 +496,16 @@ impl BodyBuilder {
             } => {
                 finite("pivot_body", pivot_body)?;
                 finite("pivot_world", pivot_world)?;
+            }
+            Support::Ground {
+                friction,
+                position_xy,
+                velocity_xy,
+                ..
+            } => {
+                finite("position", position_xy.extend(0.0))?;
+                finite("velocity", velocity_xy.extend(0.0))?;
+                friction.validate()?;
             }
         }
         PrincipalState::try_from_omega_body(&rigid, self.world_from_body, self.omega_body)?;

@@ -19,13 +19,22 @@
 //! - Bodies on a pivot with inputs (driven heavy tops, [`Plan::DrivenTop`])
 //!   step by the same splitting about the pivot, gravity kicked with the
 //!   loads.
+//! - Bodies on the ground plane `z = 0` ([`Support::Ground`],
+//!   [`Plan::OnGround`]; the world's gravity must point along −z) take
+//!   steps of `dt` on the same grid by their contact model's RK4
+//!   ([`crate::GroundTop::try_step`], bit for bit its trajectory); a longer
+//!   [`World::step`] is cut into equal sub-steps of at most `dt`. A
+//!   lift-off, a disk lying flat or Painlevé's case is the world's failure
+//!   with its time. They take no inputs, and neither the methods nor the
+//!   tolerance change their plan (`ground.rs`).
 //! - With a [`Tolerance`] ([`World::set_tolerance`]) each body that steps
 //!   takes the cheapest method and sub-steps predicted to meet it
 //!   ([`World::choice`]).
 //! - Every state reached is checked ([`crate::DivergenceCheck`]; for
 //!   forced bodies: finiteness and `|q|`, since energy is not conserved;
 //!   for uniform rotations: finiteness, the only thing that can change —
-//!   see `uniform.rs`).
+//!   see `uniform.rs`; for bodies on the ground: the contact model's own
+//!   checks, finiteness and the contact).
 //!
 //! **What a move touches.** Bodies of one kind are kept together
 //! (`lanes.rs`): resting bodies in no loop, uniform rotations in one
@@ -42,6 +51,7 @@
 
 mod body;
 mod clock;
+mod ground;
 mod lanes;
 mod plan;
 mod registry;
@@ -392,7 +402,11 @@ impl World {
     /// # Errors
     /// For a body on a pivot, the errors of [`HeavyTop::try_new`] and
     /// [`DynamicsError::InvalidState`] when its spin about the pivot
-    /// overflows; for a free body with inputs,
+    /// overflows; for a body on the ground, [`DynamicsError::InvalidBody`]
+    /// when the world's gravity does not point along −z, the errors of
+    /// [`crate::GroundTop::try_with_shape`] and of its state on the ground
+    /// ([`crate::GroundTop::try_state_on_ground`]: a disk lying flat, a
+    /// rolling start that slips); for a free body with inputs,
     /// [`DynamicsError::MethodTakesNoInputs`] when the world's free-body
     /// method cannot move it and [`DynamicsError::InvalidBodyParameter`]
     /// for a non-finite gravity term; the set-up errors of its plan.
@@ -416,6 +430,7 @@ impl World {
     /// ```
     pub fn add(&mut self, body: Body) -> Result<BodyId, DynamicsError> {
         let (rigid, top, ballistic) = match body.support() {
+            Support::Ground { .. } => return self.add_on_ground(body),
             Support::Free { position, velocity } => {
                 (*body.rigid_body(), None, (position, velocity, self.time()))
             }
@@ -615,9 +630,13 @@ impl World {
         Ok((plan, motion, choice))
     }
 
-    /// Remakes every plan from the current states.
+    /// Remakes every plan from the current states (a body on the ground
+    /// keeps its own: no method or tolerance changes it).
     fn replan_all(&mut self) -> Result<(), DynamicsError> {
         for index in 0..self.entries.len() {
+            if matches!(self.entries[index].motion, Motion::Ground(_)) {
+                continue;
+            }
             let state = self.rotation(index);
             self.replan(index, state)?;
         }
@@ -626,6 +645,9 @@ impl World {
 
     /// Gives body `index` the rotational state `state` now and remakes its plan.
     fn replan(&mut self, index: usize, state: PrincipalState) -> Result<(), DynamicsError> {
+        if matches!(self.entries[index].motion, Motion::Ground(_)) {
+            return self.replan_ground(index, state);
+        }
         let now = self.time();
         let entry = &self.entries[index];
         state.validate(entry.rigid.principal_moments())?;

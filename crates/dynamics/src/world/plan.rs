@@ -12,10 +12,12 @@
 //! pivot                               heavy top:   the heavy-top method, every dt (auto sub-steps)
 //! free, with applied inputs           forced:      a torque splitting, every dt
 //! pivot, with applied inputs          driven top:  the splitting with gravity kicked too, every dt
+//! on the ground (a contact shape)     on ground:   the contact model's RK4, every dt (never more)
 //! ```
 
 use std::fmt;
 
+use super::ground::GroundMotion;
 use super::registry;
 use super::uniform::UniformBatch;
 use crate::elliptic::dd::Dd;
@@ -100,6 +102,15 @@ pub enum Plan {
     DrivenTop {
         /// The splitting.
         method: ForcedSplitting,
+    },
+    /// A body on the ground plane ([`crate::Support::Ground`]): the
+    /// contact model's fixed-step RK4 ([`crate::GroundTop::try_step`])
+    /// every `dt`, a longer step ([`crate::World::step`]) cut into equal
+    /// sub-steps of at most `dt`. Neither the world's methods nor its
+    /// [`crate::Tolerance`] change it.
+    OnGround {
+        /// The friction law at the contact.
+        friction: crate::FrictionModel,
     },
 }
 
@@ -276,6 +287,10 @@ impl fmt::Display for Plan {
                 method.name(),
                 method.order()
             ),
+            Plan::OnGround { friction } => write!(
+                f,
+                "body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction {friction}; lift-off stops the run)"
+            ),
         }
     }
 }
@@ -315,6 +330,8 @@ pub(crate) enum Motion {
     },
     /// A body under inputs, or a heavy top under a tolerance.
     Forced(ForcedMotion),
+    /// A body on the ground plane: its contact model and state.
+    Ground(Box<GroundMotion>),
 }
 
 /// A body under inputs (or a heavy top under a tolerance) as the world
@@ -466,6 +483,7 @@ impl Motion {
             Motion::Exact { state, .. } | Motion::LagrangeTop { state, .. } => *state,
             Motion::Stepping(propagator) => propagator.state(),
             Motion::Forced(forced) => forced.state.rotation,
+            Motion::Ground(ground) => ground.principal_state(),
         }
     }
 

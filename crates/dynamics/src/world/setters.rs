@@ -141,7 +141,8 @@ impl World {
     ///
     /// # Errors
     /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidBody`] for
-    /// a non-finite vector or a body on a pivot (which does not fly).
+    /// a non-finite vector, a body on a pivot (which does not fly) or on
+    /// the ground (whose height follows from its attitude).
     ///
     /// ```
     /// # use kreisel_dynamics::{Body, World};
@@ -167,6 +168,12 @@ impl World {
             Some((
                 "position",
                 "cannot be set for a body on a pivot: it does not fly",
+            ))
+        } else if matches!(entry.motion, Motion::Ground(_)) {
+            Some((
+                "position",
+                "cannot be set for a body on the ground: its height and vertical velocity \
+                 follow from its attitude and spin",
             ))
         } else if !position.is_finite() {
             Some(("position", "must be finite"))
@@ -195,7 +202,8 @@ impl World {
     ///
     /// # Errors
     /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidInput`] as
-    /// [`Inputs::validate`]; [`DynamicsError::MethodTakesNoInputs`] when
+    /// [`Inputs::validate`]; [`DynamicsError::InvalidBody`] for inputs on
+    /// a body on the ground; [`DynamicsError::MethodTakesNoInputs`] when
     /// the world's free-body method (heavy-top method, on a pivot) cannot
     /// move a body with inputs. On an error nothing changes.
     ///
@@ -218,6 +226,7 @@ impl World {
     pub fn set_inputs(&mut self, id: BodyId, inputs: Inputs) -> Result<(), DynamicsError> {
         let entry = self.entry(id)?;
         inputs.validate()?;
+        super::body::refuse_inputs_on_ground(entry.body.support(), &inputs)?;
         if !inputs.is_none() {
             if entry.top.is_some() {
                 super::Plan::driven_top_splitting(self.heavy_top_method())?;

@@ -43,6 +43,7 @@ impl BodyId {
 /// pivot:  energy = ½ L·J⁻¹L − m g·(p + R c),     l_world about the pivot p (J about it)
 /// forced: energy = ½ L·I⁻¹L + ½ m |v|² − m g·x,    x, v from the splitting
 /// driven top (pivot with inputs): energy = ½ L·J⁻¹L − m g·x,  x = p + R c
+/// on the ground: energy = ½ L·ω + ½ m |v|² + m g z,    l_world about the centre of mass
 /// ```
 ///
 /// For a body with applied inputs ([`crate::Plan::Forced`]) the energy is
@@ -204,7 +205,10 @@ impl World {
                     body_from_principal,
                     ..
                 } => self.uniform.state(slot).0 * body_from_principal.conjugate(),
-                Lane::Entry => self.rotation(i).world_from_body(&self.entries[i].rigid),
+                Lane::Entry => match &self.entries[i].motion {
+                    Motion::Ground(ground) => ground.attitude(),
+                    _ => self.rotation(i).world_from_body(&self.entries[i].rigid),
+                },
             })
     }
 
@@ -213,6 +217,9 @@ impl World {
     #[inline(never)]
     fn entry_state(&self, index: usize) -> BodyState {
         let entry = &self.entries[index];
+        if let Motion::Ground(ground) = &entry.motion {
+            return ground.body_state(self.time());
+        }
         let state = self.rotation(index);
         let world_from_body = state.world_from_body(&entry.rigid);
         let (mass, g, time) = (entry.body.mass(), self.gravity, self.time());
@@ -280,7 +287,8 @@ impl World {
         let Some(now) = self.state(id) else {
             return false;
         };
-        if entry.top.is_some() || entry.motion.forced_state().is_some() {
+        let on_ground = matches!(entry.motion, Motion::Ground(_));
+        if entry.top.is_some() || entry.motion.forced_state().is_some() || on_ground {
             // A pivot, or loads no formula foresees: only now is known.
             return now.energy.is_finite();
         }

@@ -6,6 +6,7 @@
 //! [`crate::ForcedPropagator::try_advance`].
 
 use super::clock::{Clock, Route};
+use super::ground::GroundMotion;
 use super::plan::{ForcedMotion, Motion, elapsed};
 use super::{Entry, World};
 use crate::elliptic::dd::Dd;
@@ -212,6 +213,10 @@ impl World {
                     jobs.push((index, Job::Forced(forced)));
                     None
                 }
+                Motion::Ground(ground) => {
+                    jobs.push((index, Job::Ground(ground)));
+                    None
+                }
                 Motion::HeavyTop { state, integrator } => {
                     if let Some(top) = top.as_ref() {
                         jobs.push((
@@ -309,6 +314,8 @@ enum Job<'a> {
     /// A body under inputs (or a heavy top under a tolerance): stepped by
     /// its splitting.
     Forced(&'a mut ForcedMotion),
+    /// A body on the ground: stepped by its contact model's RK4.
+    Ground(&'a mut GroundMotion),
 }
 
 /// What every body's walk along a route needs (`Copy`, `Send`).
@@ -400,6 +407,18 @@ impl Walker {
                         self.time_of(k - 1)
                     };
                     forced.step(t, h)
+                };
+                self.walk(&mut step)
+            }
+            Job::Ground(ground) => {
+                let dt = self.clock.dt();
+                let mut step = |k: u64, h: f64| {
+                    let t = if k == 1 {
+                        self.clock.time()
+                    } else {
+                        self.time_of(k - 1)
+                    };
+                    ground.step(t, h, dt)
                 };
                 self.walk(&mut step)
             }

@@ -1,0 +1,319 @@
+//! A body's `[body.contact]` table: the surface that touches the ground
+//! plane z = 0 (a sphere, a disk rim; an ellipsoid is read but not yet
+//! simulated) and the friction law there, checked key by key into the
+//! library's [`ContactShape`] and [`Friction`].
+//!
+//! ```text
+//! shape = "sphere" | "disk" | "ellipsoid"
+//! radius = R                  sphere, disk (m)
+//! center = [x, y, z]          from the centre of mass, body axes, m [default: 0]
+//! normal = [x, y, z]          disk only: its axis, body axes
+//! semi_axes = [a, b, c]       ellipsoid only, body axes, m
+//! friction = "none" | "viscous" | "sliding" | "rolling"
+//! mu = μ                      viscous (s/m) and sliding (Coulomb), ≥ 0
+//! slip_velocity = ε           sliding only, m/s [default: 1e-3]
+//! ```
+//!
+//! `slip_velocity` defaults to 1 mm/s, the ε at which Leine & Glocker
+//! (2003) report their tippe top's inversion at 2.7 s: the regularised
+//! Coulomb law `F = −μ N v/√(|v|² + ε²)` is stiff for small ε (the
+//! inversion takes ≈ 20 s at 0.1 mm/s, see the library's contact module
+//! docs), so the default is the published value, not a guess at "exact"
+//! Coulomb friction.
+
+#![forbid(unsafe_code)]
+
+use std::fmt;
+use std::str::FromStr;
+
+use glam::DVec3;
+use kreisel_dynamics::{ContactShape, DiskContact, Friction, FrictionModel, SphereContact};
+use serde::Deserialize;
+use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
+use toml::Spanned;
+
+use super::scene::Keys;
+use crate::error::CliError;
+use crate::numbers::Shortest;
+
+/// The default `slip_velocity` of `sliding` friction, m/s (module docs).
+pub const DEFAULT_SLIP_VELOCITY: f64 = 1e-3;
+
+/// A `[body.contact]` table as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawContact {
+    shape: Spanned<String>,
+    radius: Option<Spanned<f64>>,
+    center: Option<Spanned<[f64; 3]>>,
+    normal: Option<Spanned<[f64; 3]>>,
+    semi_axes: Option<Spanned<[f64; 3]>>,
+    friction: Spanned<String>,
+    mu: Option<Spanned<f64>>,
+    slip_velocity: Option<Spanned<f64>>,
+}
+
+/// `[body.contact]` (one table) or `[[body.contact]]` (an array of them).
+#[derive(Debug)]
+pub enum RawContacts {
+    /// One table.
+    One(Box<RawContact>),
+    /// An array of tables, each with its span.
+    Many(Vec<Spanned<RawContact>>),
+}
+
+impl<'de> Deserialize<'de> for RawContacts {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct OneOrMany;
+        impl<'de> Visitor<'de> for OneOrMany {
+            type Value = RawContacts;
+
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a [body.contact] table or an array of them")
+            }
+
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+                let one = RawContact::deserialize(de::value::MapAccessDeserializer::new(map))?;
+                Ok(RawContacts::One(Box::new(one)))
+            }
+
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
+                let many = Vec::deserialize(de::value::SeqAccessDeserializer::new(seq))?;
+                Ok(RawContacts::Many(many))
+            }
+        }
+        deserializer.deserialize_any(OneOrMany)
+    }
+}
+
+/// The names of the contact shapes (`shape = ...`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ShapeName {
+    /// A body-fixed sphere.
+    Sphere,
+    /// A body-fixed circular rim.
+    Disk,
+    /// A body-fixed ellipsoid.
+    Ellipsoid,
+}
+
+impl ShapeName {
+    /// Every shape, in the order listed in errors.
+    pub const ALL: [ShapeName; 3] = [Self::Sphere, Self::Disk, Self::Ellipsoid];
+
+    /// The name in a scene.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Sphere => "sphere",
+            Self::Disk => "disk",
+            Self::Ellipsoid => "ellipsoid",
+        }
+    }
+}
+
+impl FromStr for ShapeName {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Self::ALL
+            .into_iter()
+            .find(|m| m.name() == s)
+            .ok_or_else(|| {
+                let known = Self::ALL.map(Self::name).join(", ");
+                format!("unknown contact shape `{s}` (known: {known})")
+            })
+    }
+}
+
+/// A checked contact: the shape and the friction.
+#[derive(Debug, Clone, Copy)]
+pub struct CheckedContact {
+    /// The touching surface.
+    pub shape: ContactShape,
+    /// The friction law at the contact.
+    pub friction: Friction,
+}
+
+/// Checks the `contact` key of a body: one table (or an array of one).
+///
+/// # Errors
+/// [`CliError::Scene`] naming the line and key of the first problem.
+pub fn check(keys: &Keys<'_>, contacts: &Spanned<RawContacts>) -> Result<CheckedContact, CliError> {
+    let raw = match contacts.get_ref() {
+        RawContacts::One(one) => one.as_ref(),
+        RawContacts::Many(many) => match many.as_slice() {
+            [one] => one.get_ref(),
+            [] => return Err(keys.fail(contacts, "`contact` is an empty array: give one table")),
+            [_, second, ..] => {
+                let message = format!(
+                    "{} [[body.contact]] tables: only one contact with the ground is \
+                     supported (one sphere, disk or ellipsoid touching the plane)",
+                    many.len()
+                );
+                return Err(keys.fail(second, &message));
+            }
+        },
+    };
+    let shape = shape(keys, raw)?;
+    let friction = friction(keys, raw)?;
+    Ok(CheckedContact { shape, friction })
+}
+
+/// `key` given where it has no meaning: an error at its line.
+fn not_with<T>(
+    keys: &Keys<'_>,
+    key: &str,
+    value: &Option<Spanned<T>>,
+    why: &str,
+) -> Result<(), CliError> {
+    match value {
+        Some(v) => Err(keys.fail(v, &format!("`contact.{key}` {why}"))),
+        None => Ok(()),
+    }
+}
+
+/// A required key, or an error at `shape`'s line.
+fn required<'v, T>(
+    keys: &Keys<'_>,
+    key: &str,
+    value: &'v Option<Spanned<T>>,
+    at: &Spanned<String>,
+    what: &str,
+) -> Result<&'v Spanned<T>, CliError> {
+    value.as_ref().ok_or_else(|| {
+        let message = format!("`contact.{key}` is missing: {what}");
+        keys.fail(at, &message)
+    })
+}
+
+/// The surface from `shape`, `radius`, `center`, `normal`, `semi_axes`.
+fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, CliError> {
+    let name: ShapeName = raw
+        .shape
+        .get_ref()
+        .parse()
+        .map_err(|e: String| keys.fail(&raw.shape, &format!("`contact.shape`: {e}")))?;
+    let center = match &raw.center {
+        Some(c) => keys.vector("contact.center", c)?,
+        None => DVec3::ZERO,
+    };
+    let radius_of = |keys: &Keys<'_>| -> Result<f64, CliError> {
+        let r = required(
+            keys,
+            "radius",
+            &raw.radius,
+            &raw.shape,
+            "the radius in metres",
+        )?;
+        keys.positive("contact.radius", r)
+    };
+    match name {
+        ShapeName::Sphere => {
+            not_with(keys, "normal", &raw.normal, "is only for a disk (its axis)")?;
+            not_with(
+                keys,
+                "semi_axes",
+                &raw.semi_axes,
+                "is only for an ellipsoid",
+            )?;
+            let radius = radius_of(keys)?;
+            let sphere = SphereContact::try_new(radius, center)
+                .map_err(|e| keys.fail(&raw.shape, &format!("`contact`: {e}")))?;
+            Ok(ContactShape::Sphere(sphere))
+        }
+        ShapeName::Disk => {
+            not_with(
+                keys,
+                "semi_axes",
+                &raw.semi_axes,
+                "is only for an ellipsoid",
+            )?;
+            let radius = radius_of(keys)?;
+            let normal = required(
+                keys,
+                "normal",
+                &raw.normal,
+                &raw.shape,
+                "a disk needs its axis in body coordinates",
+            )?;
+            let axis = keys.vector("contact.normal", normal)?;
+            let disk = DiskContact::try_new(radius, center, axis)
+                .map_err(|e| keys.fail(normal, &format!("`contact.normal`: {e}")))?;
+            Ok(ContactShape::Disk(disk))
+        }
+        ShapeName::Ellipsoid => {
+            not_with(
+                keys,
+                "radius",
+                &raw.radius,
+                "is not used by an ellipsoid (give `semi_axes`)",
+            )?;
+            not_with(keys, "normal", &raw.normal, "is only for a disk (its axis)")?;
+            let axes = required(
+                keys,
+                "semi_axes",
+                &raw.semi_axes,
+                &raw.shape,
+                "an ellipsoid needs its semi-axes a, b, c in metres",
+            )?;
+            let [a, b, c] = keys.finite("contact.semi_axes", axes)?;
+            if ![a, b, c].iter().all(|&x| x > 0.0) {
+                return Err(keys.fail(axes, "`contact.semi_axes` must be positive"));
+            }
+            Err(keys.fail(
+                &raw.shape,
+                "`contact.shape` = \"ellipsoid\" is not supported yet \
+                 (the library has no ellipsoid contact): use \"sphere\" or \"disk\"",
+            ))
+        }
+    }
+}
+
+/// The friction law from `friction`, `mu` and `slip_velocity`.
+fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, CliError> {
+    let model: FrictionModel = raw
+        .friction
+        .get_ref()
+        .parse()
+        .map_err(|e| keys.fail(&raw.friction, &format!("`contact.friction`: {e}")))?;
+    let unused = format!("is not used with friction \"{model}\"");
+    if model != FrictionModel::Sliding {
+        let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²))";
+        not_with(keys, "slip_velocity", &raw.slip_velocity, why)?;
+    }
+    let mu = |keys: &Keys<'_>, unit: &str| -> Result<f64, CliError> {
+        let what = format!("friction \"{model}\" needs the coefficient μ ({unit})");
+        let mu = required(keys, "mu", &raw.mu, &raw.friction, &what)?;
+        let value = *mu.get_ref();
+        if value.is_finite() && value >= 0.0 {
+            Ok(value)
+        } else {
+            let message = format!(
+                "`contact.mu` must be zero or positive and finite, got {}",
+                Shortest(value)
+            );
+            Err(keys.fail(mu, &message))
+        }
+    };
+    match model {
+        FrictionModel::None => {
+            not_with(keys, "mu", &raw.mu, &unused)?;
+            Ok(Friction::None)
+        }
+        FrictionModel::Rolling => {
+            not_with(keys, "mu", &raw.mu, &unused)?;
+            Ok(Friction::Rolling)
+        }
+        FrictionModel::Viscous => Ok(Friction::Viscous {
+            mu: mu(keys, "s/m")?,
+        }),
+        FrictionModel::Sliding => {
+            let mu = mu(keys, "Coulomb's, dimensionless")?;
+            let slip_velocity = match &raw.slip_velocity {
+                Some(v) => keys.positive("contact.slip_velocity", v)?,
+                None => DEFAULT_SLIP_VELOCITY,
+            };
+            Ok(Friction::Sliding { mu, slip_velocity })
+        }
+    }
+}

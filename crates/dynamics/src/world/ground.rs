@@ -1,0 +1,281 @@
+//! Bodies on the ground plane in a [`World`] ([`Support::Ground`],
+//! [`crate::Plan::OnGround`]): the world's gravity must point along −z;
+//! each body is a [`GroundTop`] stepped by its RK4 on the world's grid.
+//!
+//! ```text
+//! add:       GroundTop(mass, inertia about the centre of mass (body axes), shape, friction, g = −gravity_z)
+//!            state touching the plane: z_G = −ρ_z, ż_G = −(ω × ρ)_z, (x_G, y_G), (ẋ_G, ẏ_G) given
+//!            (rolling: v_G = −ω × ρ)
+//! step h:    n = ⌈h/dt⌉ equal sub-steps (1 on the grid), each GroundTop::try_step
+//! read:      q, ω_body = qᵀ ω, L about the centre of mass (world axes), r_G, v_G,
+//!            E = ½ m |v_G|² + ½ L·ω + m g z_G           (GroundTop::energy)
+//! setters:   attitude / ω / angular impulse re-place the body on the plane
+//!            (horizontal position and velocity kept; rolling: v_G from ω)
+//! ```
+//!
+//! On the grid (`advance_steps`, `advance_to`) every step is one
+//! [`GroundTop::try_step`] of `dt` (the last of `advance_to` shorter), so a
+//! body's trajectory is the contact model's own, bit for bit. A lift-off
+//! ([`DynamicsError::ContactLost`], with its time located inside the
+//! step), a disk lying flat ([`DynamicsError::DiskFlat`]) or Painlevé's
+//! case ([`DynamicsError::ContactIndeterminate`]) is the world's failure
+//! ([`DynamicsError::BodyFailed`]); the body holds the state the model
+//! left (at lift-off: the state where the normal force reached zero).
+
+use glam::{DQuat, DVec2, DVec3};
+
+use super::clock::WHOLE_STEPS_TOLERANCE;
+use super::plan::Motion;
+use super::state::Reading;
+use super::{Body, BodyId, BodyState, Entry, Plan, Support, World};
+use crate::{ContactShape, DynamicsError, Friction, GroundTop, GroundTopState, PrincipalState};
+
+/// A body on the ground as the world moves it: its contact model, its
+/// state, and the rotation from principal to body axes (to report the
+/// rotational state the other plans report).
+#[derive(Debug)]
+pub(crate) struct GroundMotion {
+    pub(crate) top: GroundTop,
+    pub(crate) state: GroundTopState,
+    body_from_principal: DQuat,
+}
+
+/// `g` of a world whose gravity is `(0, 0, −g)`, `g > 0`.
+///
+/// # Errors
+/// [`DynamicsError::InvalidBody`] for any other gravity.
+fn gravity_down(gravity: DVec3) -> Result<f64, DynamicsError> {
+    if gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0 {
+        Ok(-gravity.z)
+    } else {
+        Err(DynamicsError::InvalidBody {
+            field: "gravity",
+            reason: "must point along −z, (0, 0, −g) with g > 0, for a body on the ground",
+        })
+    }
+}
+
+/// The number of equal sub-steps of at most `dt` in a step of `h` (a
+/// step within [`WHOLE_STEPS_TOLERANCE`] of `k dt` takes `k`).
+fn substeps(h: f64, dt: f64) -> u64 {
+    if h <= dt {
+        return 1;
+    }
+    // Saturating: a step of 10¹⁸ dt is the caller's to wait for.
+    ((h / dt) - WHOLE_STEPS_TOLERANCE).ceil().max(1.0) as u64
+}
+
+/// The state of `top` touching the plane at attitude `q` spinning at
+/// `omega_world`, its centre of mass above `position_xy` moving at
+/// `velocity_xy` (rolling with `velocity_xy = 0`: as rolling needs).
+fn place(
+    top: &GroundTop,
+    q: DQuat,
+    omega_world: DVec3,
+    position_xy: DVec2,
+    velocity_xy: DVec2,
+) -> Result<GroundTopState, DynamicsError> {
+    if !top.shape().contact_from_com_world(q).is_finite() {
+        // Said here: the rolling state would first find ω × ρ not finite.
+        return Err(DynamicsError::InvalidState {
+            reason: "the disk lies flat (axis vertical): no single contact point",
+        });
+    }
+    let mut state = if top.friction() == Friction::Rolling && velocity_xy == DVec2::ZERO {
+        top.try_rolling_state_on_ground(q, omega_world)?
+    } else {
+        top.try_state_on_ground(q, omega_world, velocity_xy)?
+    };
+    state.com_world.x += position_xy.x;
+    state.com_world.y += position_xy.y;
+    Ok(state)
+}
+
+impl GroundMotion {
+    /// The contact model of `body` (on the ground, in a world of gravity
+    /// `gravity`) and its state at attitude `q` spinning at `omega_world`.
+    fn try_new(
+        body: &Body,
+        gravity: DVec3,
+        q: DQuat,
+        omega_world: DVec3,
+    ) -> Result<Self, DynamicsError> {
+        let Support::Ground {
+            shape,
+            friction,
+            position_xy,
+            velocity_xy,
+        } = body.support()
+        else {
+            return Err(DynamicsError::InvalidBody {
+                field: "support",
+                reason: "is not the ground",
+            });
+        };
+        let top = ground_top(body, shape, friction, gravity)?;
+        let state = place(&top, q, omega_world, position_xy, velocity_xy)?;
+        Ok(Self {
+            top,
+            state,
+            body_from_principal: body.rigid_body().body_from_principal(),
+        })
+    }
+
+    /// One step of `h` from time `t`: equal sub-steps of at most `dt`.
+    ///
+    /// # Errors
+    /// The errors of [`GroundTop::try_step`] (lift-off, a disk flat,
+    /// Painlevé, divergence), with their time.
+    pub(crate) fn step(&mut self, t: f64, h: f64, dt: f64) -> Result<(), DynamicsError> {
+        let n = substeps(h, dt);
+        let sub = h / n as f64;
+        for j in 0..n {
+            self.top
+                .try_step(&mut self.state, t + j as f64 * sub, sub)?;
+        }
+        Ok(())
+    }
+
+    /// The rotational state as the other plans hold it: principal axes,
+    /// `L` about the centre of mass.
+    pub(crate) fn principal_state(&self) -> PrincipalState {
+        let world_from_principal =
+            self.state.world_from_body.normalize() * self.body_from_principal;
+        PrincipalState {
+            world_from_principal,
+            l_principal: world_from_principal.conjugate() * self.state.l_world,
+        }
+    }
+
+    /// The attitude as stepped (not renormalised).
+    pub(crate) fn attitude(&self) -> DQuat {
+        self.state.world_from_body
+    }
+
+    /// What the world reports at `time`.
+    pub(crate) fn body_state(&self, time: f64) -> BodyState {
+        let q = self.state.world_from_body;
+        let omega_world = self.top.omega_world(&self.state);
+        BodyState {
+            time,
+            world_from_body: q,
+            omega_body: q.normalize().conjugate() * omega_world,
+            l_world: self.state.l_world,
+            energy: self.top.energy(&self.state),
+            position: self.state.com_world,
+            velocity: self.state.velocity_world,
+        }
+    }
+}
+
+/// The contact model of `body` with `shape` and `friction` under `gravity`.
+fn ground_top(
+    body: &Body,
+    shape: ContactShape,
+    friction: Friction,
+    gravity: DVec3,
+) -> Result<GroundTop, DynamicsError> {
+    let g = gravity_down(gravity)?;
+    let props = body.mass_properties();
+    GroundTop::try_with_shape(props.mass, props.inertia, shape, friction, g)
+}
+
+impl World {
+    /// Adds `body`, on the ground, now (the part of [`World::add`] for
+    /// [`Support::Ground`]).
+    pub(super) fn add_on_ground(&mut self, body: Body) -> Result<BodyId, DynamicsError> {
+        let q = body.world_from_body();
+        if !(q.is_finite() && q.length_squared() > 0.0) {
+            return Err(DynamicsError::InvalidState {
+                reason: "the attitude must be a finite, non-zero quaternion",
+            });
+        }
+        let omega_world = q.normalize() * body.omega_body();
+        let ground = GroundMotion::try_new(&body, self.gravity, q, omega_world)?;
+        let plan = Plan::OnGround {
+            friction: ground.top.friction().model(),
+        };
+        let baseline = ground.principal_state();
+        let (position, velocity) = (ground.state.com_world, ground.state.velocity_world);
+        let mass = body.mass();
+        self.entries.push(Entry {
+            rigid: *body.rigid_body(),
+            body,
+            top: None,
+            plan,
+            motion: Motion::Ground(Box::new(ground)),
+            baseline,
+            check: None,
+            choice: None,
+        });
+        self.reads
+            .push(Reading::new(mass, (position, velocity, self.time())));
+        let index = self.entries.len() - 1;
+        self.place(index);
+        Ok(BodyId(index))
+    }
+
+    /// Gives body `index`, on the ground, the rotational state `state` now:
+    /// the body is placed on the plane again at the new attitude and
+    /// angular velocity, its horizontal position and velocity kept (with
+    /// [`Friction::Rolling`] the velocity follows from ω).
+    pub(super) fn replan_ground(
+        &mut self,
+        index: usize,
+        state: PrincipalState,
+    ) -> Result<(), DynamicsError> {
+        let entry = &mut self.entries[index];
+        let moments = entry.rigid.principal_moments();
+        state.validate(moments)?;
+        let Motion::Ground(ground) = &mut entry.motion else {
+            return Ok(());
+        };
+        let q = state.world_from_body(&entry.rigid);
+        let omega_world = state.world_from_principal.normalize() * (state.l_principal / moments);
+        let now = ground.state;
+        let velocity_xy = if ground.top.friction() == Friction::Rolling {
+            DVec2::ZERO
+        } else {
+            now.velocity_world.truncate()
+        };
+        ground.state = place(
+            &ground.top,
+            q,
+            omega_world,
+            now.com_world.truncate(),
+            velocity_xy,
+        )?;
+        entry.baseline = ground.principal_state();
+        self.refresh_reading(index);
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_step_is_cut_into_sub_steps_of_at_most_dt() {
+        assert_eq!(substeps(0.5, 1.0), 1);
+        assert_eq!(substeps(1.0, 1.0), 1);
+        assert_eq!(substeps(1.0 + 1e-9, 1.0), 1);
+        assert_eq!(substeps(1.5, 1.0), 2);
+        assert_eq!(substeps(3.0, 1.0), 3);
+        assert_eq!(substeps(0.3, 0.1), 3);
+    }
+
+    #[test]
+    fn gravity_must_point_down() {
+        assert_eq!(gravity_down(DVec3::new(0.0, 0.0, -9.81)).unwrap(), 9.81);
+        for g in [DVec3::ZERO, DVec3::Z, DVec3::new(0.1, 0.0, -9.81)] {
+            assert!(matches!(
+                gravity_down(g),
+                Err(DynamicsError::InvalidBody {
+                    field: "gravity",
+                    ..
+                })
+            ));
+        }
+    }
+}
