@@ -237,6 +237,7 @@ impl GroundTop {
         let length = match self.shape() {
             ContactShape::Sphere(s) => s.radius(),
             ContactShape::Disk(d) => d.radius(),
+            ContactShape::Ellipsoid(e) => e.semi_axes().min_element(),
         };
         let time = (length / self.gravity()).sqrt();
         let i: DMat3 = self.inertia_body();
