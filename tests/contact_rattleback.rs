@@ -4,7 +4,8 @@
 //! model does not compute itself: the sphere (an ellipsoid with equal
 //! semi-axes), the energy and the rolling constraint (conserved by the
 //! exact flow), the two small-oscillation frequencies (closed form derived
-//! below), and the spin reversal's asymmetry.
+//! below), and the spin reversal's asymmetry, its times against an
+//! independent committed generator (`tests/data/gen/rattleback.py`).
 //!
 //! # The body and the sign of D
 //! Semi-axes `a, b, c = 0.20, 0.03, 0.02` m along body `x, y, z` (`z` up
@@ -149,7 +150,11 @@ fn spun(top: &GroundTop, spin: f64, tilt_x: f64, tilt_y: f64) -> GroundTopState 
 /// ω_z<0   22.4962065 s    1 in 25 s  6.5e-11   7.5e-14    7.19 N
 /// ```
 ///
-/// (at tolerance 1e-13 the times agree to 6e-8 s and 4e-8 s). Mirroring
+/// (at tolerance 1e-13 the times agree to 6e-8 s and 4e-8 s). The
+/// independent generator `tests/data/gen/rattleback.py` (body axes,
+/// Poisson's variables, scipy DOP853 at rtol 1e-13, committed in
+/// `tests/data/contact/rattleback.csv`) has 3.727512553 s and
+/// 22.496206577 s: relative differences 1.4e-8 and 2.2e-9. Mirroring
 /// the body (`y → −y`: `I_xy → −I_xy`, `ω_z → −ω_z`, tilt `(−1, 1, 0)`)
 /// swaps the two senses (the mirror's reversal at 3.727512604 s); with `I_xy = 0` (principal axes along
 /// the geometric ones) there is no reversal at all in 25 s.
@@ -175,6 +180,22 @@ fn the_spin_reverses_one_way_within_seconds_and_the_other_way_much_later() {
     );
     assert!(t_quick < 5.0, "{t_quick}");
     assert!(t_slow > 4.0 * t_quick, "{t_slow} vs {t_quick}");
+
+    // The independent generator (body axes, Poisson variables, DOP853).
+    let table = common::Table::load("contact/rattleback.csv");
+    assert_eq!(table.rows.len(), 2);
+    for row in &table.rows {
+        let (spin, tilt, t_ref) = (
+            table.num(row, "spin"),
+            table.num(row, "tilt"),
+            table.num(row, "t"),
+        );
+        assert_eq!(tilt, 1e-3);
+        let t = if spin > 0.0 { t_quick } else { t_slow };
+        let error = t / t_ref - 1.0;
+        eprintln!("spin {spin}: reversal {t:.9} s, generator {t_ref:.9} s, relative {error:.1e}");
+        assert!(error.abs() <= 1e-6, "{error:e}");
+    }
 
     // The mirror image spun the other way: the same motion reflected.
     let mirror = rattleback(D_KANE);
