@@ -404,7 +404,7 @@ impl GroundTop {
 
     /// Jellett's integral, conserved by every contact force of a sphere
     /// whose centre lies on an axis of symmetry of the inertia tensor (for
-    /// a disk rim the same expression, not conserved).
+    /// a disk rim or an ellipsoid the same expression, not conserved).
     ///
     /// ```text
     /// λ = L · (R ẑ − A c) = −L · ρ = L · (r_G − r_P)
