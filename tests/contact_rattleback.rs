@@ -156,8 +156,19 @@ fn spun(top: &GroundTop, spin: f64, tilt_x: f64, tilt_y: f64) -> GroundTopState 
 /// `tests/data/contact/rattleback.csv`) has 3.727512553 s and
 /// 22.496206577 s: relative differences 1.4e-8 and 2.2e-9. Mirroring
 /// the body (`y → −y`: `I_xy → −I_xy`, `ω_z → −ω_z`, tilt `(−1, 1, 0)`)
-/// swaps the two senses (the mirror's reversal at 3.727512604 s); with `I_xy = 0` (principal axes along
-/// the geometric ones) there is no reversal at all in 25 s.
+/// swaps the two senses (the mirror's reversal at 3.727512604 s); with
+/// `I_xy = 0` (principal axes along the geometric ones) there is no
+/// reversal at all in 25 s.
+///
+/// Longer (60 s at rtol = atol = 1e-13, |ΔE|/E 1.6e-8): ω_z > 0 reverses
+/// at 3.73, 29.94 and 51.05 s, ω_z < 0 at 22.50 and 43.44 s — reversal
+/// after reversal, as in the dissipation-free runs of Kane & Levinson and
+/// PyDy; from the third on the times depend on the tolerance (47.6 s
+/// instead of 51.05 s at 1e-10), so only the first is asserted. The
+/// rattling is violent (N falls to 1.87 N of m g = 9.81 N): fixed-step
+/// RK4 at h = 1e-4 s loses |ΔE|/E = 7.5e-6 in the first 5 s (spin 5
+/// rad/s, tilt 5e-3; 4.7e-7 at h = 5e-5, 2.9e-8 at 2.5e-5: order 4),
+/// hence the error-controlled integrator here.
 #[test]
 fn the_spin_reverses_one_way_within_seconds_and_the_other_way_much_later() {
     let top = rattleback(-D_KANE);
