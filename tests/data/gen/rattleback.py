@@ -4,8 +4,8 @@ Regenerate (from the repository root; scipy, numpy; 1-3 minutes):
 
     python3 tests/data/gen/rattleback.py
 
-Writes ../contact/rattleback.csv (relative to this script) and prints the
-checks.
+Writes ../contact/rattleback.csv and ../contact/rattleback_modes.csv
+(relative to this script) and prints the checks.
 
 Physics (written in BODY axes with Poisson's variables, not from kreisel's
 world-axes contact-force solve K F = b)
@@ -38,8 +38,16 @@ world-axes contact-force solve K F = b)
   one 3x3 solve per evaluation.
 * Integrated with scipy's DOP853 at rtol 1e-13 (atol 1e-16); the spin's
   sign change w . gamma = 0 located by solve_ivp's event root finder.
-* Output rows: for each run (spin sense), its first reversal time and the
-  state there. Checks printed: the same runs at rtol 1e-11 (the times'
+* Linear modes: the same right-hand side linearised about steady spinning
+  upright (gamma = z, w = (0, 0, spin); an equilibrium), its Jacobian by
+  complex-step differentiation (exact to rounding), eigenvalues
+  sigma +- i omega by numpy. Without spin they are the roll and pitch
+  frequencies; spinning, one pair grows (sigma > 0) and one decays.
+* Output rows: rattleback.csv, for each run (spin sense), its first
+  reversal time and the state there; rattleback_modes.csv, for spin 0 and
+  +-5 rad/s each oscillatory mode (omega > 0): sigma, omega and the
+  eigenvector's gamma_x, gamma_y, w_x, w_y (real and imaginary parts,
+  scaled so that the larger |gamma| component is 1). Checks printed: the same runs at rtol 1e-11 (the times'
   change), the energy drift
       E = 1/2 m |w x r|^2 + 1/2 w . I w + m g gamma . r
   and |gamma| - 1.
@@ -122,6 +130,24 @@ def run(spin, duration, rtol):
     return t, sol.y_events[0][0], drift, norm
 
 
+def modes(spin):
+    y0 = np.array([0.0, 0.0, 1.0, 0.0, 0.0, spin])
+    jac = np.zeros((6, 6))
+    for k in range(6):
+        step = np.zeros(6, dtype=complex)
+        step[k] = 1e-30j
+        jac[:, k] = rhs(0.0, y0 + step).imag / 1e-30
+    assert np.abs(rhs(0.0, y0)).max() == 0.0, "not an equilibrium"
+    values, vectors = np.linalg.eig(jac)
+    out = []
+    for i in np.argsort(values.imag):
+        if values[i].imag > 1.0:
+            v = vectors[:, i]
+            v = v / v[np.argmax(np.abs(v[:2]))]
+            out.append((values[i], v))
+    return out
+
+
 def main():
     out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact")
     rows = []
@@ -141,6 +167,20 @@ def main():
         w = csv.writer(fh)
         w.writerow(["run", "spin", "tilt", "t", "gx", "gy", "gz", "wx", "wy", "wz"])
         w.writerows(rows)
+    print(f"wrote {os.path.normpath(path)}")
+    path = os.path.join(out, "rattleback_modes.csv")
+    with open(path, "w", newline="") as fh:
+        fh.write("# tests/data/gen/rattleback.py: linear modes about steady spinning "
+                 "upright (complex-step Jacobian, numpy eig)\n")
+        w = csv.writer(fh)
+        w.writerow(["spin", "sigma", "omega", "gx_re", "gx_im", "gy_re", "gy_im",
+                    "wx_re", "wx_im", "wy_re", "wy_im"])
+        for spin in [0.0, 5.0, -5.0]:
+            for value, v in modes(spin):
+                print(f"spin {spin:+.0f}: sigma {value.real:+.12e} /s, omega {value.imag:.12f} rad/s")
+                parts = [v[0], v[1], v[3], v[4]]
+                w.writerow([spin, repr(float(value.real)), repr(float(value.imag))]
+                           + [repr(float(x)) for p in parts for x in (p.real, p.imag)])
     print(f"wrote {os.path.normpath(path)}")
 
 
