@@ -4,8 +4,11 @@
 //! model does not compute itself: the sphere (an ellipsoid with equal
 //! semi-axes), the energy and the rolling constraint (conserved by the
 //! exact flow), the two small-oscillation frequencies (closed form derived
-//! below), and the spin reversal's asymmetry, its times against an
-//! independent committed generator (`tests/data/gen/rattleback.py`).
+//! below), the spin reversal's asymmetry, and an independent committed
+//! generator (`tests/data/gen/rattleback.py`: other equations, scipy) for
+//! the reversal times and for the growth rates of the spinning state's
+//! linear modes, which explain the asymmetry. The frictionless and viscous
+//! laws on the same hull conserve what they should.
 //!
 //! # The body and the sign of D
 //! Semi-axes `a, b, c = 0.20, 0.03, 0.02` m along body `x, y, z` (`z` up
