@@ -85,8 +85,8 @@ mod world;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use contact::{
-    AdaptiveStats, AdaptiveTolerance, ContactShape, DiskContact, Friction, FrictionModel,
-    GroundTop, GroundTopState, SphereContact,
+    AdaptiveStats, AdaptiveTolerance, ContactShape, DiskContact, EllipsoidContact, Friction,
+    FrictionModel, GroundTop, GroundTopState, SphereContact,
 };
 pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
 pub use error::{Divergence, DynamicsError};

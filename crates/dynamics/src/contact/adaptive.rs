@@ -105,8 +105,9 @@ const MIN_STEP_RELATIVE: f64 = 1e-12;
 /// ```text
 /// |e_i| ≤ atol · s_i + rtol · max(|y_i(t)|, |y_i(t + h)|)
 /// s_i:  ℓ for r_G,  ℓ/τ for v_G,  1 for q,  I_max/τ for L
-/// ℓ = the contact radius (sphere or rim), τ = √(ℓ/g), I_max = the largest
-///     diagonal entry of the body inertia tensor
+/// ℓ = the contact radius (sphere or rim; an ellipsoid's smallest
+///     semi-axis), τ = √(ℓ/g), I_max = the largest diagonal entry of the
+///     body inertia tensor
 /// ```
 ///
 /// so `atol` is dimensionless: an absolute floor in the body's own units
@@ -237,6 +238,7 @@ impl GroundTop {
         let length = match self.shape() {
             ContactShape::Sphere(s) => s.radius(),
             ContactShape::Disk(d) => d.radius(),
+            ContactShape::Ellipsoid(e) => e.semi_axes().min_element(),
         };
         let time = (length / self.gravity()).sqrt();
         let i: DMat3 = self.inertia_body();

@@ -4,9 +4,9 @@
 
 use glam::{DQuat, DVec3};
 
-use super::{DiskContact, SphereContact};
+use super::{DiskContact, EllipsoidContact, SphereContact};
 
-/// The surface near the contact: a sphere or a circular rim.
+/// The surface near the contact: a sphere, a circular rim or an ellipsoid.
 ///
 /// ```
 /// use glam::DVec3;
@@ -21,6 +21,8 @@ pub enum ContactShape {
     Sphere(SphereContact),
     /// A body-fixed circular rim (coin, Euler's disk).
     Disk(DiskContact),
+    /// A body-fixed ellipsoid (the rattleback).
+    Ellipsoid(EllipsoidContact),
 }
 
 impl ContactShape {
@@ -29,6 +31,7 @@ impl ContactShape {
         match self {
             Self::Sphere(s) => s.contact_from_com_world(world_from_body),
             Self::Disk(d) => d.contact_from_com_world(world_from_body),
+            Self::Ellipsoid(e) => e.contact_from_com_world(world_from_body),
         }
     }
 
@@ -37,17 +40,19 @@ impl ContactShape {
         let c = match self {
             Self::Sphere(s) => s.center_body(),
             Self::Disk(d) => d.center_body(),
+            Self::Ellipsoid(e) => e.center_body(),
         };
         world_from_body.normalize() * c
     }
 
     /// `ρ` and its rate `ρ̇` for the angular velocity `omega_world`, at
-    /// the unit attitude `q` (formulas at [`DiskContact`]; for a sphere
-    /// `ρ̇ = ω × A c`).
+    /// the unit attitude `q` (formulas at [`DiskContact`] and
+    /// [`EllipsoidContact`]; for a sphere `ρ̇ = ω × A c`).
     pub(crate) fn offset_and_rate(&self, q: DQuat, omega_world: DVec3) -> (DVec3, DVec3) {
         match self {
             Self::Sphere(s) => s.offset_and_rate(q, omega_world),
             Self::Disk(d) => d.offset_and_rate(q, omega_world),
+            Self::Ellipsoid(e) => e.offset_and_rate(q, omega_world),
         }
     }
 }

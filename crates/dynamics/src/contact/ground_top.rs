@@ -226,11 +226,11 @@ impl GroundTop {
         self.gravity
     }
 
-    /// The contact sphere (`None` for a disk rim).
+    /// The contact sphere (`None` for a disk rim or an ellipsoid).
     pub fn sphere(&self) -> Option<SphereContact> {
         match self.shape {
             ContactShape::Sphere(s) => Some(s),
-            ContactShape::Disk(_) => None,
+            ContactShape::Disk(_) | ContactShape::Ellipsoid(_) => None,
         }
     }
 
@@ -404,7 +404,7 @@ impl GroundTop {
 
     /// Jellett's integral, conserved by every contact force of a sphere
     /// whose centre lies on an axis of symmetry of the inertia tensor (for
-    /// a disk rim the same expression, not conserved).
+    /// a disk rim or an ellipsoid the same expression, not conserved).
     ///
     /// ```text
     /// λ = L · (R ẑ − A c) = −L · ρ = L · (r_G − r_P)
@@ -471,7 +471,7 @@ impl GroundTop {
     /// sphere.
     pub(crate) fn rim_direction_body(&self, state: &GroundTopState) -> Option<DVec3> {
         match self.shape {
-            ContactShape::Sphere(_) => None,
+            ContactShape::Sphere(_) | ContactShape::Ellipsoid(_) => None,
             ContactShape::Disk(d) => {
                 let q = state.world_from_body.normalize();
                 let rho = d.contact_from_com_world(q);

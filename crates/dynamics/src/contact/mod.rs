@@ -1,12 +1,15 @@
 //! Bodies on a table: a rigid body touching the ground plane `z = 0`
 //! (gravity `−g ẑ`) with a body-fixed sphere — the ball-ended top, the
-//! tippe top — or a circular rim — a coin, Euler's disk.
+//! tippe top —, a circular rim — a coin, Euler's disk — or an ellipsoid —
+//! the rattleback.
 //!
 //! - [`SphereContact`]: the sphere's geometry (radius `R`, centre `c` in
 //!   body axes from the centre of mass) and the constraint's residual;
 //! - [`DiskContact`]: a rim (radius `r`, centre `c`, axis `n` in body
-//!   axes), its lowest point and that point's rate; [`ContactShape`]
-//!   chooses between the two ([`GroundTop::try_with_shape`]);
+//!   axes), its lowest point and that point's rate;
+//! - [`EllipsoidContact`]: an ellipsoid (semi-axes along the body axes,
+//!   centre `c`), its lowest point and that point's rate; [`ContactShape`]
+//!   chooses among the three ([`GroundTop::try_with_shape`]);
 //! - [`Friction`] ([`FrictionModel`] names it): `none`, `viscous`,
 //!   regularised Coulomb `sliding`, and `rolling` without slipping
 //!   (nonholonomic, conservative);
@@ -118,6 +121,18 @@
 //! equations; the code evaluates this general form for both). Jellett's
 //! λ is an integral of the sphere only.
 //!
+//! # An ellipsoid
+//! An [`EllipsoidContact`] (semi-axes `E = diag(a, b, c)` along the body
+//! axes) touches at the surface point whose outward normal is `−ẑ`, in
+//! body axes `n_b = Aᵀ(−ẑ)`: `ρ = A (c + E² n_b/√(n_bᵀ E² n_b))`. It too
+//! moves over the surface, with `ρ̇ = ω × ρ + A ṗ_b` (formulas at
+//! [`EllipsoidContact`]), and the surface is convex, so the disk's general
+//! form above holds unchanged. With equal semi-axes it is the sphere
+//! (tested to rounding). Kane & Levinson's rattleback (an ellipsoid whose
+//! inertia axes are turned about the vertical against its geometric axes)
+//! rolling without slipping reverses its spin while conserving energy
+//! (`tests/contact_rattleback.rs`); λ is not conserved.
+//!
 //! # What is conserved
 //! The energy `E = ½ m |v_G|² + ½ L·ω + m g z_G` changes by the power of the
 //! contact force at the contact point's velocity:
@@ -171,6 +186,7 @@
 mod adaptive;
 mod contact_shape;
 mod disk_contact;
+mod ellipsoid_contact;
 mod friction;
 mod ground_top;
 mod rk4;
@@ -179,6 +195,7 @@ mod sphere_contact;
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub use self::contact_shape::ContactShape;
 pub use self::disk_contact::DiskContact;
+pub use self::ellipsoid_contact::EllipsoidContact;
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;
