@@ -96,11 +96,13 @@ Scene (TOML; SI units, radians):
                              with a pivot: a driven heavy top)
   [body.contact]             the body stands on the ground plane z = 0
                              (gravity must be [0, 0, -g]) touching it with:
-  shape = \"sphere\"           \"sphere\" | \"disk\" (\"ellipsoid\": not supported yet)
+  shape = \"sphere\"           \"sphere\" | \"disk\" | \"ellipsoid\"
   radius = 0.015             sphere or disk radius, m
   center = [0, 0, 0.003]     its centre from the centre of mass, body axes,
                              m [default: 0]
   normal = [0, 0, 1]         disk only: its axis, body axes
+  semi_axes = [0.2, 0.03, 0.02]
+                             ellipsoid only: semi-axes along body x, y, z, m
   friction = \"sliding\"       \"none\" | \"viscous\" (F = -mu N v_slip, mu in
                              s/m) | \"sliding\" (Coulomb, regularised:
                              F = -mu N v/sqrt(|v|^2 + eps^2)) | \"rolling\"

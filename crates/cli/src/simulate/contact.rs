@@ -1,6 +1,6 @@
 //! A body's `[body.contact]` table: the surface that touches the ground
-//! plane z = 0 (a sphere, a disk rim; an ellipsoid is read but not yet
-//! simulated) and the friction law there, checked key by key into the
+//! plane z = 0 (a sphere, a disk rim, an ellipsoid with its semi-axes
+//! along the body axes) and the friction law there, checked key by key into the
 //! library's [`ContactShape`] and [`Friction`].
 //!
 //! ```text
@@ -27,7 +27,9 @@ use std::fmt;
 use std::str::FromStr;
 
 use glam::DVec3;
-use kreisel_dynamics::{ContactShape, DiskContact, Friction, FrictionModel, SphereContact};
+use kreisel_dynamics::{
+    ContactShape, DiskContact, EllipsoidContact, Friction, FrictionModel, SphereContact,
+};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use toml::Spanned;
@@ -260,11 +262,9 @@ fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, CliError> {
             if ![a, b, c].iter().all(|&x| x > 0.0) {
                 return Err(keys.fail(axes, "`contact.semi_axes` must be positive"));
             }
-            Err(keys.fail(
-                &raw.shape,
-                "`contact.shape` = \"ellipsoid\" is not supported yet \
-                 (the library has no ellipsoid contact): use \"sphere\" or \"disk\"",
-            ))
+            let ellipsoid = EllipsoidContact::try_new(DVec3::new(a, b, c), center)
+                .map_err(|e| keys.fail(axes, &format!("`contact.semi_axes`: {e}")))?;
+            Ok(ContactShape::Ellipsoid(ellipsoid))
         }
     }
 }

@@ -285,9 +285,9 @@ fn bad_contacts_are_one_line_errors_at_their_line() {
     check(
         "c_ellipsoid.toml",
         DOWN,
-        &contact("shape = \"ellipsoid\"\nsemi_axes = [0.2, 0.03, 0.02]\nfriction = \"rolling\"\n"),
-        11,
-        &["\"ellipsoid\" is not supported yet"],
+        &contact("shape = \"ellipsoid\"\nsemi_axes = [0.2, -0.03, 0.02]\nfriction = \"rolling\"\n"),
+        12,
+        &["`contact.semi_axes` must be positive"],
     );
     check(
         "c_ellipsoid_radius.toml",

@@ -13,6 +13,7 @@ mod inputs;
 mod output;
 mod physics;
 mod plot;
+mod rattleback;
 mod support;
 mod threads;
 mod tolerance;
