@@ -13,6 +13,8 @@
 //! - [`GroundTop`], [`GroundTopState`]: the equations of motion, energy,
 //!   Jellett's integral, the normal force; a fixed-step RK4 with lift-off
 //!   located and reported ([`GroundTop::try_step`]);
+//! - [`GroundTop::try_with_other_contacts`]: further shapes (a stem's
+//!   ball) watched for touchdown, reported with its time;
 //! - [`GroundTop::try_advance_adaptive`]: Dormand–Prince 5(4) with
 //!   step-size control to an [`AdaptiveTolerance`], the same contact
 //!   checks, statistics in [`AdaptiveStats`].
@@ -118,6 +120,28 @@
 //! equations; the code evaluates this general form for both). Jellett's
 //! λ is an integral of the sphere only.
 //!
+//! # Further contacts: touchdown, reported
+//! A body may carry further body-fixed shapes that do not touch at the
+//! start ([`GroundTop::try_with_other_contacts`], at most
+//! [`MAX_OTHER_CONTACTS`]) — the stem's ball of Leine & Glocker's tippe
+//! top, which reaches the table near θ = 140°. They exert no force: the
+//! equations above are those of the main shape's contact alone. Each
+//! further shape's gap, the height of its lowest point, and its rate
+//!
+//! ```text
+//! gᵢ = z_G + (ρᵢ)_z,   ġᵢ = ż_G + (ω × ρᵢ)_z     (sphere: ρᵢ = A cᵢ − Rᵢ ẑ)
+//! ```
+//!
+//! are checked after every step: where a gap is not positive at the
+//! step's end — or the cubic Hermite interpolant of `gᵢ` over the step
+//! dips below zero and the redone step confirms it (a graze) — the
+//! instant is located by bisection on the step size, the state left there
+//! (`gᵢ ≈ 0`), and [`crate::DynamicsError::ContactTouchdown`] reports the
+//! time, which shape and its approach speed `−ġᵢ`. The model does not
+//! handle the impact nor the two-contact motion after it: it stops and
+//! reports, as for a lift-off. A start state with a further shape at or
+//! below the plane is [`crate::DynamicsError::OtherContactTouching`].
+//!
 //! # What is conserved
 //! The energy `E = ½ m |v_G|² + ½ L·ω + m g z_G` changes by the power of the
 //! contact force at the contact point's velocity:
@@ -175,6 +199,7 @@ mod friction;
 mod ground_top;
 mod rk4;
 mod sphere_contact;
+mod touchdown;
 
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub use self::contact_shape::ContactShape;
@@ -182,3 +207,4 @@ pub use self::disk_contact::DiskContact;
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;
+pub use self::touchdown::MAX_OTHER_CONTACTS;

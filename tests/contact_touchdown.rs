@@ -1,0 +1,387 @@
+//! A second contact shape touching down (`GroundTop::try_with_other_contacts`,
+//! `DynamicsError::ContactTouchdown`) against references the library does
+//! not compute: the stem ball of Leine & Glocker's tippe top reaching the
+//! table in a committed scipy run of its own equations
+//! (`tests/data/contact/tippe_top_touchdown.csv`, `python3
+//! tests/data/gen/tippe_top.py --touchdown`), and a body tipping over onto a
+//! side knob whose touchdown instant follows from energy and a
+//! one-degree-of-freedom quadrature; the state left at the reported time
+//! (gap ≈ 0), grazes inside one step, bad inputs, and the trajectory left
+//! bit for bit unchanged by watching.
+
+mod common;
+
+use glam::{DMat3, DQuat, DVec2, DVec3};
+use kreisel::dynamics::{
+    AdaptiveTolerance, ContactShape, DynamicsError, Friction, GroundTop, GroundTopState,
+    MAX_OTHER_CONTACTS, SphereContact,
+};
+
+use common::tippe_top::{G, leine_glocker};
+
+/// The stem's ball of Leine & Glocker's top: radius, m, and its centre's
+/// distance from the centre of mass along e₃, m (the demo's geometry,
+/// `examples/tippe_top/simulation.rs`, and the generator's).
+const STEM_R: f64 = 0.005;
+const STEM_C: f64 = 0.016;
+
+fn stem() -> ContactShape {
+    ContactShape::Sphere(SphereContact::try_new(STEM_R, DVec3::new(0.0, 0.0, STEM_C)).unwrap())
+}
+
+/// The tippe top with `friction`, watching its stem ball.
+fn tippe_top_with_stem(friction: Friction) -> (GroundTop, GroundTopState) {
+    let (top, s) = leine_glocker(friction);
+    (top.try_with_other_contacts(&[stem()]).unwrap(), s)
+}
+
+/// The generator's touchdown row for `scenario`: its time (rtol 1e-13),
+/// the same run's time at rtol 1e-11, the approach speed and the state.
+fn reference(scenario: &str) -> (f64, f64, f64, GroundTopState) {
+    let path = format!(
+        "{}/tests/data/contact/tippe_top_touchdown.csv",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let line = text
+        .lines()
+        .skip(1)
+        .find(|l| l.starts_with(&format!("{scenario},")))
+        .unwrap_or_else(|| panic!("no {scenario} row in {path}"));
+    let x: Vec<f64> = line
+        .split(',')
+        .skip(1)
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let state = GroundTopState {
+        com_world: DVec3::new(x[3], x[4], x[5]),
+        velocity_world: DVec3::new(x[6], x[7], x[8]),
+        world_from_body: DQuat::from_xyzw(x[10], x[11], x[12], x[9]),
+        l_world: DVec3::new(x[13], x[14], x[15]),
+    };
+    (x[0], x[1], x[2], state)
+}
+
+/// The touchdown error's fields, or a panic with what came instead.
+fn touchdown(result: Result<impl std::fmt::Debug, DynamicsError>) -> (f64, usize, f64) {
+    match result {
+        Err(DynamicsError::ContactTouchdown {
+            time,
+            contact,
+            approach_speed,
+        }) => (time, contact, approach_speed),
+        other => panic!("expected a touchdown, got {other:?}"),
+    }
+}
+
+/// Checks one scenario's touchdown against the generator: the time to
+/// `rel` relative, the approach speed and the state loosely (they change
+/// fast there), the stem's gap at the reported state to round-off.
+fn against_generator(scenario: &str, top: &GroundTop, s: &GroundTopState, time: f64, speed: f64) {
+    let (t_ref, t_coarse, speed_ref, s_ref) = reference(scenario);
+    let gap = top.other_gap(s, 0).unwrap();
+    eprintln!(
+        "{scenario}: touchdown at {time} s, generator {t_ref} s (its rtol 1e-11 run: {t_coarse}), \
+         Δt/t = {:.1e}; approach {speed} vs {speed_ref} m/s; gap there {gap:e} m; \
+         |Δr_G| {:.1e} m",
+        (time - t_ref).abs() / t_ref,
+        (s.com_world - s_ref.com_world).length()
+    );
+    // The reference's own error, from its coarser run, is far below the bound.
+    assert!((t_coarse - t_ref).abs() < 1e-8 * t_ref);
+    assert!((time - t_ref).abs() <= 1e-6 * t_ref, "{time} vs {t_ref}");
+    assert!(
+        (speed / speed_ref - 1.0).abs() < 1e-5,
+        "{speed} vs {speed_ref}"
+    );
+    // Left where the stem's ball touches: not above, and below by round-off only.
+    assert!(gap <= 0.0 && gap > -1e-15, "gap {gap:e} m");
+    assert!(top.gap(s).abs() < 1e-10, "the ball's own contact drifted");
+    let tilt = (s.world_from_body.normalize() * DVec3::Z).z.acos();
+    let tilt_ref = (s_ref.world_from_body.normalize() * DVec3::Z).z.acos();
+    assert!((tilt - tilt_ref).abs() < 1e-5, "{tilt} vs {tilt_ref}");
+}
+
+// Measured (h = 1e-5 s): see the eprintln; the generator's 3.8 s run.
+#[test]
+fn sliding_tippe_top_stem_touches_down_at_the_generators_time() {
+    let (top, mut s) = tippe_top_with_stem(Friction::try_sliding(0.3, 1e-3).unwrap());
+    let h = 1e-5;
+    let err = top.try_advance(&mut s, 0.0, h, 500_000, |_, _| {});
+    let (time, contact, speed) = touchdown(err);
+    assert_eq!(contact, 0);
+    against_generator("sliding", &top, &s, time, speed);
+}
+
+#[test]
+fn viscous_tippe_top_stem_touches_down_at_the_generators_time_adaptive() {
+    let (top, mut s) = tippe_top_with_stem(Friction::try_viscous(0.3).unwrap());
+    let tol = AdaptiveTolerance::try_new(1e-10, 1e-12).unwrap();
+    let mut last = 0.0;
+    let err = top.try_advance_adaptive(&mut s, 0.0, 20.0, tol, |t, _| last = t);
+    let (time, contact, speed) = touchdown(err);
+    assert_eq!(contact, 0);
+    assert!(time > last, "{time} after the last accepted step {last}");
+    against_generator("viscous", &top, &s, time, speed);
+}
+
+/// A body standing on a ball below its centre of mass, tipping over about
+/// x without spin, frictionless, onto a knob on its side:
+///
+/// ```text
+/// ball: radius R0, centre (0, 0, −B) body;   knob: radius R2, centre (0, −D, 0) body
+/// z_G = R0 + B cos θ  (the centre of mass moves vertically only: no horizontal force)
+/// E = ½ (I + m B² sin²θ) θ̇² + m g (R0 + B cos θ)
+/// knob gap(θ) = R0 + B cos θ − D sin θ − R2
+/// N(θ) = m (g + z̈_G)
+/// ```
+struct Tipping {
+    m: f64,
+    i: f64,
+    e: f64,
+}
+
+const R0: f64 = 0.01;
+const B: f64 = 0.04;
+const D: f64 = 0.03;
+const R2: f64 = 0.004;
+
+impl Tipping {
+    fn rate2(&self, th: f64) -> f64 {
+        2.0 * (self.e - self.m * G * (R0 + B * th.cos()))
+            / (self.i + self.m * B * B * th.sin().powi(2))
+    }
+
+    fn knob_gap(&self, th: f64) -> f64 {
+        R0 + B * th.cos() - D * th.sin() - R2
+    }
+
+    /// `m (g + z̈_G)`, `z̈_G = −B (cos θ θ̇² + sin θ θ̈)`, θ̈ from `dE/dt = 0`.
+    fn normal_force(&self, th: f64) -> f64 {
+        let (s, c) = th.sin_cos();
+        let d = self.i + self.m * B * B * s * s;
+        let r2 = self.rate2(th);
+        let acc = (self.m * G * B * s - self.m * B * B * s * c * r2) / d;
+        self.m * (G - B * (c * r2 + s * acc))
+    }
+
+    fn top(&self, others: &[ContactShape]) -> GroundTop {
+        let ball = SphereContact::try_new(R0, DVec3::new(0.0, 0.0, -B)).unwrap();
+        let inertia = DMat3::from_diagonal(DVec3::new(self.i, self.i, 0.5 * self.i));
+        GroundTop::try_new(self.m, inertia, ball, Friction::None, G)
+            .unwrap()
+            .try_with_other_contacts(others)
+            .unwrap()
+    }
+}
+
+fn knob() -> ContactShape {
+    ContactShape::Sphere(SphereContact::try_new(R2, DVec3::new(0.0, -D, 0.0)).unwrap())
+}
+
+#[test]
+fn tipping_body_touches_its_knob_down_at_the_hand_computed_time() {
+    let theta_s: f64 = 0.05;
+    // Falling from 0.05 rad at 2 rad/s.
+    let (m, i, rate_s) = (0.1, 4e-5, 2.0);
+    let dof = Tipping {
+        m,
+        i,
+        e: m * G * (R0 + B * theta_s.cos())
+            + 0.5 * (i + m * B * B * theta_s.sin().powi(2)) * rate_s * rate_s,
+    };
+    // θ* where the knob's gap vanishes, t* = ∫ dθ/θ̇ (Simpson).
+    let (theta_star, t_star) =
+        common::contact::lift_off_by_hand(theta_s, 1.5, |th| dof.knob_gap(th), |th| dof.rate2(th));
+    // The ball keeps pushing all the way: no lift-off before the knob lands.
+    let n_min = (0..=1000)
+        .map(|k| dof.normal_force(theta_s + (theta_star - theta_s) * k as f64 / 1000.0))
+        .fold(f64::INFINITY, f64::min);
+    assert!(n_min > 0.1 * dof.m * G, "N falls to {n_min} N");
+    let speed_star = (B * theta_star.sin() + D * theta_star.cos()) * dof.rate2(theta_star).sqrt();
+
+    let top = dof.top(&[knob()]);
+    let q = DQuat::from_rotation_x(theta_s);
+    let start = top
+        .try_state_on_ground(q, DVec3::new(rate_s, 0.0, 0.0), DVec2::ZERO)
+        .unwrap();
+    assert!((dof.rate2(theta_s) / (rate_s * rate_s) - 1.0).abs() < 1e-12);
+    assert!((top.energy(&start) / dof.e - 1.0).abs() < 1e-14);
+    assert!((top.other_gap(&start, 0).unwrap() - dof.knob_gap(theta_s)).abs() < 1e-16);
+
+    let check = |s: &GroundTopState, time: f64, speed: f64, what: &str, rel: f64| {
+        let axis = s.world_from_body.normalize() * DVec3::Z;
+        let theta = (-axis.y).atan2(axis.z);
+        let gap = top.other_gap(s, 0).unwrap();
+        eprintln!(
+            "{what}: touchdown at {time} s (t* = {t_star}, Δ {:.1e}), θ {theta} (θ* = {theta_star}), \
+             approach {speed} (by hand {speed_star}), gap {gap:e}",
+            time - t_star
+        );
+        assert!((time - t_star).abs() <= rel * t_star, "{time} vs {t_star}");
+        assert!((theta - theta_star).abs() < 1e-8, "{theta} vs {theta_star}");
+        assert!(
+            (speed / speed_star - 1.0).abs() < 1e-7,
+            "{speed} vs {speed_star}"
+        );
+        assert!(gap <= 0.0 && gap > -1e-16, "gap {gap:e} m");
+    };
+
+    let mut s = start;
+    let (time, contact, speed) = touchdown(top.try_advance(&mut s, 0.0, 1e-4, 100_000, |_, _| {}));
+    assert_eq!(contact, 0);
+    check(&s, time, speed, "rk4 h = 1e-4", 1e-10);
+
+    let mut s = start;
+    let tol = AdaptiveTolerance::try_new(1e-12, 1e-12).unwrap();
+    let (time, contact, speed) =
+        touchdown(top.try_advance_adaptive(&mut s, 0.0, 10.0, tol, |_, _| {}));
+    assert_eq!(contact, 0);
+    check(&s, time, speed, "dopri5 1e-12", 1e-10);
+
+    // Stepping on from the reported state reports the same touchdown at
+    // once, the state unchanged: the model does not go further.
+    let at = s;
+    let (again, _, _) = touchdown(top.try_step(&mut s, time, 1e-4));
+    assert_eq!((again, s), (time, at));
+}
+
+// A knob off the axis of the spinning top rises and falls once a turn
+// (180 rad/s: 35 ms). Its radius is set so that its bottom dips 1 µm
+// below the plane at the first minimum, for about 0.5 ms: steps of 2 ms
+// (ω h ≈ 0.37) end above the plane on both sides of it, the check from
+// the gap's values and rates at the step's ends (a cubic) finds it; the
+// time agrees with a fine-step run whose steps see the sign change.
+#[test]
+fn a_graze_inside_one_step_is_found() {
+    let (plain, s0) = leine_glocker(Friction::None);
+    let c = DVec3::new(0.012, 0.0, 0.0);
+    let centre_z = |s: &GroundTopState| s.com_world.z + (s.world_from_body.normalize() * c).z;
+    // The first local minimum of the knob centre's height, fine steps.
+    let mut heights = vec![centre_z(&s0)];
+    let mut s = s0;
+    plain
+        .try_advance(&mut s, 0.0, 1e-6, 60_000, |_, s| heights.push(centre_z(s)))
+        .unwrap();
+    let k = (1..heights.len() - 1)
+        .find(|&k| heights[k] < heights[k - 1] && heights[k] <= heights[k + 1])
+        .expect("a minimum within 60 ms");
+    let t_min = k as f64 * 1e-6;
+    eprintln!("first minimum of the knob's centre at t = {t_min} s");
+    let knob = SphereContact::try_new(heights[k] + 1e-6, c).unwrap();
+    let top = plain
+        .try_with_other_contacts(&[ContactShape::Sphere(knob)])
+        .unwrap();
+    let mut fine = s0;
+    let (t_fine, _, _) = touchdown(top.try_advance(&mut fine, 0.0, 1e-6, 60_000, |_, _| {}));
+    // About 2 ms, the minimum in the middle of the 13th step.
+    let h = t_min / 12.5;
+    let mut coarse = s0;
+    let err = top.try_advance(&mut coarse, 0.0, h, 100, |_, _| {});
+    let (t_coarse, _, _) = touchdown(err);
+    let gap = top.other_gap(&coarse, 0).unwrap();
+    eprintln!("graze: fine {t_fine} s, coarse (h = {h}) {t_coarse} s, gap {gap:e}");
+    // Both ends of the step that contains it are above the plane.
+    let n = (t_coarse / h).floor() as usize;
+    let mut probe = s0;
+    plain.try_advance(&mut probe, 0.0, h, n, |_, _| {}).unwrap();
+    let g_start = top.other_gap(&probe, 0).unwrap();
+    plain.try_step(&mut probe, n as f64 * h, h).unwrap();
+    let g_end = top.other_gap(&probe, 0).unwrap();
+    eprintln!(
+        "the step from {} s: gap {g_start:e} → {g_end:e} m",
+        n as f64 * h
+    );
+    assert!(g_start > 0.0 && g_end > 0.0);
+    assert!(gap <= 0.0 && gap > -1e-15, "{gap:e}");
+    // The entry into a 1 µm dip is located to the coarse method's accuracy.
+    assert!((t_coarse - t_fine).abs() < 1e-5, "{t_coarse} vs {t_fine}");
+}
+
+#[test]
+fn watching_a_far_contact_leaves_every_bit_unchanged() {
+    for friction in [
+        Friction::try_sliding(0.3, 1e-3).unwrap(),
+        Friction::Rolling,
+        Friction::None,
+    ] {
+        let (plain, s0) = leine_glocker(friction);
+        let far =
+            ContactShape::Sphere(SphereContact::try_new(0.001, DVec3::new(0.0, 0.0, 1.0)).unwrap());
+        let watching = plain.try_with_other_contacts(&[far, stem()]).unwrap();
+        assert_eq!(watching.other_contacts(), &[far, stem()]);
+        let (mut a, mut b) = (s0, s0);
+        plain
+            .try_advance(&mut a, 0.0, 1e-4, 2000, |_, _| {})
+            .unwrap();
+        watching
+            .try_advance(&mut b, 0.0, 1e-4, 2000, |_, _| {})
+            .unwrap();
+        assert_eq!(a, b, "{friction:?}");
+        let tol = AdaptiveTolerance::try_new(1e-9, 1e-11).unwrap();
+        let (mut a, mut b) = (s0, s0);
+        let sa = plain
+            .try_advance_adaptive(&mut a, 0.0, 0.2, tol, |_, _| {})
+            .unwrap();
+        let sb = watching
+            .try_advance_adaptive(&mut b, 0.0, 0.2, tol, |_, _| {})
+            .unwrap();
+        assert_eq!((a, sa), (b, sb), "{friction:?}");
+        // Emptying the list gives the plain top back.
+        assert_eq!(watching.try_with_other_contacts(&[]).unwrap(), plain);
+    }
+}
+
+#[test]
+fn bad_inputs_are_typed_errors() {
+    let (top, s0) = leine_glocker(Friction::None);
+    // Too many shapes.
+    let many = vec![stem(); MAX_OTHER_CONTACTS + 1];
+    assert!(matches!(
+        top.try_with_other_contacts(&many),
+        Err(DynamicsError::InvalidContact {
+            parameter: "other_contacts",
+            ..
+        })
+    ));
+    assert!(top.try_with_other_contacts(&many[1..]).is_ok());
+    // A further sphere at or below the plane at the start: refused by both
+    // start-state constructors, with its index and gap.
+    let low =
+        ContactShape::Sphere(SphereContact::try_new(0.02, DVec3::new(0.0, 0.0, -0.005)).unwrap());
+    let top = top.try_with_other_contacts(&[stem(), low]).unwrap();
+    let q = DQuat::from_rotation_x(0.1);
+    let err = top
+        .try_state_on_ground(q, DVec3::ZERO, DVec2::ZERO)
+        .unwrap_err();
+    let DynamicsError::OtherContactTouching { contact, gap } = err else {
+        panic!("{err}")
+    };
+    assert_eq!(contact, 1);
+    assert!(gap < 0.0);
+    assert!(
+        err.to_string()
+            .contains("further contact #1 is at or below the plane")
+    );
+    let rolling = leine_glocker(Friction::Rolling)
+        .0
+        .try_with_other_contacts(&[low])
+        .unwrap();
+    assert!(matches!(
+        rolling.try_rolling_state_on_ground(q, DVec3::ZERO),
+        Err(DynamicsError::OtherContactTouching { contact: 0, .. })
+    ));
+    // A hand-made state with the further sphere below: the step is not
+    // taken, the touchdown reported at its start.
+    let mut s = s0;
+    let t = 1.25;
+    let (time, contact, _) = touchdown(top.try_step(&mut s, t, 1e-4));
+    assert_eq!((time, contact, s), (t, 1, s0));
+    let mut s = s0;
+    let tol = AdaptiveTolerance::try_new(1e-9, 1e-11).unwrap();
+    let (time, _, _) = touchdown(top.try_advance_adaptive(&mut s, t, 2.0, tol, |_, _| {}));
+    assert_eq!((time, s), (t, s0));
+    // Out-of-range indices are None, not a panic.
+    assert_eq!(top.other_gap(&s0, 2), None);
+    assert_eq!(top.other_gap_rate(&s0, 2), None);
+}
