@@ -385,3 +385,189 @@ fn bad_inputs_are_typed_errors() {
     assert_eq!(top.other_gap(&s0, 2), None);
     assert_eq!(top.other_gap_rate(&s0, 2), None);
 }
+
+/// After a lift-off, `try_fly` carries the body through the air until its
+/// ball lands. A body with a spherical inertia tensor turns uniformly in
+/// flight, so the ball's gap is a closed form of the flight time τ:
+///
+/// ```text
+/// gap(τ) = z_L + ż_L τ − ½ g τ² − a cos(θ_L + ω τ) − R
+/// ```
+///
+/// (ball of radius R at (0, 0, −a) body, rocking about x; its first root
+/// found here by sampling and bisection, by hand). The energy and L are
+/// conserved in flight.
+#[test]
+fn lift_off_then_flight_lands_at_the_closed_form_time() {
+    let (m, i, a, r0, theta_s) = (1.0, 1e-3, 0.05, 0.04, -0.5f64);
+    let ball = SphereContact::try_new(r0, DVec3::new(0.0, 0.0, -a)).unwrap();
+    let top = GroundTop::try_new(
+        m,
+        DMat3::from_diagonal(DVec3::splat(i)),
+        ball,
+        Friction::None,
+        G,
+    )
+    .unwrap();
+    // Coming up from θ = −0.5 fast enough to leave the plane (the lift-off
+    // case of tests/contact_sphere.rs).
+    let e = 0.5 * i * 1.1 * G / a + m * G * a;
+    let rate2 = 2.0 * (e - m * G * a * theta_s.cos()) / (i + m * a * a * theta_s.sin().powi(2));
+    let q = DQuat::from_rotation_x(theta_s);
+    let mut s = top
+        .try_state_on_ground(q, DVec3::new(rate2.sqrt(), 0.0, 0.0), DVec2::ZERO)
+        .unwrap();
+    let err = top
+        .try_advance(&mut s, 0.0, 1e-4, 1000, |_, _| {})
+        .unwrap_err();
+    let DynamicsError::ContactLost { time: t_lift, .. } = err else {
+        panic!("{err}")
+    };
+    let (e_lift, lift) = (top.energy(&s), s);
+    // The flight by hand from the lift-off state.
+    let axis = s.world_from_body.normalize() * DVec3::Z;
+    let theta_l = (-axis.y).atan2(axis.z);
+    let omega = s.l_world.x / i;
+    let (z_l, vz_l) = (s.com_world.z, s.velocity_world.z);
+    let gap =
+        |tau: f64| z_l + vz_l * tau - 0.5 * G * tau * tau - a * (theta_l + omega * tau).cos() - r0;
+    let first_positive = (1..)
+        .map(|k| k as f64 * 1e-6)
+        .find(|&t| gap(t) > 0.0)
+        .unwrap();
+    let mut lo = first_positive;
+    let mut hi = (1..)
+        .map(|k| lo + k as f64 * 1e-5)
+        .find(|&t| gap(t) <= 0.0)
+        .unwrap();
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if gap(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let tau_hand = hi;
+
+    // In the air until shortly before: None, the state on the parabola.
+    let mut early = s;
+    let t_mid = t_lift + 0.5 * tau_hand;
+    assert_eq!(top.try_fly(&mut early, t_lift, t_mid).unwrap(), None);
+    let tau = t_mid - t_lift;
+    let z_mid = z_l + vz_l * tau - 0.5 * G * tau * tau;
+    assert!(
+        (early.com_world.z - z_mid).abs() < 1e-15,
+        "{}",
+        early.com_world.z - z_mid
+    );
+    assert_eq!(early.l_world, lift.l_world);
+
+    let landing = top
+        .try_fly(&mut s, t_lift, t_lift + 10.0)
+        .unwrap()
+        .expect("it lands");
+    let flown = landing.time - t_lift;
+    eprintln!(
+        "lift-off at {t_lift} s; lands at {} s after {flown} s in the air (by hand {tau_hand} s, Δ {:.1e}); \
+         approach {} m/s; gap {:e}; ΔE/E {:.1e}",
+        landing.time,
+        flown - tau_hand,
+        landing.approach_speed,
+        top.gap(&s),
+        top.energy(&s) / e_lift - 1.0
+    );
+    assert_eq!(landing.contact, None);
+    assert!((flown - tau_hand).abs() < 1e-12, "{flown} vs {tau_hand}");
+    let speed_hand = -(vz_l - G * tau_hand + a * omega * (theta_l + omega * tau_hand).sin());
+    assert!((landing.approach_speed / speed_hand - 1.0).abs() < 1e-9);
+    assert!(landing.approach_speed > 0.0);
+    let g_end = top.gap(&s);
+    assert!(g_end <= 0.0 && g_end > -1e-15, "{g_end:e}");
+    assert!((top.energy(&s) / e_lift - 1.0).abs() < 1e-13);
+    assert_eq!(s.l_world, lift.l_world);
+}
+
+#[test]
+fn flight_bad_inputs_are_typed_errors() {
+    let (top, s0) = leine_glocker(Friction::None);
+    for (t0, t_end) in [(1.0, 0.5), (0.0, f64::NAN), (f64::INFINITY, 1.0)] {
+        let mut s = s0;
+        assert!(matches!(
+            top.try_fly(&mut s, t0, t_end),
+            Err(DynamicsError::InvalidInterval { .. })
+        ));
+        assert_eq!(s, s0);
+    }
+    let mut s = s0;
+    s.l_world.x = f64::NAN;
+    assert!(matches!(
+        top.try_fly(&mut s, 0.0, 1.0),
+        Err(DynamicsError::InvalidState { .. })
+    ));
+    // Resting on the plane with nothing to lift it: lands at once.
+    let (top, s0) = leine_glocker(Friction::None);
+    let mut rest = top
+        .try_state_on_ground(DQuat::IDENTITY, DVec3::ZERO, DVec2::ZERO)
+        .unwrap();
+    let landing = top.try_fly(&mut rest, 2.0, 3.0).unwrap().unwrap();
+    assert_eq!((landing.time, landing.contact), (2.0, None));
+    let _ = s0;
+}
+
+/// A tippe top tossed up spinning comes down on its ball or, tossed
+/// upside down, on its stem: the landing shape is the one whose gap
+/// reaches zero first, checked against fine samples of the same flight
+/// (every gap positive before the landing), the centre of mass on its
+/// parabola.
+#[test]
+fn tossed_top_lands_on_the_first_shape_to_reach_the_plane() {
+    let (top, s0) = tippe_top_with_stem(Friction::None);
+    for (tilt, expected) in [(0.1, None), (2.8, Some(0))] {
+        let q = DQuat::from_rotation_x(tilt);
+        let start = GroundTopState {
+            com_world: DVec3::new(0.0, 0.0, 0.05),
+            velocity_world: DVec3::new(0.1, 0.0, 0.5),
+            world_from_body: q,
+            l_world: s0.l_world.length() * (q * DVec3::Z) + q * DVec3::new(2e-5, 0.0, 0.0),
+        };
+        let mut s = start;
+        let landing = top.try_fly(&mut s, 0.0, 5.0).unwrap().expect("it lands");
+        let n = 2000;
+        for k in 1..n {
+            let t = landing.time * k as f64 / n as f64;
+            let mut probe = start;
+            assert_eq!(
+                top.try_fly(&mut probe, 0.0, t).unwrap(),
+                None,
+                "landed before {t}"
+            );
+            assert!(top.gap(&probe) > 0.0 && top.other_gap(&probe, 0).unwrap() > 0.0);
+        }
+        let gap = match landing.contact {
+            None => top.gap(&s),
+            Some(i) => top.other_gap(&s, i).unwrap(),
+        };
+        eprintln!(
+            "tossed at tilt {tilt}: lands at {} s on {:?}, gap {gap:e}, approach {} m/s",
+            landing.time, landing.contact, landing.approach_speed
+        );
+        assert_eq!(landing.contact, expected);
+        assert!(gap <= 0.0 && gap > -1e-15);
+        assert!(landing.approach_speed > 0.0);
+        let t = landing.time;
+        let z = 0.05 + 0.5 * t - 0.5 * G * t * t;
+        assert!((s.com_world.z - z).abs() < 1e-15);
+        assert_eq!(s.l_world, start.l_world);
+        // Torque-free about the centre of mass: the energy and the axis'
+        // angle to L (L₃ = L·e₃ of a symmetric body) are conserved.
+        assert!((top.energy(&s) / top.energy(&start) - 1.0).abs() < 1e-13);
+        let l3 = |s: &GroundTopState| s.l_world.dot(s.world_from_body.normalize() * DVec3::Z);
+        assert!(
+            (l3(&s) / l3(&start) - 1.0).abs() < 1e-13,
+            "{} vs {}",
+            l3(&s),
+            l3(&start)
+        );
+    }
+}

@@ -15,6 +15,8 @@
 //!   located and reported ([`GroundTop::try_step`]);
 //! - [`GroundTop::try_with_other_contacts`]: further shapes (a stem's
 //!   ball) watched for touchdown, reported with its time;
+//! - [`GroundTop::try_fly`]: after a lift-off, the exact ballistic flight
+//!   until a shape lands ([`Landing`], with its time);
 //! - [`GroundTop::try_advance_adaptive`]: Dormand–Prince 5(4) with
 //!   step-size control to an [`AdaptiveTolerance`], the same contact
 //!   checks, statistics in [`AdaptiveStats`].
@@ -142,6 +144,13 @@
 //! reports, as for a lift-off. A start state with a further shape at or
 //! below the plane is [`crate::DynamicsError::OtherContactTouching`].
 //!
+//! After a lift-off the body may be carried on in free flight by
+//! [`GroundTop::try_fly`]: no contact force, the centre of mass on its
+//! parabola and the rotation the exact torque-free motion
+//! ([`crate::ExactSolution`]), until the main shape or a further one
+//! reaches the plane ([`Landing`], its time located by bisection on the
+//! exact flight). The impact is not modelled there either.
+//!
 //! # What is conserved
 //! The energy `E = ½ m |v_G|² + ½ L·ω + m g z_G` changes by the power of the
 //! contact force at the contact point's velocity:
@@ -195,6 +204,7 @@
 mod adaptive;
 mod contact_shape;
 mod disk_contact;
+mod flight;
 mod friction;
 mod ground_top;
 mod rk4;
@@ -204,6 +214,7 @@ mod touchdown;
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub use self::contact_shape::ContactShape;
 pub use self::disk_contact::DiskContact;
+pub use self::flight::Landing;
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;

@@ -198,7 +198,7 @@ impl GroundTop {
 
 /// The interior minimum `s* ∈ (0, 1)` of the cubic Hermite interpolant
 /// from `(g₀, h ġ₀)` to `(g₁, h ġ₁)` where it is not positive, if any.
-fn hermite_dip((g0, d0): (f64, f64), (g1, d1): (f64, f64)) -> Option<f64> {
+pub(super) fn hermite_dip((g0, d0): (f64, f64), (g1, d1): (f64, f64)) -> Option<f64> {
     // p(s) = g0 + d0 s + c2 s² + c3 s³.
     let c2 = 3.0 * (g1 - g0) - 2.0 * d0 - d1;
     let c3 = 2.0 * (g0 - g1) + d0 + d1;
