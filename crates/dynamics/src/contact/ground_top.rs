@@ -37,7 +37,7 @@ use crate::DynamicsError;
 pub struct GroundTop {
     mass: f64,
     inertia_body: DMat3,
-    inverse_inertia_body: DMat3,
+    pub(super) inverse_inertia_body: DMat3,
     gravity: f64,
     shape: ContactShape,
     friction: Friction,

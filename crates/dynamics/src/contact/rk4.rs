@@ -170,9 +170,6 @@ impl GroundTop {
             compliance_min,
             end,
         } = trial;
-        if self.other_count > 0 && !self.others_clear(state) {
-            return Err(self.touchdown_at(state, time));
-        }
         if compliance_min <= 0.0 {
             return Err(DynamicsError::ContactIndeterminate {
                 time,
@@ -200,12 +197,32 @@ impl GroundTop {
                 normal_force: normal_min,
             });
         }
+        if end.normal_force > 0.0 && self.other_count == 0 {
+            *state = next;
+            return Ok(());
+        }
+        self.settle_events(state, time, h, next, end.normal_force <= 0.0, redo)
+    }
+
+    /// The rest of [`GroundTop::settle`] where a lift-off is found at the
+    /// step's end (`lost`) or further contacts are watched: takes the step,
+    /// or locates the earlier of the lift-off and a touchdown and leaves
+    /// `state` there (kept out of the common path, which it would slow).
+    #[inline(never)]
+    fn settle_events(
+        &self,
+        state: &mut GroundTopState,
+        time: f64,
+        h: f64,
+        next: GroundTopState,
+        lost: bool,
+        redo: impl Fn(&GroundTopState, f64) -> GroundTopState,
+    ) -> Result<(), DynamicsError> {
         let start = *state;
-        let lost = end.normal_force <= 0.0;
         let touch_by = if self.other_count == 0 {
             None
         } else {
-            self.touchdown_bound(&start, &next, h, |tau| redo(&start, tau))
+            self.touchdown_bound(&start, &next, time, h, |tau| redo(&start, tau))?
         };
         if !lost && touch_by.is_none() {
             *state = next;

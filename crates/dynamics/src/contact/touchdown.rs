@@ -148,40 +148,63 @@ impl GroundTop {
 
     /// A step size `τ ∈ (0, h]` from `start` at which the step `redo(τ)`
     /// ends with a further contact at or below the plane, or `None` when
-    /// the step `start → next` (of `h`) keeps them all above it.
+    /// the step `start → next` (of `h`) keeps them all above it;
+    /// [`DynamicsError::ContactTouchdown`] at `time` when `start` already
+    /// has one at or below the plane.
     ///
     /// `h` when a gap is not positive at `next`. Otherwise a graze — a gap
     /// that dips below zero and comes back within the step — is looked
     /// for: the cubic Hermite interpolant of each gap from its values and
-    /// rates at both ends,
+    /// rates at both ends (`Δ = g₁ − g₀`, `dₖ = h ġₖ`),
     ///
     /// ```text
-    /// p(s) = (2s³ − 3s² + 1) g₀ + (s³ − 2s² + s) h ġ₀ + (3s² − 2s³) g₁ + (s³ − s²) h ġ₁
+    /// p(s) = g₀ + Δ s + s (1 − s) [(1 − s)(d₀ − Δ) − s (d₁ − Δ)]
+    ///      ≥ min(g₀, g₁) − ¼ max(|d₀ − Δ|, |d₁ − Δ|)
     /// ```
     ///
     /// has its interior minima `s*` checked; where `p(s*) ≤ 0` the step is
     /// redone to `τ = s* h` and its true gaps tested. A graze shallower
     /// than the interpolant's error (`O(h⁴)` of the gap's fourth
-    /// derivative) can pass unseen.
+    /// derivative) can pass unseen. The rates are computed only where the
+    /// bound above, with `|dₖ| ≤ h (|ż_G| + |L| ‖I⁻¹‖∞ |ρᵢ|)`, cannot
+    /// exclude a dip.
     pub(super) fn touchdown_bound(
         &self,
         start: &GroundTopState,
         next: &GroundTopState,
+        time: f64,
         h: f64,
         redo: impl Fn(f64) -> GroundTopState,
-    ) -> Option<f64> {
-        if !self.others_clear(next) {
-            return Some(h);
+    ) -> Result<Option<f64>, DynamicsError> {
+        let n = self.other_count;
+        let begin = self.other_gaps(start);
+        if begin.0[..n].iter().any(|&g| g.is_nan() || g <= 0.0) {
+            return Err(self.touchdown_at(start, time));
         }
+        let end = self.other_gaps(next);
+        if end.0[..n].iter().any(|&g| g.is_nan() || g <= 0.0) {
+            return Ok(Some(h));
+        }
+        let inverse = self.inverse_inertia_body;
+        let row_sums =
+            (inverse.x_axis.abs() + inverse.y_axis.abs() + inverse.z_axis.abs()).max_element();
+        let omega_max = start.l_world.length().max(next.l_world.length()) * row_sums;
+        let vz_max = start
+            .velocity_world
+            .z
+            .abs()
+            .max(next.velocity_world.z.abs());
+        let mut rates: Option<([f64; MAX_OTHER_CONTACTS], [f64; MAX_OTHER_CONTACTS])> = None;
         let mut first: Option<f64> = None;
-        for i in 0..self.other_count {
-            let ends = [start, next].map(|s| {
-                (
-                    self.other_gap(s, i).unwrap_or(f64::NAN),
-                    self.other_gap_rate(s, i).unwrap_or(f64::NAN) * h,
-                )
-            });
-            let Some(s_min) = hermite_dip(ends[0], ends[1]) else {
+        for i in 0..n {
+            let (g0, g1) = (begin.0[i], end.0[i]);
+            let d_max = h * (vz_max + omega_max * begin.1[i].max(end.1[i]));
+            if g0.min(g1) > 0.25 * (d_max + (g1 - g0).abs()) {
+                continue;
+            }
+            let (r0, r1) = *rates
+                .get_or_insert_with(|| (self.other_gap_rates(start), self.other_gap_rates(next)));
+            let Some(s_min) = hermite_dip((g0, r0[i] * h), (g1, r1[i] * h)) else {
                 continue;
             };
             let tau = s_min * h;
@@ -192,7 +215,35 @@ impl GroundTop {
                 first = Some(tau);
             }
         }
-        first
+        Ok(first)
+    }
+
+    /// The gaps of every further contact and the lengths `|ρᵢ|` of their
+    /// lowest points from the centre of mass (unused slots zero).
+    fn other_gaps(
+        &self,
+        state: &GroundTopState,
+    ) -> ([f64; MAX_OTHER_CONTACTS], [f64; MAX_OTHER_CONTACTS]) {
+        let q = state.world_from_body.normalize();
+        let mut out = ([0.0; MAX_OTHER_CONTACTS], [0.0; MAX_OTHER_CONTACTS]);
+        for (i, shape) in self.other_contacts().iter().enumerate() {
+            let rho = lowest_offset(shape, q);
+            out.0[i] = state.com_world.z + rho.z;
+            out.1[i] = rho.length();
+        }
+        out
+    }
+
+    /// The gap rates of every further contact ([`GroundTop::other_gap_rate`];
+    /// unused slots zero), `ω` computed once.
+    fn other_gap_rates(&self, state: &GroundTopState) -> [f64; MAX_OTHER_CONTACTS] {
+        let q = state.world_from_body.normalize();
+        let omega = self.omega_world(state);
+        let mut out = [0.0; MAX_OTHER_CONTACTS];
+        for (slot, shape) in out.iter_mut().zip(self.other_contacts()) {
+            *slot = state.velocity_world.z + omega.cross(lowest_offset(shape, q)).z;
+        }
+        out
     }
 }
 
