@@ -571,3 +571,94 @@ fn tossed_top_lands_on_the_first_shape_to_reach_the_plane() {
         );
     }
 }
+
+/// One step that holds both a lift-off and a touchdown reports the earlier
+/// one. The rocking body of `tests/contact_sphere.rs` (ball R = 4 cm at
+/// 5 cm below the centre of mass, swinging up from θ = −0.5 fast enough
+/// to lift off at θ_L, by hand) with a knob at (0, −3 cm, 0) body whose
+/// radius puts its touchdown at θ_L ∓ 0.02 (the knob's gap
+/// `R + a cos θ − D sin θ − r_k`): one RK4 step of 10 ms spans both
+/// (lift-off at 7.1 ms); each instant is located along the same step.
+#[test]
+fn lift_off_and_touchdown_in_one_step_report_the_earlier() {
+    let (m, i, a, r0, theta_s, d) = (1.0, 1e-3, 0.05, 0.04, -0.5f64, 0.03);
+    let e = 0.5 * i * 1.1 * G / a + m * G * a;
+    let rate2 = |th: f64| 2.0 * (e - m * G * a * th.cos()) / (i + m * a * a * th.sin().powi(2));
+    let normal_force = |th: f64| {
+        let (s, c) = th.sin_cos();
+        let den = i + m * a * a * s * s;
+        let acc = m * a * s * (G - a * c * rate2(th)) / den;
+        m * (G - a * (c * rate2(th) + s * acc))
+    };
+    let (theta_lift, t_lift) = common::contact::lift_off_by_hand(theta_s, 0.0, normal_force, rate2);
+    let ball = SphereContact::try_new(r0, DVec3::new(0.0, 0.0, -a)).unwrap();
+    let plain = GroundTop::try_new(
+        m,
+        DMat3::from_diagonal(DVec3::splat(i)),
+        ball,
+        Friction::None,
+        G,
+    )
+    .unwrap();
+    let q = DQuat::from_rotation_x(theta_s);
+    for offset in [-0.02, 0.02] {
+        let theta_k = theta_lift + offset;
+        let r_k = r0 + a * theta_k.cos() - d * theta_k.sin();
+        let knob = SphereContact::try_new(r_k, DVec3::new(0.0, -d, 0.0)).unwrap();
+        let top = plain
+            .try_with_other_contacts(&[ContactShape::Sphere(knob)])
+            .unwrap();
+        let knob_gap = |th: f64| r0 + a * th.cos() - d * th.sin() - r_k;
+        let (_, t_knob) =
+            common::contact::lift_off_by_hand(theta_s, theta_lift + 0.1, knob_gap, rate2);
+        let mut s = top
+            .try_state_on_ground(q, DVec3::new(rate2(theta_s).sqrt(), 0.0, 0.0), DVec2::ZERO)
+            .unwrap();
+        // Measured: 3.6e-6 (touchdown) and 9.3e-6 (lift-off) relative to the
+        // hand times: the RK4 continuation's own error over up to 8.5 ms.
+        let err = top.try_step(&mut s, 0.0, 1e-2).unwrap_err();
+        eprintln!("knob at θ_L {offset:+}: {err} (lift-off by hand {t_lift} s, knob {t_knob} s)");
+        if offset < 0.0 {
+            assert!(t_knob < t_lift);
+            let (time, contact, _) = touchdown(Err::<(), _>(err));
+            assert_eq!(contact, 0);
+            assert!((time - t_knob).abs() < 1e-5 * t_knob, "{time} vs {t_knob}");
+            let gap = top.other_gap(&s, 0).unwrap();
+            assert!(gap <= 0.0 && gap > -1e-15, "{gap:e}");
+        } else {
+            assert!(t_knob > t_lift);
+            let DynamicsError::ContactLost { time, normal_force } = err else {
+                panic!("{err}")
+            };
+            assert!((time - t_lift).abs() < 1e-5 * t_lift, "{time} vs {t_lift}");
+            assert!(normal_force.abs() < 1e-6, "N = {normal_force}");
+            assert!(top.other_gap(&s, 0).unwrap() > 0.0);
+        }
+    }
+}
+
+/// A disk rim as a further contact: its gap is the height of its lowest
+/// rim point, and lying flat (no single lowest point) the height of the
+/// whole rim, by hand.
+#[test]
+fn a_disk_rim_as_a_further_contact_has_its_gap_by_hand() {
+    use kreisel::dynamics::DiskContact;
+    let (rim_r, c) = (0.01, 0.02);
+    let rim = DiskContact::try_new(rim_r, DVec3::new(0.0, 0.0, c), DVec3::Z).unwrap();
+    let (top, _) = leine_glocker(Friction::None);
+    let top = top
+        .try_with_other_contacts(&[ContactShape::Disk(rim)])
+        .unwrap();
+    for tilt in [0.0f64, 0.3] {
+        let q = DQuat::from_rotation_x(tilt);
+        let s = top
+            .try_state_on_ground(q, DVec3::new(1.0, 0.0, 0.0), DVec2::ZERO)
+            .unwrap();
+        let hand = s.com_world.z + c * tilt.cos() - rim_r * tilt.sin();
+        let gap = top.other_gap(&s, 0).unwrap();
+        // A few ulps of 3 cm.
+        assert!((gap - hand).abs() < 1e-16, "{tilt}: {gap} vs {hand}");
+        let rate = top.other_gap_rate(&s, 0).unwrap();
+        assert!(rate.is_finite(), "{rate}");
+    }
+}
