@@ -153,8 +153,8 @@ impl GroundTop {
     /// trial.next`) or returns the error [`GroundTop::try_step`] documents,
     /// leaving `state` as it says. `redo(s, τ)` is the same method's step
     /// of `τ ≤ h` from `s` (the step's start), for locating a lift-off or
-    /// a touchdown. Without further contacts the checks cost nothing more
-    /// than before they existed (one comparison).
+    /// a touchdown. Without further contacts the common path adds one
+    /// comparison; the touchdown checks live in `settle_events`.
     pub(super) fn settle(
         &self,
         state: &mut GroundTopState,
@@ -253,7 +253,11 @@ impl GroundTop {
                 *state = at;
                 Err(self.touchdown_at(&at, time + tau))
             }
-            (None, None) => unreachable!("a lift-off or a touchdown was found"),
+            // Not reached (`lost` or `touch_by` holds here): the step stands.
+            (None, None) => {
+                *state = next;
+                Ok(())
+            }
         }
     }
 
