@@ -21,8 +21,10 @@
 //! Leine & Glocker report the inversion at 2.7 s); the demo only observes.
 //! It prints the setup, then `inverted at t = X s` — the first time the
 //! symmetry axis passes the horizontal going down, located inside its RK4
-//! step by bisection on the step size — when the stem's ball would reach
-//! the floor (that contact is not modelled), the end state against the
+//! step by bisection on the step size — when the stem's ball reaches the
+//! floor (the library's touchdown event, `DynamicsError::ContactTouchdown`,
+//! located by bisection on the step; the stem's contact is not modelled,
+//! the demo goes on with the ball alone), the end state against the
 //! spin a full inversion ends with (from λ), and the energy and λ budgets.
 //!
 //! `--plot` charts θ(t), E(t)/E₀ and the relative change of λ (PNG or SVG

@@ -1,10 +1,13 @@
 //! The tippe top of Leine & Glocker (2003) on the library's
-//! [`GroundTop`], stepped by its RK4 with lift-off reported, and what the
-//! demo observes along the way: the tilt θ, the energy, Jellett's λ, the
-//! inversion instant and the instant the stem's ball would touch the floor.
+//! [`GroundTop`], stepped by its RK4 with lift-off and the stem ball's
+//! touchdown reported, and what the demo observes along the way: the tilt
+//! θ, the energy, Jellett's λ, the inversion instant and the instant the
+//! stem's ball reaches the floor.
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
-use kreisel::dynamics::{DynamicsError, Friction, GroundTop, GroundTopState, SphereContact};
+use kreisel::dynamics::{
+    ContactShape, DynamicsError, Friction, GroundTop, GroundTopState, SphereContact,
+};
 
 /// Mass, kg (Leine & Glocker, Eur. J. Mech. A/Solids 22 (2003) 193).
 pub const MASS: f64 = 0.006;
@@ -16,7 +19,8 @@ pub const I3: f64 = 7e-7;
 pub const BALL_RADIUS: f64 = 0.015;
 /// Distance from the centre of mass to the ball's centre, towards the stem, m.
 pub const BALL_OFFSET: f64 = 0.003;
-/// Radius of the stem's ball, m (drawn; its contact is not modelled).
+/// Radius of the stem's ball, m (drawn, and watched for touchdown: its
+/// contact force is not modelled).
 pub const STEM_RADIUS: f64 = 0.005;
 /// Distance from the centre of mass to the stem ball's centre, m.
 pub const STEM_OFFSET: f64 = 0.016;
@@ -32,14 +36,17 @@ const BISECTIONS: usize = 50;
 
 /// Leine & Glocker's top with `friction`, tilted by θ₀ about x, spinning
 /// at ω₀ about its axis, touching the floor: centre of mass at rest, or,
-/// rolling, moving so that the contact point is at rest.
+/// rolling, moving so that the contact point is at rest. The stem's ball
+/// is watched for touchdown ([`GroundTop::try_with_other_contacts`]).
 ///
 /// # Errors
 /// [`DynamicsError::InvalidContact`] for bad friction parameters.
 pub fn leine_glocker(friction: Friction) -> Result<(GroundTop, GroundTopState), DynamicsError> {
     let ball = SphereContact::try_new(BALL_RADIUS, DVec3::new(0.0, 0.0, BALL_OFFSET))?;
+    let stem = SphereContact::try_new(STEM_RADIUS, DVec3::new(0.0, 0.0, STEM_OFFSET))?;
     let inertia = DMat3::from_diagonal(DVec3::new(I1, I1, I3));
-    let top = GroundTop::try_new(MASS, inertia, ball, friction, GRAVITY)?;
+    let top = GroundTop::try_new(MASS, inertia, ball, friction, GRAVITY)?
+        .try_with_other_contacts(&[ContactShape::Sphere(stem)])?;
     let q = DQuat::from_rotation_x(THETA0);
     let omega = q * DVec3::new(0.0, 0.0, SPIN0);
     let start = match friction {
@@ -64,7 +71,8 @@ pub fn tilt(state: &GroundTopState) -> f64 {
 pub struct Events {
     /// The first time the axis passed the horizontal going down, s.
     pub inverted_at: Option<f64>,
-    /// The first time the stem's ball reached the floor and the tilt then, s and rad.
+    /// The time the stem's ball reached the floor (the library's
+    /// [`DynamicsError::ContactTouchdown`]) and the tilt then, s and rad.
     pub stem_touch: Option<(f64, f64)>,
     /// When the ball left the floor (the run stops there), s.
     pub lift_off: Option<f64>,
@@ -74,8 +82,11 @@ pub struct Events {
 /// the invariants.
 #[derive(Debug, Clone)]
 pub struct Simulation {
-    /// The top.
+    /// The top, watching its stem's ball.
     pub top: GroundTop,
+    /// The same top on its ball alone, stepped once the stem has touched
+    /// down (the demo goes on without modelling the stem's contact).
+    pub ball_only: GroundTop,
     /// The current state.
     pub state: GroundTopState,
     /// The current time, s.
@@ -93,7 +104,6 @@ pub struct Simulation {
     /// The largest one-step rise of the energy so far, relative to E₀
     /// (negative: it fell in every step).
     pub energy_rise: f64,
-    stem: SphereContact,
     steps: u64,
 }
 
@@ -101,11 +111,11 @@ impl Simulation {
     /// A run of `top` from `start` at t = 0 in steps of `dt`.
     ///
     /// # Errors
-    /// [`DynamicsError::InvalidContact`] never in practice (the stem's
-    /// sphere is a constant).
+    /// None in practice (an empty list of further contacts is accepted).
     pub fn new(top: GroundTop, start: GroundTopState, dt: f64) -> Result<Self, DynamicsError> {
         Ok(Self {
             top,
+            ball_only: top.try_with_other_contacts(&[])?,
             state: start,
             time: 0.0,
             dt,
@@ -114,7 +124,6 @@ impl Simulation {
             jellett0: top.jellett(&start),
             jellett_drift: 0.0,
             energy_rise: f64::NEG_INFINITY,
-            stem: SphereContact::try_new(STEM_RADIUS, DVec3::new(0.0, 0.0, STEM_OFFSET))?,
             steps: 0,
         })
     }
@@ -129,21 +138,41 @@ impl Simulation {
         (self.top.jellett(&self.state) - self.jellett0) / self.jellett0.abs()
     }
 
+    /// The top being stepped: watching the stem until it touches down,
+    /// the ball alone after.
+    fn active(&self) -> &GroundTop {
+        if self.events.stem_touch.is_none() {
+            &self.top
+        } else {
+            &self.ball_only
+        }
+    }
+
     /// One RK4 step of `dt` (nothing after a lift-off). The inversion is
     /// located inside the step by bisection on the step size: the RK4 step
     /// of size τ from the step's start (the method's own continuation) is
-    /// bisected for the sign change of the axis' height.
+    /// bisected for the sign change of the axis' height. When the library
+    /// reports the stem's touchdown, its time and the tilt there are
+    /// recorded and the step is taken again from its start on the ball
+    /// alone (the same RK4 step: the trajectory is the ball-only one).
     ///
     /// # Errors
     /// The library's errors other than a lift-off (which is recorded in
-    /// [`Events::lift_off`] and stops the run).
+    /// [`Events::lift_off`] and stops the run) and the stem's touchdown.
     pub fn step(&mut self) -> Result<(), DynamicsError> {
         if self.stopped() {
             return Ok(());
         }
         let before = self.state;
         let (t0, e_before) = (self.time, self.top.energy(&before));
-        match self.top.try_step(&mut self.state, t0, self.dt) {
+        let top = *self.active();
+        let mut result = top.try_step(&mut self.state, t0, self.dt);
+        if let Err(DynamicsError::ContactTouchdown { time, .. }) = result {
+            self.events.stem_touch = Some((time, tilt(&self.state)));
+            self.state = before;
+            result = self.ball_only.try_step(&mut self.state, t0, self.dt);
+        }
+        match result {
             Ok(()) => {}
             Err(DynamicsError::ContactLost { time, .. }) => {
                 self.events.lift_off = Some(time);
@@ -160,14 +189,6 @@ impl Simulation {
         {
             self.events.inverted_at = Some(t0 + self.crossing_in(&before, t0)?);
         }
-        if self.events.stem_touch.is_none()
-            && self
-                .stem
-                .gap(self.state.com_world, self.state.world_from_body)
-                <= 0.0
-        {
-            self.events.stem_touch = Some((self.time, tilt(&self.state)));
-        }
         Ok(())
     }
 
@@ -178,7 +199,7 @@ impl Simulation {
         for _ in 0..BISECTIONS {
             let mid = 0.5 * (lo + hi);
             let mut s = *before;
-            self.top.try_step(&mut s, t0, mid)?;
+            self.ball_only.try_step(&mut s, t0, mid)?;
             if axis(&s).z > 0.0 {
                 lo = mid;
             } else {

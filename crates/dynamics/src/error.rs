@@ -179,6 +179,37 @@ pub enum DynamicsError {
         /// when the step could not be taken).
         normal_force: f64,
     },
+    /// A further contact shape of a ground body
+    /// ([`crate::GroundTop::try_with_other_contacts`]) reached the plane:
+    /// a second contact begins (an impact, then two contacts), which the
+    /// contact model does not follow. The instant is located inside the
+    /// step and the state left there (the shape's gap ≈ 0).
+    #[error(
+        "further contact #{contact} touches down at t = {time} s \
+         (approach speed {approach_speed:e} m/s)"
+    )]
+    ContactTouchdown {
+        /// The touchdown time, s.
+        time: f64,
+        /// Which shape: its index in [`crate::GroundTop::other_contacts`].
+        contact: usize,
+        /// The speed of its lowest point towards the plane there, m/s:
+        /// `−ġ`, minus the gap's rate (≥ 0 when located; ≈ 0 for a graze).
+        approach_speed: f64,
+    },
+    /// A state whose further contact shape
+    /// ([`crate::GroundTop::try_with_other_contacts`]) is at or below the
+    /// plane: only the main shape may touch.
+    #[error(
+        "further contact #{contact} is at or below the plane (gap {gap:e} m): \
+         only the main contact may touch"
+    )]
+    OtherContactTouching {
+        /// Which shape: its index in [`crate::GroundTop::other_contacts`].
+        contact: usize,
+        /// Its gap, the height of its lowest point, m (≤ 0).
+        gap: f64,
+    },
     /// A disk rim reached (or stepped through) lying flat: the contact
     /// point would jump across the rim (its far side touches down, an
     /// impact the contact model does not follow), or one step turned the

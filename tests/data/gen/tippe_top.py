@@ -5,7 +5,8 @@ Regenerate (from the repository root; scipy, numpy; about 4 minutes):
     python3 tests/data/gen/tippe_top.py
 
 Writes ../contact/tippe_top_SCENARIO.csv (relative to this script) for each
-scenario and prints the checks.
+scenario and ../contact/tippe_top_touchdown.csv (below), and prints the
+checks. `--touchdown` writes the touchdown file only.
 
 Physics (written from Newton-Euler in BODY axes, not from kreisel's
 world-axes closed form for N)
@@ -31,10 +32,23 @@ world-axes closed form for N)
   one `inverted` row (its t, the state there). Checks printed: the same
   run at rtol 1e-11 (the inversion time's change), Jellett's integral
   lambda = L . (R z - R(q) c) and the energy drift.
+
+The stem's ball touching down (../contact/tippe_top_touchdown.csv)
+------------------------------------------------------------------------
+* Leine & Glocker's top has a second sphere on its stem: radius
+  STEM_RAD = 5 mm centred at STEM_C = (0, 0, 16 mm) (body axes, from the
+  centre of mass). Its gap to the plane, z_G + [R(q) STEM_C]_z - STEM_RAD,
+  is a terminal event (direction -1) of the same equations (the ball's
+  contact only) run until it reaches zero: one row per scenario of
+  TOUCHDOWN with the time (rtol 1e-13), the same run's time at rtol 1e-11
+  (`t_rtol_1e-11`, the reference's own error), the stem ball's approach
+  speed -d(gap)/dt = -(v_z + [R(q) (w x STEM_C)]_z) there, and the state.
+  Separate runs: the `sample`/`inverted` files above are not changed.
 """
 
 import csv
 import os
+import sys
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -45,9 +59,18 @@ INERTIA = np.diag([I1, I1, I3])
 C = np.array([0.0, 0.0, A])
 Z = np.array([0.0, 0.0, 1.0])
 
+STEM_RAD = 0.005
+STEM_C = np.array([0.0, 0.0, 0.016])
+
 SCENARIOS = {
     "viscous": dict(kind="viscous", mu=0.3, duration=6.0),
     "sliding": dict(kind="sliding", mu=0.3, eps=1e-3, duration=3.0),
+}
+
+
+TOUCHDOWN = {
+    "viscous": dict(kind="viscous", mu=0.3, duration=20.0),
+    "sliding": dict(kind="sliding", mu=0.3, eps=1e-3, duration=10.0),
 }
 
 
@@ -144,6 +167,57 @@ def solve(sc, rtol):
     )
 
 
+def stem_gap(_t, y):
+    return y[9] + (rot(y[0:4]) @ STEM_C)[2] - STEM_RAD
+
+
+stem_gap.terminal = True
+stem_gap.direction = -1.0
+
+
+def stem_approach_speed(y):
+    q, w, v = y[0:4], y[4:7], y[10:13]
+    return -(v[2] + (rot(q) @ np.cross(w, STEM_C))[2])
+
+
+def solve_touchdown(sc, rtol):
+    atol = np.array([1e-16] * 4 + [1e-13] * 3 + [1e-18] * 6)
+    return solve_ivp(
+        rhs(sc),
+        (0.0, sc["duration"]),
+        initial(),
+        method="DOP853",
+        events=stem_gap,
+        rtol=rtol,
+        atol=atol,
+        dense_output=False,
+    )
+
+
+def touchdowns(out):
+    path = os.path.join(out, "tippe_top_touchdown.csv")
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(
+            ["scenario", "t", "t_rtol_1e-11", "approach_speed"]
+            + ["x", "y", "z", "vx", "vy", "vz", "qw", "qx", "qy", "qz", "lx", "ly", "lz"]
+        )
+        for name, sc in TOUCHDOWN.items():
+            fine = solve_touchdown(sc, 1e-13)
+            coarse = solve_touchdown(sc, 1e-11)
+            t, y = fine.t_events[0][0], fine.y_events[0][0]
+            t_coarse = coarse.t_events[0][0]
+            speed = stem_approach_speed(y)
+            tilt = np.degrees(np.arccos(np.clip(rot(y[0:4])[2, 2], -1.0, 1.0)))
+            print(
+                f"{name}: stem touches down at {float(t)!r} s (rtol 1e-11: {float(t_coarse)!r}); "
+                f"tilt {tilt:.3f} deg, approach speed {speed:.6e} m/s, gap there {stem_gap(t, y):.1e} m; "
+                f"{fine.nfev} evaluations"
+            )
+            lab = row(name, t, y)
+            w.writerow(lab[:2] + [repr(float(t_coarse)), repr(float(speed))] + lab[2:])
+
+
 def invariants(y):
     q, w, x, v = y[0:4], y[4:7], y[7:10], y[10:13]
     r = rot(q)
@@ -182,7 +256,11 @@ def main():
             for t, y in zip(fine.t, fine.y.T):
                 w.writerow(row("sample", t, y))
             w.writerow(row("inverted", t_inv, fine.y_events[0][0]))
+    touchdowns(out)
 
 
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:] == ["--touchdown"]:
+        touchdowns(os.path.join(os.path.dirname(__file__), "..", "contact"))
+    else:
+        main()

@@ -262,8 +262,9 @@ impl GroundTop {
     /// II.4, "starting step size"). A step whose inner stage sees `N ≤ 0`
     /// while `N > 0` at its end is rejected and halved (a step too large
     /// for the contact), not reported. The contact checks after an
-    /// accepted step are those of [`GroundTop::try_step`] (lift-off located
-    /// by bisection on this method's step, Painlevé, a disk lying flat);
+    /// accepted step are those of [`GroundTop::try_step`] (lift-off and the
+    /// touchdown of a further contact located by bisection on this method's
+    /// step, Painlevé, a disk lying flat);
     /// no renormalisation, no projection.
     ///
     /// # Errors
@@ -274,9 +275,10 @@ impl GroundTop {
     ///   last accepted step. A trial step that leaves a non-finite state is
     ///   rejected and shrunk like any other, so a field that blows up ends
     ///   here too.
-    /// - As [`GroundTop::try_step`] (`ContactLost` with its time,
-    ///   `DiskFlat`, `ContactIndeterminate`, `InvalidState`, `Diverged`),
-    ///   `state` left as that function says.
+    /// - As [`GroundTop::try_step`] (`ContactLost` and `ContactTouchdown`
+    ///   with their times, `DiskFlat`, `ContactIndeterminate`,
+    ///   `InvalidState`, `Diverged`), `state` left as that function says;
+    ///   the observer is not called for the step that ends in an error.
     ///
     /// ```
     /// use glam::{DMat3, DQuat, DVec2, DVec3};

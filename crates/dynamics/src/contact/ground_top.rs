@@ -4,7 +4,7 @@
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
-use super::{ContactShape, Friction, SphereContact};
+use super::{ContactShape, Friction, MAX_OTHER_CONTACTS, SphereContact};
 use crate::DynamicsError;
 
 /// A rigid body whose sphere (or disk rim, [`GroundTop::try_with_shape`])
@@ -37,10 +37,16 @@ use crate::DynamicsError;
 pub struct GroundTop {
     mass: f64,
     inertia_body: DMat3,
-    inverse_inertia_body: DMat3,
+    pub(super) inverse_inertia_body: DMat3,
     gravity: f64,
     shape: ContactShape,
     friction: Friction,
+    /// Further shapes watched for touchdown: the first `other_count`
+    /// (the other slots hold copies of `shape` and are never read; a fixed
+    /// array keeps the type `Copy`).
+    pub(super) others: [ContactShape; MAX_OTHER_CONTACTS],
+    /// How many of `others` are in use.
+    pub(super) other_count: usize,
 }
 
 /// The state of a [`GroundTop`]: centre of mass, its velocity, attitude
@@ -208,6 +214,8 @@ impl GroundTop {
             gravity,
             shape,
             friction,
+            others: [shape; MAX_OTHER_CONTACTS],
+            other_count: 0,
         })
     }
 
@@ -264,7 +272,9 @@ impl GroundTop {
     /// # Errors
     /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude, a
     /// non-finite velocity, a disk lying flat, or, with
-    /// [`Friction::Rolling`], a slip `|v_P|` above `1e-12 (|v_G| + |ω| |ρ|)`.
+    /// [`Friction::Rolling`], a slip `|v_P|` above `1e-12 (|v_G| + |ω| |ρ|)`;
+    /// [`DynamicsError::OtherContactTouching`] when one of the
+    /// [`GroundTop::other_contacts`] is at or below the plane.
     ///
     /// ```
     /// use glam::{DMat3, DQuat, DVec2, DVec3};
@@ -306,6 +316,7 @@ impl GroundTop {
             world_from_body: q,
             l_world: a * self.inertia_body * a.transpose() * omega_world,
         };
+        self.check_others_clear(&state)?;
         if self.friction == Friction::Rolling {
             let scale = state.velocity_world.length() + omega_world.length() * rho.length();
             if self.slip_velocity(&state).length() > 1e-12 * scale {
@@ -332,7 +343,9 @@ impl GroundTop {
     ///
     /// # Errors
     /// [`DynamicsError::InvalidState`] for a non-finite or zero attitude, a
-    /// non-finite angular velocity or a disk lying flat.
+    /// non-finite angular velocity or a disk lying flat;
+    /// [`DynamicsError::OtherContactTouching`] as for
+    /// [`GroundTop::try_state_on_ground`].
     ///
     /// ```
     /// use glam::{DMat3, DQuat, DVec3};

@@ -16,6 +16,10 @@
 //! - [`GroundTop`], [`GroundTopState`]: the equations of motion, energy,
 //!   Jellett's integral, the normal force; a fixed-step RK4 with lift-off
 //!   located and reported ([`GroundTop::try_step`]);
+//! - [`GroundTop::try_with_other_contacts`]: further shapes (a stem's
+//!   ball) watched for touchdown, reported with its time;
+//! - [`GroundTop::try_fly`]: after a lift-off, the exact ballistic flight
+//!   until a shape lands ([`Landing`], with its time);
 //! - [`GroundTop::try_advance_adaptive`]: Dormand–Prince 5(4) with
 //!   step-size control to an [`AdaptiveTolerance`], the same contact
 //!   checks, statistics in [`AdaptiveStats`].
@@ -133,6 +137,35 @@
 //! rolling without slipping reverses its spin while conserving energy
 //! (`tests/contact_rattleback.rs`); λ is not conserved.
 //!
+//! # Further contacts: touchdown, reported
+//! A body may carry further body-fixed shapes that do not touch at the
+//! start ([`GroundTop::try_with_other_contacts`], at most
+//! [`MAX_OTHER_CONTACTS`]) — the stem's ball of Leine & Glocker's tippe
+//! top, which reaches the table near θ = 140°. They exert no force: the
+//! equations above are those of the main shape's contact alone. Each
+//! further shape's gap, the height of its lowest point, and its rate
+//!
+//! ```text
+//! gᵢ = z_G + (ρᵢ)_z,   ġᵢ = ż_G + (ω × ρᵢ)_z     (sphere: ρᵢ = A cᵢ − Rᵢ ẑ)
+//! ```
+//!
+//! are checked after every step: where a gap is not positive at the
+//! step's end — or the cubic Hermite interpolant of `gᵢ` over the step
+//! dips below zero and the redone step confirms it (a graze) — the
+//! instant is located by bisection on the step size, the state left there
+//! (`gᵢ ≈ 0`), and [`crate::DynamicsError::ContactTouchdown`] reports the
+//! time, which shape and its approach speed `−ġᵢ`. The model does not
+//! handle the impact nor the two-contact motion after it: it stops and
+//! reports, as for a lift-off. A start state with a further shape at or
+//! below the plane is [`crate::DynamicsError::OtherContactTouching`].
+//!
+//! After a lift-off the body may be carried on in free flight by
+//! [`GroundTop::try_fly`]: no contact force, the centre of mass on its
+//! parabola and the rotation the exact torque-free motion
+//! ([`crate::ExactSolution`]), until the main shape or a further one
+//! reaches the plane ([`Landing`], its time located by bisection on the
+//! exact flight). The impact is not modelled there either.
+//!
 //! # What is conserved
 //! The energy `E = ½ m |v_G|² + ½ L·ω + m g z_G` changes by the power of the
 //! contact force at the contact point's velocity:
@@ -187,15 +220,19 @@ mod adaptive;
 mod contact_shape;
 mod disk_contact;
 mod ellipsoid_contact;
+mod flight;
 mod friction;
 mod ground_top;
 mod rk4;
 mod sphere_contact;
+mod touchdown;
 
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub use self::contact_shape::ContactShape;
 pub use self::disk_contact::DiskContact;
 pub use self::ellipsoid_contact::EllipsoidContact;
+pub use self::flight::Landing;
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;
+pub use self::touchdown::MAX_OTHER_CONTACTS;

@@ -9,7 +9,8 @@ use crate::{Divergence, DynamicsError};
 /// The method's name in [`DynamicsError::Diverged`].
 const METHOD: &str = "ground-top rk4";
 
-/// Bisection steps that locate a lift-off inside a step (2⁻⁶⁰ of it).
+/// Bisection steps that locate a lift-off or a touchdown inside a step
+/// (2⁻⁶⁰ of it).
 const BISECTIONS: usize = 60;
 
 /// `Σ wᵢ kᵢ` over Runge–Kutta stages (the normal force and compliance
@@ -99,6 +100,15 @@ impl GroundTop {
     ///   instant is located by bisection on the step size, and `state` is
     ///   left there (`N ≈ 0`); when only an inner stage saw `N ≤ 0`, the
     ///   step is not taken and the time is the step's start.
+    /// - [`DynamicsError::ContactTouchdown`] when one of the
+    ///   [`GroundTop::other_contacts`] reaches the plane inside the step
+    ///   (its gap's sign at the step's end, or a graze found from the gap's
+    ///   values and rates at both ends: [`GroundTop::try_with_other_contacts`]).
+    ///   The instant is located by bisection on the step size and `state`
+    ///   is left there (the gap ≈ 0, not positive); the earlier of a
+    ///   lift-off and a touchdown in the same step is reported. A `state`
+    ///   that already has a further contact at or below the plane gives it
+    ///   at `time`, the step not taken.
     /// - [`DynamicsError::DiskFlat`] when a disk rim's contact point, in
     ///   body axes, turns by more than 90° in the step (the disk passed
     ///   through lying flat, where its far side touches down, or the step
@@ -142,7 +152,9 @@ impl GroundTop {
     /// shared by every ground-top integrator: takes the step (`*state =
     /// trial.next`) or returns the error [`GroundTop::try_step`] documents,
     /// leaving `state` as it says. `redo(s, τ)` is the same method's step
-    /// of `τ ≤ h` from `s` (the step's start), for locating a lift-off.
+    /// of `τ ≤ h` from `s` (the step's start), for locating a lift-off or
+    /// a touchdown. Without further contacts the common path adds one
+    /// comparison; the touchdown checks live in `settle_events`.
     pub(super) fn settle(
         &self,
         state: &mut GroundTopState,
@@ -179,33 +191,90 @@ impl GroundTop {
                 return Err(DynamicsError::DiskFlat { time });
             }
         }
-        if end.normal_force <= 0.0 {
-            let start = *state;
-            let (tau, at) = self.lift_off_in(h, |tau| redo(&start, tau));
-            *state = at;
-            return Err(DynamicsError::ContactLost {
-                time: time + tau,
-                normal_force: self.rates(&at).normal_force,
-            });
-        }
-        if normal_min <= 0.0 {
+        if end.normal_force > 0.0 && normal_min <= 0.0 {
             return Err(DynamicsError::ContactLost {
                 time,
                 normal_force: normal_min,
             });
         }
-        *state = next;
-        Ok(())
+        if end.normal_force > 0.0 && self.other_count == 0 {
+            *state = next;
+            return Ok(());
+        }
+        self.settle_events(state, time, h, next, end.normal_force <= 0.0, redo)
     }
 
-    /// The instant `τ ∈ (0, h]` where `N` along the step `redo(τ)` reaches
-    /// zero (bisection; `N > 0` at the start, `≤ 0` at `h`), and the state
-    /// there.
-    fn lift_off_in(&self, h: f64, redo: impl Fn(f64) -> GroundTopState) -> (f64, GroundTopState) {
+    /// The rest of [`GroundTop::settle`] where a lift-off is found at the
+    /// step's end (`lost`) or further contacts are watched: takes the step,
+    /// or locates the earlier of the lift-off and a touchdown and leaves
+    /// `state` there (kept out of the common path, which it would slow).
+    #[inline(never)]
+    fn settle_events(
+        &self,
+        state: &mut GroundTopState,
+        time: f64,
+        h: f64,
+        next: GroundTopState,
+        lost: bool,
+        redo: impl Fn(&GroundTopState, f64) -> GroundTopState,
+    ) -> Result<(), DynamicsError> {
+        let start = *state;
+        let touch_by = if self.other_count == 0 {
+            None
+        } else {
+            self.touchdown_bound(&start, &next, time, h, |tau| redo(&start, tau))?
+        };
+        if !lost && touch_by.is_none() {
+            *state = next;
+            return Ok(());
+        }
+        let lift = lost.then(|| {
+            self.crossing_in(
+                h,
+                |tau| redo(&start, tau),
+                |s| self.rates(s).normal_force > 0.0,
+            )
+        });
+        let touch = touch_by
+            .map(|hi| self.crossing_in(hi, |tau| redo(&start, tau), |s| self.others_clear(s)));
+        match (lift, touch) {
+            (Some((t_lift, _)), Some((tau, at))) if tau < t_lift => {
+                *state = at;
+                Err(self.touchdown_at(&at, time + tau))
+            }
+            (Some((tau, at)), _) => {
+                *state = at;
+                Err(DynamicsError::ContactLost {
+                    time: time + tau,
+                    normal_force: self.rates(&at).normal_force,
+                })
+            }
+            (None, Some((tau, at))) => {
+                *state = at;
+                Err(self.touchdown_at(&at, time + tau))
+            }
+            // Not reached (`lost` or `touch_by` holds here): the step stands.
+            (None, None) => {
+                *state = next;
+                Ok(())
+            }
+        }
+    }
+
+    /// The instant `τ ∈ (0, h]` where `holds` first fails along the step
+    /// `redo(τ)` (bisection; it holds at the start, fails at `h`), and the
+    /// state there: the lift-off (`N > 0`) or a touchdown (every further
+    /// gap positive).
+    fn crossing_in(
+        &self,
+        h: f64,
+        redo: impl Fn(f64) -> GroundTopState,
+        holds: impl Fn(&GroundTopState) -> bool,
+    ) -> (f64, GroundTopState) {
         let (mut lo, mut hi) = (0.0, h);
         for _ in 0..BISECTIONS {
             let mid = 0.5 * (lo + hi);
-            if self.rates(&redo(mid)).normal_force > 0.0 {
+            if holds(&redo(mid)) {
                 lo = mid;
             } else {
                 hi = mid;
