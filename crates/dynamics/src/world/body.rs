@@ -4,7 +4,9 @@
 use glam::{DMat3, DQuat, DVec2, DVec3};
 use kreisel_inertia::MassProperties;
 
-use crate::{ContactShape, DynamicsError, Friction, Inputs, PrincipalState, RigidBody};
+use crate::{
+    ContactShape, DynamicsError, Friction, Inputs, MAX_OTHER_CONTACTS, PrincipalState, RigidBody,
+};
 
 /// How a body is held.
 ///
@@ -101,7 +103,27 @@ pub struct Body {
     world_from_body: DQuat,
     omega_body: DVec3,
     support: Support,
+    others: Option<OtherContacts>,
     inputs: Inputs,
+}
+
+/// Further contact shapes of a body on the ground, watched for touchdown
+/// ([`BodyBuilder::other_contacts`]); a fixed capacity keeps the builder
+/// `Copy`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct OtherContacts {
+    /// The first `given` (at most [`MAX_OTHER_CONTACTS`]) are the shapes.
+    shapes: [ContactShape; MAX_OTHER_CONTACTS],
+    /// How many were given (more than [`MAX_OTHER_CONTACTS`] is refused
+    /// by [`BodyBuilder::try_build`]).
+    given: usize,
+}
+
+impl OtherContacts {
+    /// The shapes kept (at most [`MAX_OTHER_CONTACTS`]).
+    fn shapes(&self) -> &[ContactShape] {
+        &self.shapes[..self.given.min(MAX_OTHER_CONTACTS)]
+    }
 }
 
 /// Where a body's inertia comes from.
@@ -126,6 +148,7 @@ pub struct BodyBuilder {
     world_from_body: DQuat,
     omega_body: DVec3,
     support: Support,
+    others: Option<OtherContacts>,
 }
 
 impl Body {
@@ -241,6 +264,19 @@ impl Body {
         self.support
     }
 
+    /// The further contact shapes of a body on the ground, watched for
+    /// touchdown ([`BodyBuilder::other_contacts`]; empty by default).
+    ///
+    /// ```
+    /// # use kreisel_dynamics::Body;
+    /// let b = Body::from_principal_moments(1.0, glam::DVec3::ONE).try_build()?;
+    /// assert!(b.other_contacts().is_empty());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn other_contacts(&self) -> &[ContactShape] {
+        self.others.as_ref().map_or(&[], OtherContacts::shapes)
+    }
+
     /// What is applied to the body (torques, forces, damping, a law).
     ///
     /// ```
@@ -311,6 +347,7 @@ impl BodyBuilder {
                 position: DVec3::ZERO,
                 velocity: DVec3::ZERO,
             },
+            others: None,
         }
     }
 
@@ -438,6 +475,50 @@ impl BodyBuilder {
         }
     }
 
+    /// A body on the ground ([`BodyBuilder::on_ground`]) with further
+    /// body-fixed contact shapes that do not touch the plane at the start
+    /// — the stem's ball of a tippe top — watched for touchdown (replacing
+    /// any given before; none by default). They exert no force: the body
+    /// moves on its one contact ([`crate::GroundTop::try_with_other_contacts`]).
+    ///
+    /// ```text
+    /// gᵢ = z_G + (ρᵢ)_z > 0 at the start;  gᵢ = 0 later: the world's failure,
+    /// DynamicsError::ContactTouchdown { time, contact: i, approach_speed: −ġᵢ }
+    /// ```
+    ///
+    /// The shapes are checked by [`BodyBuilder::try_build`] (at most
+    /// [`MAX_OTHER_CONTACTS`], only on the ground) and their gaps by
+    /// [`crate::World::add`] ([`DynamicsError::OtherContactTouching`]).
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::{Body, ContactShape, DynamicsError, Friction, SphereContact, World};
+    /// // Leine & Glocker's tippe top and its stem's ball (5 mm, 16 mm up the axis).
+    /// let ball = ContactShape::Sphere(SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003))?);
+    /// let stem = ContactShape::Sphere(SphereContact::try_new(0.005, DVec3::new(0.0, 0.0, 0.016))?);
+    /// let top = Body::from_principal_moments(0.006, DVec3::new(8e-7, 8e-7, 7e-7))
+    ///     .on_ground(ball, Friction::None)
+    ///     .other_contacts(&[stem]);
+    /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1e-4)?;
+    /// assert_eq!(world.add(top.try_build()?)?.index(), 0);
+    /// // Upside down the stem's ball would be in the table: refused.
+    /// let upside_down = top.world_from_body(DQuat::from_rotation_x(3.0)).try_build()?;
+    /// assert!(matches!(world.add(upside_down), Err(DynamicsError::OtherContactTouching { contact: 0, .. })));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn other_contacts(self, shapes: &[ContactShape]) -> Self {
+        let others = shapes.first().map(|&first| {
+            let mut kept = [first; MAX_OTHER_CONTACTS];
+            let n = shapes.len().min(MAX_OTHER_CONTACTS);
+            kept[..n].copy_from_slice(&shapes[..n]);
+            OtherContacts {
+                shapes: kept,
+                given: shapes.len(),
+            }
+        });
+        Self { others, ..self }
+    }
+
     /// Checks the settings and builds the body.
     ///
     /// # Errors
@@ -447,8 +528,11 @@ impl BodyBuilder {
     /// [`DynamicsError::InvalidState`] for an attitude that is zero or not
     /// finite, an angular velocity that is not finite or whose energy
     /// overflows; [`DynamicsError::InvalidBody`] for a support with
-    /// non-finite vectors; for a body on the ground the errors of
-    /// [`Friction::validate`].
+    /// non-finite vectors or further contact shapes
+    /// ([`BodyBuilder::other_contacts`]) on a body not on the ground;
+    /// [`DynamicsError::InvalidContact`] for more than
+    /// [`MAX_OTHER_CONTACTS`] of them; for a body on the ground the errors
+    /// of [`Friction::validate`].
     ///
     /// ```
     /// use glam::{DQuat, DVec3};
@@ -508,6 +592,21 @@ impl BodyBuilder {
                 friction.validate()?;
             }
         }
+        if let Some(others) = &self.others {
+            if !matches!(self.support, Support::Ground { .. }) {
+                return Err(DynamicsError::InvalidBody {
+                    field: "other_contacts",
+                    reason: "are only for a body on the ground (BodyBuilder::on_ground)",
+                });
+            }
+            if others.given > MAX_OTHER_CONTACTS {
+                return Err(DynamicsError::InvalidContact {
+                    parameter: "other_contacts",
+                    value: others.given as f64,
+                    reason: "too many further contact shapes (at most MAX_OTHER_CONTACTS = 4)",
+                });
+            }
+        }
         PrincipalState::try_from_omega_body(&rigid, self.world_from_body, self.omega_body)?;
         Ok(Body {
             mass_properties,
@@ -515,6 +614,7 @@ impl BodyBuilder {
             world_from_body: self.world_from_body,
             omega_body: self.omega_body,
             support: self.support,
+            others: self.others,
             inputs: Inputs::default(),
         })
     }

@@ -11,6 +11,9 @@
 //!            E = ½ m |v_G|² + ½ L·ω + m g z_G           (GroundTop::energy)
 //! setters:   attitude / ω / angular impulse re-place the body on the plane
 //!            (horizontal position and velocity kept; rolling: v_G from ω)
+//! watched:   further shapes (Body::other_contacts), gaps gᵢ = z_G + (ρᵢ)_z:
+//!            gᵢ > 0 on every placing (else OtherContactTouching), checked
+//!            after every step (gᵢ = 0: ContactTouchdown, located in the step)
 //! ```
 //!
 //! On the grid (`advance_steps`, `advance_to`) every step is one
@@ -21,6 +24,18 @@
 //! case ([`DynamicsError::ContactIndeterminate`]) is the world's failure
 //! ([`DynamicsError::BodyFailed`]); the body holds the state the model
 //! left (at lift-off: the state where the normal force reached zero).
+//!
+//! A body may carry further contact shapes that do not touch
+//! ([`crate::BodyBuilder::other_contacts`], the stem's ball of a tippe
+//! top): its [`GroundTop`] watches them
+//! ([`GroundTop::try_with_other_contacts`]). One reaching the plane is the
+//! world's failure in the same way, its source
+//! [`DynamicsError::ContactTouchdown`] (the time located inside the step,
+//! which shape, its approach speed; the body holds the state at the
+//! touchdown): the impact and the two-contact motion after it are not
+//! modelled. Placing the body — when it is added, or by a setter — with a
+//! further shape at or below the plane is
+//! [`DynamicsError::OtherContactTouching`].
 
 use glam::{DQuat, DVec2, DVec3};
 
@@ -88,7 +103,20 @@ fn place(
     };
     state.com_world.x += position_xy.x;
     state.com_world.y += position_xy.y;
+    check_others_clear(top, &state)?;
     Ok(state)
+}
+
+/// [`DynamicsError::OtherContactTouching`] for the first further shape of
+/// `top` at or below the plane in `state` (its gap not positive).
+fn check_others_clear(top: &GroundTop, state: &GroundTopState) -> Result<(), DynamicsError> {
+    for contact in 0..top.other_contacts().len() {
+        let gap = top.other_gap(state, contact).unwrap_or(f64::NAN);
+        if gap.is_nan() || gap <= 0.0 {
+            return Err(DynamicsError::OtherContactTouching { contact, gap });
+        }
+    }
+    Ok(())
 }
 
 impl GroundMotion {
@@ -112,7 +140,8 @@ impl GroundMotion {
                 reason: "is not the ground",
             });
         };
-        let top = ground_top(body, shape, friction, gravity)?;
+        let top = ground_top(body, shape, friction, gravity)?
+            .try_with_other_contacts(body.other_contacts())?;
         let state = place(&top, q, omega_world, position_xy, velocity_xy)?;
         Ok(Self {
             top,
@@ -124,8 +153,8 @@ impl GroundMotion {
     /// One step of `h` from time `t`: equal sub-steps of at most `dt`.
     ///
     /// # Errors
-    /// The errors of [`GroundTop::try_step`] (lift-off, a disk flat,
-    /// Painlevé, divergence), with their time.
+    /// The errors of [`GroundTop::try_step`] (lift-off, a further shape's
+    /// touchdown, a disk flat, Painlevé, divergence), with their time.
     pub(crate) fn step(&mut self, t: f64, h: f64, dt: f64) -> Result<(), DynamicsError> {
         let n = substeps(h, dt);
         let sub = h / n as f64;

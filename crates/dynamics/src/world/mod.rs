@@ -25,7 +25,12 @@
 //!   ([`crate::GroundTop::try_step`], bit for bit its trajectory); a longer
 //!   [`World::step`] is cut into equal sub-steps of at most `dt`. A
 //!   lift-off, a disk lying flat or Painlevé's case is the world's failure
-//!   with its time. They take no inputs, and neither the methods nor the
+//!   with its time. Further shapes that do not touch
+//!   ([`BodyBuilder::other_contacts`], a tippe top's stem ball) are
+//!   watched: one reaching the plane is the world's failure too, with its
+//!   time, which shape and its approach speed
+//!   ([`crate::DynamicsError::ContactTouchdown`]; the impact is not
+//!   modelled). They take no inputs, and neither the methods nor the
 //!   tolerance change their plan (`ground.rs`).
 //! - With a [`Tolerance`] ([`World::set_tolerance`]) each body that steps
 //!   takes the cheapest method and sub-steps predicted to meet it
@@ -406,7 +411,9 @@ impl World {
     /// when the world's gravity does not point along −z, the errors of
     /// [`crate::GroundTop::try_with_shape`] and of its state on the ground
     /// ([`crate::GroundTop::try_state_on_ground`]: a disk lying flat, a
-    /// rolling start that slips); for a free body with inputs,
+    /// rolling start that slips) and
+    /// [`DynamicsError::OtherContactTouching`] when a further shape
+    /// ([`BodyBuilder::other_contacts`]) is at or below the plane; for a free body with inputs,
     /// [`DynamicsError::MethodTakesNoInputs`] when the world's free-body
     /// method cannot move it and [`DynamicsError::InvalidBodyParameter`]
     /// for a non-finite gravity term; the set-up errors of its plan.
