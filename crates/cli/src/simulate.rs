@@ -116,6 +116,12 @@ Scene (TOML; SI units, radians):
                              `position`; `velocity` horizontal (not with
                              rolling: it follows from the spin). No pivot,
                              torque, torque_body, force or angular_damping.
+  [[body.contact]]           several tables (at most 5): the first is the
+                             contact above; the others (shape, radius,
+                             center, normal, semi_axes only: no friction,
+                             mu or slip_velocity) are watched for
+                             touchdown, e.g. a tippe top's stem ball: they
+                             exert no force and must start above the plane
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
@@ -146,7 +152,9 @@ Motion:
   (whatever the method or tolerance): its centre of mass and rotation
   under gravity, the normal force and friction at the contact point; the
   run stops with an error at a lift-off (normal force zero), a disk lying
-  flat, or an indeterminate contact, the rows before it valid.
+  flat, an indeterminate contact, or a watched [[body.contact]] touching
+  down (its time located within the step; the impact is not modelled),
+  the rows before it valid.
   With tolerance, a driven body or heavy top takes the cheapest splitting
   and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
   or pdmv6 every dt where that is predicted to meet it for less work than
@@ -338,11 +346,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             // The rows before the divergence are valid: the file keeps them.
             flushed.map_err(|source| write_error(&output, source))?;
             crate::convert::commit_output(pending, output)?;
-            let body = scene
-                .bodies
-                .get(body)
-                .map_or("?", |(name, _)| name.as_str());
-            Err(diverged(scene_path, body, time, &error, &name))
+            let failed = Failed::of(&scene, body, time);
+            Err(diverged(scene_path, &failed, &error, &name))
         }
         Ok(()) => {
             flushed.map_err(|source| write_error(&output, source))?;
@@ -442,11 +447,8 @@ pub fn run_rows(
         Ok(()) => Ok(()),
         Err(Stop::Write(source)) => Err(write_error(&Stream::Standard, source)),
         Err(Stop::Diverged { body, time, error }) => {
-            let body = scene
-                .bodies
-                .get(body)
-                .map_or("?", |(name, _)| name.as_str());
-            Err(diverged(path, body, time, &error, method))
+            let failed = Failed::of(scene, body, time);
+            Err(diverged(path, &failed, &error, method))
         }
     }
 }
@@ -512,16 +514,62 @@ impl From<io::Error> for Stop {
     }
 }
 
+/// The body whose step failed: its name, the lines of its contact
+/// tables, and the end of the step that failed, s.
+struct Failed<'a> {
+    body: &'a str,
+    contact_lines: &'a [u64],
+    time: f64,
+}
+
+impl<'a> Failed<'a> {
+    /// Body number `body` (0-based, scene order) of `scene`, failed at `time`.
+    fn of(scene: &'a Scene, body: usize, time: f64) -> Self {
+        Self {
+            body: scene
+                .bodies
+                .get(body)
+                .map_or("?", |(name, _)| name.as_str()),
+            contact_lines: scene.contact_lines.get(body).map_or(&[], Vec::as_slice),
+            time,
+        }
+    }
+}
+
 /// The one line for a body whose run diverged: the scene, the body, the
-/// time, the method, and what to try instead.
+/// time, the method, and what to try instead; for a watched contact that
+/// touches down, its table's line, its time and approach speed.
 fn diverged(
     scene_path: &std::path::Path,
-    body: &str,
-    time: f64,
+    failed: &Failed<'_>,
     error: &kreisel_dynamics::DynamicsError,
     method: &str,
 ) -> CliError {
     use kreisel_dynamics::DynamicsError;
+    let Failed {
+        body,
+        contact_lines,
+        time,
+    } = *failed;
+    if let DynamicsError::ContactTouchdown {
+        time,
+        contact,
+        approach_speed,
+    } = error
+    {
+        // The watched shapes are the tables after the first.
+        return CliError::Scene {
+            path: scene_path.to_owned(),
+            line: contact_lines.get(contact + 1).copied(),
+            message: format!(
+                "body `{body}`: [[body.contact]] #{} touches down at t = {} s (approach speed \
+                 {} m/s): the impact is not modelled; the run stops there",
+                contact + 2,
+                crate::numbers::Shortest(*time),
+                crate::numbers::Shortest(*approach_speed)
+            ),
+        };
+    }
     let hint = if method == AUTO {
         "use a smaller dt".to_owned()
     } else {

@@ -64,6 +64,14 @@ impl RawBody {
         self.contact.as_ref().map(Spanned::span)
     }
 
+    /// The spans of the body's contact tables, in order (none without
+    /// `contact`).
+    pub fn contact_spans(&self) -> Vec<std::ops::Range<usize>> {
+        self.contact.as_ref().map_or_else(Vec::new, |c| {
+            contact::tables(c).into_iter().map(|(_, s)| s).collect()
+        })
+    }
+
     /// Where the `name` key is, if given.
     pub fn name_span(&self) -> Option<std::ops::Range<usize>> {
         self.name.as_ref().map(Spanned::span)
@@ -102,7 +110,8 @@ pub fn add_body(
             return Err(keys.fail(pivot, message));
         }
         (Some(contact), None) => {
-            let checked = contact::check(&keys, contact)?;
+            let contacts = contact::check(&keys, contact)?;
+            let checked = contacts.first;
             if let Some((key, span)) = &first_input {
                 let message = format!(
                     "`{key}` cannot be applied to a body on the ground (`contact`): \
@@ -126,12 +135,14 @@ pub fn add_body(
                     return Err(keys.fail(v, &message));
                 }
             }
-            builder.on_ground_at(
-                checked.shape,
-                checked.friction,
-                position.truncate(),
-                velocity.truncate(),
-            )
+            builder
+                .on_ground_at(
+                    checked.shape,
+                    checked.friction,
+                    position.truncate(),
+                    velocity.truncate(),
+                )
+                .other_contacts(&contacts.others)
         }
         (None, Some(pivot)) => {
             if let Some(v) = &b.velocity {
@@ -154,6 +165,9 @@ pub fn add_body(
     let id = world
         .add(body)
         .map_err(|e| match (e, &b.pivot, &b.contact) {
+            (DynamicsError::OtherContactTouching { contact: i, gap }, _, Some(contact)) => {
+                watched_touching(&keys, contact, i, gap)
+            }
             (e, _, Some(contact)) => keys.fail(contact, &format!("`contact`: {e}")),
             (e @ DynamicsError::InvalidState { .. }, _, _) => state_error(e),
             (e @ DynamicsError::MethodTakesNoInputs { .. }, _, _) => match &first_input {
@@ -167,6 +181,29 @@ pub fn add_body(
         check_height(&keys, given, world, id)?;
     }
     Ok((name, id))
+}
+
+/// The error for further contact `index` (0-based among the watched
+/// ones, the table after the first) at or below the plane at the start,
+/// at its table's line.
+fn watched_touching(
+    keys: &Keys<'_>,
+    contacts: &Spanned<RawContacts>,
+    index: usize,
+    gap: f64,
+) -> CliError {
+    let tables = contact::tables(contacts);
+    let span = tables
+        .get(index + 1)
+        .map_or(contacts.span(), |(_, span)| span.clone());
+    let message = format!(
+        "[[body.contact]] #{} is at or below the plane at the start (its lowest point at \
+         z = {} m): the contacts after the first are watched for touchdown and must start \
+         above the plane",
+        index + 2,
+        Shortest(gap)
+    );
+    keys.fail_at(span, &message)
 }
 
 /// The largest difference between a ground body's `position` z and the

@@ -14,6 +14,15 @@
 //! slip_velocity = ε           sliding only, m/s [default: 1e-3]
 //! ```
 //!
+//! `[[body.contact]]`, an array of such tables: the first is the surface
+//! the body stands on; the others (at most [`MAX_OTHER_CONTACTS`]) are
+//! watched for touchdown — the stem's ball of a tippe top — and must be
+//! above the plane at the start. They exert no force (the body moves on
+//! its one contact), so `friction`, `mu` and `slip_velocity` are only for
+//! the first table: given on another they are an error, not ignored. A
+//! watched shape reaching the plane stops the run (the impact is not
+//! modelled).
+//!
 //! `slip_velocity` defaults to 1 mm/s, the ε at which Leine & Glocker
 //! (2003) report their tippe top's inversion at 2.7 s: the regularised
 //! Coulomb law `F = −μ N v/√(|v|² + ε²)` is stiff for small ε (the
@@ -28,7 +37,8 @@ use std::str::FromStr;
 
 use glam::DVec3;
 use kreisel_dynamics::{
-    ContactShape, DiskContact, EllipsoidContact, Friction, FrictionModel, SphereContact,
+    ContactShape, DiskContact, EllipsoidContact, Friction, FrictionModel, MAX_OTHER_CONTACTS,
+    SphereContact,
 };
 use serde::Deserialize;
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
@@ -50,7 +60,7 @@ pub struct RawContact {
     center: Option<Spanned<[f64; 3]>>,
     normal: Option<Spanned<[f64; 3]>>,
     semi_axes: Option<Spanned<[f64; 3]>>,
-    friction: Spanned<String>,
+    friction: Option<Spanned<String>>,
     mu: Option<Spanned<f64>>,
     slip_velocity: Option<Spanned<f64>>,
 }
@@ -136,29 +146,67 @@ pub struct CheckedContact {
     pub friction: Friction,
 }
 
-/// Checks the `contact` key of a body: one table (or an array of one).
+/// A body's checked contacts: the one it stands on, and the further
+/// shapes watched for touchdown (the tables after the first).
+#[derive(Debug, Clone)]
+pub struct CheckedContacts {
+    /// The first table: the surface touching the plane and its friction.
+    pub first: CheckedContact,
+    /// The shapes of the other tables, in order.
+    pub others: Vec<ContactShape>,
+}
+
+/// The `[[body.contact]]` tables of `contacts` with their spans (one
+/// `[body.contact]` table: that one, at the key's span).
+pub fn tables(contacts: &Spanned<RawContacts>) -> Vec<(&RawContact, std::ops::Range<usize>)> {
+    match contacts.get_ref() {
+        RawContacts::One(one) => vec![(one.as_ref(), contacts.span())],
+        RawContacts::Many(many) => many.iter().map(|c| (c.get_ref(), c.span())).collect(),
+    }
+}
+
+/// Checks the `contact` key of a body: one table, or an array of them
+/// (the first touching, the others watched; module docs).
 ///
 /// # Errors
 /// [`CliError::Scene`] naming the line and key of the first problem.
-pub fn check(keys: &Keys<'_>, contacts: &Spanned<RawContacts>) -> Result<CheckedContact, CliError> {
-    let raw = match contacts.get_ref() {
-        RawContacts::One(one) => one.as_ref(),
-        RawContacts::Many(many) => match many.as_slice() {
-            [one] => one.get_ref(),
-            [] => return Err(keys.fail(contacts, "`contact` is an empty array: give one table")),
-            [_, second, ..] => {
-                let message = format!(
-                    "{} [[body.contact]] tables: only one contact with the ground is \
-                     supported (one sphere, disk or ellipsoid touching the plane)",
-                    many.len()
-                );
-                return Err(keys.fail(second, &message));
-            }
-        },
+pub fn check(
+    keys: &Keys<'_>,
+    contacts: &Spanned<RawContacts>,
+) -> Result<CheckedContacts, CliError> {
+    let tables = tables(contacts);
+    let Some(((first, _), others)) = tables.split_first() else {
+        return Err(keys.fail(contacts, "`contact` is an empty array: give one table"));
     };
-    let shape = shape(keys, raw)?;
-    let friction = friction(keys, raw)?;
-    Ok(CheckedContact { shape, friction })
+    if let Some((_, span)) = tables.get(1 + MAX_OTHER_CONTACTS) {
+        let message = format!(
+            "{} [[body.contact]] tables: at most {} (the first touching the plane, up to \
+             {MAX_OTHER_CONTACTS} more watched for touchdown)",
+            tables.len(),
+            1 + MAX_OTHER_CONTACTS
+        );
+        return Err(keys.fail_at(span.clone(), &message));
+    }
+    let checked = CheckedContact {
+        shape: shape(keys, first)?,
+        friction: friction(keys, first)?,
+    };
+    let mut watched = Vec::with_capacity(others.len());
+    for (n, (raw, _)) in others.iter().enumerate() {
+        let why = format!(
+            "is only for the first contact (the one touching): [[body.contact]] #{} is \
+             watched for touchdown and exerts no force",
+            n + 2
+        );
+        watched.push(shape(keys, raw)?);
+        not_with(keys, "friction", &raw.friction, &why)?;
+        not_with(keys, "mu", &raw.mu, &why)?;
+        not_with(keys, "slip_velocity", &raw.slip_velocity, &why)?;
+    }
+    Ok(CheckedContacts {
+        first: checked,
+        others: watched,
+    })
 }
 
 /// `key` given where it has no meaning: an error at its line.
@@ -271,11 +319,17 @@ fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, CliError> {
 
 /// The friction law from `friction`, `mu` and `slip_velocity`.
 fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, CliError> {
-    let model: FrictionModel = raw
-        .friction
+    let given = required(
+        keys,
+        "friction",
+        &raw.friction,
+        &raw.shape,
+        "\"none\", \"viscous\", \"sliding\" or \"rolling\" at the contact the body stands on",
+    )?;
+    let model: FrictionModel = given
         .get_ref()
         .parse()
-        .map_err(|e| keys.fail(&raw.friction, &format!("`contact.friction`: {e}")))?;
+        .map_err(|e| keys.fail(given, &format!("`contact.friction`: {e}")))?;
     let unused = format!("is not used with friction \"{model}\"");
     if model != FrictionModel::Sliding {
         let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²))";
@@ -283,7 +337,7 @@ fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, CliError> {
     }
     let mu = |keys: &Keys<'_>, unit: &str| -> Result<f64, CliError> {
         let what = format!("friction \"{model}\" needs the coefficient μ ({unit})");
-        let mu = required(keys, "mu", &raw.mu, &raw.friction, &what)?;
+        let mu = required(keys, "mu", &raw.mu, given, &what)?;
         let value = *mu.get_ref();
         if value.is_finite() && value >= 0.0 {
             Ok(value)

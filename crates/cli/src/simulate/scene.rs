@@ -57,6 +57,9 @@ pub struct Scene {
     pub bodies: Vec<(String, BodyId)>,
     /// Whether some body has a pivot (is a heavy top).
     pub has_pivot: bool,
+    /// The lines of each body's contact tables, in file order (empty for
+    /// a body without `contact`): a touchdown names its table's line.
+    pub contact_lines: Vec<Vec<u64>>,
 }
 
 /// The scene's path and text: turns spans into line numbers for errors.
@@ -70,7 +73,7 @@ pub struct SceneFile<'a> {
 
 impl SceneFile<'_> {
     /// The 1-based line holding byte `offset`.
-    fn line_of(&self, offset: usize) -> u64 {
+    pub fn line_of(&self, offset: usize) -> u64 {
         let end = offset.min(self.text.len());
         1 + self.text.as_bytes()[..end]
             .iter()
@@ -243,6 +246,7 @@ pub fn parse_with_method(
     // A set, not a search of the bodies so far: 10⁵ bodies took 31 s that way.
     let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());
     let mut has_pivot = false;
+    let mut contact_lines: Vec<Vec<u64>> = Vec::with_capacity(raw.body.len());
     let down = gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0;
     for (n, raw_body) in raw.body.iter().enumerate() {
         if let Some(contact) = raw_body.get_ref().contact_span()
@@ -273,6 +277,8 @@ pub fn parse_with_method(
         }
         has_pivot |= raw_body.get_ref().has_pivot();
         bodies.push((name, id));
+        let spans = raw_body.get_ref().contact_spans();
+        contact_lines.push(spans.into_iter().map(|s| file.line_of(s.start)).collect());
     }
     if let Some(name) = &sim.method
         && has_pivot
@@ -286,6 +292,7 @@ pub fn parse_with_method(
         world,
         bodies,
         has_pivot,
+        contact_lines,
     })
 }
 

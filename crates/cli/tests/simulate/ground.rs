@@ -169,7 +169,7 @@ fn a_lift_off_stops_the_run_with_its_time() {
 
 /// Runs `body_extra` (after a tippe-top body) and checks the one error
 /// line: at line `line`, containing every needle.
-fn check(name: &str, gravity: &str, body_extra: &str, line: u32, needles: &[&str]) {
+pub(crate) fn check(name: &str, gravity: &str, body_extra: &str, line: u32, needles: &[&str]) {
     let scene = format!(
         "[simulation]\nduration = 0.01\ndt = 1e-3\n{gravity}\n\
          [[body]]\nname = \"b\"\nmass = 0.006\ninertia = [8e-7, 8e-7, 7e-7]\n\
@@ -188,7 +188,7 @@ fn check(name: &str, gravity: &str, body_extra: &str, line: u32, needles: &[&str
     }
 }
 
-const DOWN: &str = "gravity = [0, 0, -9.81]";
+pub(crate) const DOWN: &str = "gravity = [0, 0, -9.81]";
 
 /// `[body.contact]` with these lines (starting at scene line 10).
 fn contact(lines: &str) -> String {
@@ -305,14 +305,16 @@ fn bad_contacts_are_one_line_errors_at_their_line() {
         13,
         &["`body.contact`: unknown field `colour`"],
     );
+    // Two tables: the second is watched, it takes no friction (more in
+    // ground_touchdown.rs).
     check(
         "c_two.toml",
         DOWN,
         &format!(
             "[[body.contact]]\n{sphere}friction = \"none\"\n[[body.contact]]\n{sphere}friction = \"none\"\n"
         ),
-        14,
-        &["2 [[body.contact]] tables: only one contact"],
+        17,
+        &["`contact.friction` is only for the first contact (the one touching)"],
     );
     check(
         "c_empty.toml",
