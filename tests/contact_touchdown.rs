@@ -270,6 +270,7 @@ fn a_graze_inside_one_step_is_found() {
     eprintln!("first minimum of the knob's centre at t = {t_min} s");
     let knob = SphereContact::try_new(heights[k] + 1e-6, c).unwrap();
     let top = plain
+        .clone()
         .try_with_other_contacts(&[ContactShape::Sphere(knob)])
         .unwrap();
     let mut fine = s0;
@@ -308,7 +309,10 @@ fn watching_a_far_contact_leaves_every_bit_unchanged() {
         let (plain, s0) = leine_glocker(friction);
         let far =
             ContactShape::Sphere(SphereContact::try_new(0.001, DVec3::new(0.0, 0.0, 1.0)).unwrap());
-        let watching = plain.try_with_other_contacts(&[far, stem()]).unwrap();
+        let watching = plain
+            .clone()
+            .try_with_other_contacts(&[far, stem()])
+            .unwrap();
         assert_eq!(watching.other_contacts(), &[far, stem()]);
         let (mut a, mut b) = (s0, s0);
         plain
@@ -338,13 +342,13 @@ fn bad_inputs_are_typed_errors() {
     // Too many shapes.
     let many = vec![stem(); MAX_OTHER_CONTACTS + 1];
     assert!(matches!(
-        top.try_with_other_contacts(&many),
+        top.clone().try_with_other_contacts(&many),
         Err(DynamicsError::InvalidContact {
             parameter: "other_contacts",
             ..
         })
     ));
-    assert!(top.try_with_other_contacts(&many[1..]).is_ok());
+    assert!(top.clone().try_with_other_contacts(&many[1..]).is_ok());
     // A further sphere at or below the plane at the start: refused by both
     // start-state constructors, with its index and gap.
     let low =
@@ -606,6 +610,7 @@ fn lift_off_and_touchdown_in_one_step_report_the_earlier() {
         let r_k = r0 + a * theta_k.cos() - d * theta_k.sin();
         let knob = SphereContact::try_new(r_k, DVec3::new(0.0, -d, 0.0)).unwrap();
         let top = plain
+            .clone()
             .try_with_other_contacts(&[ContactShape::Sphere(knob)])
             .unwrap();
         let knob_gap = |th: f64| r0 + a * th.cos() - d * th.sin() - r_k;

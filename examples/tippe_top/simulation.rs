@@ -114,14 +114,14 @@ impl Simulation {
     /// None in practice (an empty list of further contacts is accepted).
     pub fn new(top: GroundTop, start: GroundTopState, dt: f64) -> Result<Self, DynamicsError> {
         Ok(Self {
-            top,
-            ball_only: top.try_with_other_contacts(&[])?,
+            ball_only: top.clone().try_with_other_contacts(&[])?,
             state: start,
             time: 0.0,
             dt,
             events: Events::default(),
             energy0: top.energy(&start),
             jellett0: top.jellett(&start),
+            top,
             jellett_drift: 0.0,
             energy_rise: f64::NEG_INFINITY,
             steps: 0,
@@ -165,8 +165,9 @@ impl Simulation {
         }
         let before = self.state;
         let (t0, e_before) = (self.time, self.top.energy(&before));
-        let top = *self.active();
-        let mut result = top.try_step(&mut self.state, t0, self.dt);
+        let mut state = self.state;
+        let mut result = self.active().try_step(&mut state, t0, self.dt);
+        self.state = state;
         if let Err(DynamicsError::ContactTouchdown { time, .. }) = result {
             self.events.stem_touch = Some((time, tilt(&self.state)));
             self.state = before;

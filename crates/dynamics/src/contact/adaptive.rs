@@ -27,9 +27,7 @@ use crate::DynamicsError;
 /// The method's name in errors.
 const METHOD: &str = "ground-top dopri5";
 
-/// Stage times `cᵢ` (the vector field is autonomous: they enter only the
-/// order conditions).
-#[cfg(test)]
+/// Stage times `cᵢ` (where applied loads are read; the order conditions).
 const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
 
 /// The Runge–Kutta matrix, row `i` the weights of stages `0..i`.
@@ -208,11 +206,11 @@ fn flat(s: &GroundTopState) -> [f64; 13] {
 /// One Dormand–Prince step of `h` from `s` whose rates are `k1`: the
 /// trial (fifth order, its end rates the FSAL stage) and the error
 /// estimate's state difference.
-fn dopri(top: &GroundTop, s: &GroundTopState, k1: Rates, h: f64) -> (Trial, [f64; 13]) {
+fn dopri(top: &GroundTop, s: &GroundTopState, t: f64, k1: Rates, h: f64) -> (Trial, [f64; 13]) {
     let mut k = [k1; 7];
     for i in 1..7 {
         let inc = weighted(&k[..i], &A[i][..i]);
-        k[i] = top.rates(&s.plus(&inc, h));
+        k[i] = top.rates(t + C[i] * h, &s.plus(&inc, h));
     }
     let next = s.plus(&weighted(&k, &B), h);
     let err_weights: [f64; 7] = std::array::from_fn(|i| B[i] - B_HAT[i]);
@@ -324,9 +322,9 @@ impl GroundTop {
                 .fold(0.0, f64::max)
         };
 
-        let mut k1 = self.rates(state);
+        let mut k1 = self.rates(t0, state);
         stats.evaluations += 1;
-        let mut h = self.starting_step(state, &k1, t_end - t0, &norm);
+        let mut h = self.starting_step(state, t0, &k1, t_end - t0, &norm);
         stats.evaluations += 1;
         let mut t = t0;
         let mut rejected_last = false;
@@ -343,7 +341,7 @@ impl GroundTop {
                     min: h_min,
                 });
             }
-            let (trial, diff) = dopri(self, state, k1, h);
+            let (trial, diff) = dopri(self, state, t, k1, h);
             stats.evaluations += 6;
             let y = flat(state);
             let z = flat(&trial.next);
@@ -362,7 +360,7 @@ impl GroundTop {
             }
             let end = trial.end;
             self.settle(state, t, h, METHOD, trial, |s, tau| {
-                dopri(self, s, k1, tau).0.next
+                dopri(self, s, t, k1, tau).0.next
             })?;
             t = if last { t_end } else { t + h };
             k1 = end;
@@ -388,6 +386,7 @@ impl GroundTop {
     fn starting_step(
         &self,
         state: &GroundTopState,
+        t0: f64,
         k1: &Rates,
         span: f64,
         norm: &impl Fn(&[f64; 13], &[f64; 13], &[f64; 13]) -> f64,
@@ -402,7 +401,7 @@ impl GroundTop {
             0.01 * d0 / d1
         };
         let h0 = h0.min(span);
-        let k2 = self.rates(&state.plus(k1, h0));
+        let k2 = self.rates(t0 + h0, &state.plus(k1, h0));
         let f2 = flat(&GroundTopState::default_zero().plus(&k2, 1.0));
         let df: [f64; 13] = std::array::from_fn(|i| (f2[i] - f[i]) / h0);
         let d2 = norm(&df, &y, &y);

@@ -127,6 +127,14 @@ impl GroundTop {
                 reason: "the ground-top state is not finite",
             });
         }
+        if self.inputs().is_some() {
+            return Err(DynamicsError::InvalidInput {
+                input: "inputs",
+                index: None,
+                value: f64::NAN,
+                reason: "the flight is the exact torque-free motion: not with applied inputs",
+            });
+        }
         let body = RigidBody::try_from_inertia_tensor(self.inertia_body())?;
         let (moments, body_from_principal) = (body.principal_moments(), body.body_from_principal());
         let world_from_principal = state.world_from_body.normalize() * body_from_principal;

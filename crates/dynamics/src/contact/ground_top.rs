@@ -4,6 +4,7 @@
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
+use super::applied_loads::AppliedLoads;
 use super::{ContactShape, Friction, MAX_OTHER_CONTACTS, SphereContact};
 use crate::DynamicsError;
 
@@ -33,7 +34,7 @@ use crate::DynamicsError;
 /// assert!((top.normal_force(&s)? - 0.006 * 9.81).abs() < 1e-15);
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct GroundTop {
     mass: f64,
     inertia_body: DMat3,
@@ -47,6 +48,8 @@ pub struct GroundTop {
     pub(super) others: [ContactShape; MAX_OTHER_CONTACTS],
     /// How many of `others` are in use.
     pub(super) other_count: usize,
+    /// Applied torques and forces ([`GroundTop::try_with_inputs`]).
+    pub(super) loads: Option<AppliedLoads>,
 }
 
 /// The state of a [`GroundTop`]: centre of mass, its velocity, attitude
@@ -216,6 +219,7 @@ impl GroundTop {
             friction,
             others: [shape; MAX_OTHER_CONTACTS],
             other_count: 0,
+            loads: None,
         })
     }
 
@@ -428,7 +432,9 @@ impl GroundTop {
             .dot(self.shape.contact_from_com_world(state.world_from_body))
     }
 
-    /// The normal force `N` the plane exerts in `state`, newtons.
+    /// The normal force `N` the plane exerts in `state`, newtons (applied
+    /// loads, if any, read at `t = 0`: [`GroundTop::normal_force_at`] for
+    /// loads that change with time).
     ///
     /// # Errors
     /// [`DynamicsError::ContactIndeterminate`] when no normal force can
@@ -437,12 +443,35 @@ impl GroundTop {
     /// [`DynamicsError::InvalidState`] for a non-finite state. A negative
     /// value is returned as it is: the contact would need to pull.
     pub fn normal_force(&self, state: &GroundTopState) -> Result<f64, DynamicsError> {
+        self.normal_force_at(0.0, state)
+    }
+
+    /// The normal force in `state` at time `t`, newtons (the time reaches
+    /// only applied loads, [`GroundTop::try_with_inputs`]).
+    ///
+    /// # Errors
+    /// As [`GroundTop::normal_force`].
+    ///
+    /// ```
+    /// use glam::{DMat3, DQuat, DVec2, DVec3};
+    /// use kreisel_dynamics::{Friction, GroundTop, Inputs, SphereContact};
+    /// // Lifted by a force that grows with time: it carries the weight at t = 1 s.
+    /// let ball = SphereContact::try_new(0.1, DVec3::ZERO)?;
+    /// let lift = Inputs::default().with_load(|t, _| (DVec3::ZERO, DVec3::new(0.0, 0.0, 9.81 * t)));
+    /// let top = GroundTop::try_new(1.0, DMat3::from_diagonal(DVec3::splat(0.004)), ball, Friction::None, 9.81)?
+    ///     .try_with_inputs(lift)?;
+    /// let s = top.try_state_on_ground(DQuat::IDENTITY, DVec3::ZERO, DVec2::ZERO)?;
+    /// assert!((top.normal_force_at(0.25, &s)? - 0.75 * 9.81).abs() < 1e-14);
+    /// assert!(top.normal_force_at(1.0, &s)?.abs() < 1e-14);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn normal_force_at(&self, t: f64, state: &GroundTopState) -> Result<f64, DynamicsError> {
         if !state.is_valid() {
             return Err(DynamicsError::InvalidState {
                 reason: "the ground-top state is not finite",
             });
         }
-        let r = self.rates(state);
+        let r = self.rates(t, state);
         if r.compliance > 0.0 {
             Ok(r.normal_force)
         } else {
@@ -456,7 +485,8 @@ impl GroundTop {
     /// The whole contact force `N ẑ + F` the plane exerts in `state`, world
     /// axes, newtons: `N (ẑ + f(v_P))` for a friction law, the reaction
     /// `K⁻¹ b` of the rolling constraint for [`Friction::Rolling`] (module
-    /// docs, [`crate::contact`]).
+    /// docs, [`crate::contact`]); applied loads read at `t = 0`
+    /// ([`GroundTop::contact_force_at`]).
     ///
     /// # Errors
     /// As [`GroundTop::normal_force`].
@@ -475,8 +505,17 @@ impl GroundTop {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn contact_force(&self, state: &GroundTopState) -> Result<DVec3, DynamicsError> {
-        self.normal_force(state)?;
-        Ok(self.rates(state).contact_force)
+        self.contact_force_at(0.0, state)
+    }
+
+    /// The contact force in `state` at time `t` (as
+    /// [`GroundTop::normal_force_at`]).
+    ///
+    /// # Errors
+    /// As [`GroundTop::normal_force`].
+    pub fn contact_force_at(&self, t: f64, state: &GroundTopState) -> Result<DVec3, DynamicsError> {
+        self.normal_force_at(t, state)?;
+        Ok(self.rates(t, state).contact_force)
     }
 
     /// For a disk rim, the unit direction from the rim's centre to the
@@ -493,32 +532,46 @@ impl GroundTop {
         }
     }
 
-    /// The vector field and the normal force at `state`.
-    pub(crate) fn rates(&self, state: &GroundTopState) -> Rates {
+    /// The vector field and the normal force at `state` and time `t` (the
+    /// time only reaches applied loads, [`GroundTop::try_with_inputs`]).
+    pub(crate) fn rates(&self, t: f64, state: &GroundTopState) -> Rates {
         let q = state.world_from_body.normalize();
         let a = DMat3::from_quat(q);
         let inverse_world = a * self.inverse_inertia_body * a.transpose();
         let l = state.l_world;
         let omega = inverse_world * l;
         let (rho, rho_rate) = self.shape.offset_and_rate(q, omega);
+        let (torque, force) = match &self.loads {
+            Some(loads) => loads.at(t, state),
+            None => (DVec3::ZERO, DVec3::ZERO),
+        };
+        // I_w⁻¹ (L × ω + τ): the angular acceleration without the contact.
+        let free_spin = inverse_world * (l.cross(omega) + torque);
         if self.friction == Friction::Rolling {
-            return self.rolling_rates(state, inverse_world, omega, rho, rho_rate);
+            let loads = (torque, force);
+            return self.rolling_rates(
+                state,
+                inverse_world,
+                omega,
+                (rho, rho_rate),
+                free_spin,
+                loads,
+            );
         }
         let slip = state.velocity_world + omega.cross(rho);
         let e = DVec3::Z
             + self
                 .friction
                 .force_per_normal(DVec3::new(slip.x, slip.y, 0.0));
-        let gyroscopic = inverse_world * l.cross(omega);
         let per_newton = inverse_world * rho.cross(e);
         let compliance = 1.0 / self.mass + per_newton.cross(rho).z;
-        let free = gyroscopic.cross(rho).z + omega.cross(rho_rate).z;
+        let free = free_spin.cross(rho).z + omega.cross(rho_rate).z + force.z / self.mass;
         let normal_force = (self.gravity - free) / compliance;
         Rates {
             d_com: state.velocity_world,
-            d_velocity: e * (normal_force / self.mass) - self.gravity * DVec3::Z,
+            d_velocity: (e * normal_force + force) / self.mass - self.gravity * DVec3::Z,
             d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
-            d_l: rho.cross(e) * normal_force,
+            d_l: rho.cross(e) * normal_force + torque,
             normal_force,
             contact_force: e * normal_force,
             compliance,
@@ -526,34 +579,36 @@ impl GroundTop {
     }
 
     /// The vector field of rolling without slipping: the contact force
-    /// `F` from `K F = b` (module docs, [`crate::contact`]).
+    /// `F_c` from `K F_c = b` (module docs, [`crate::contact`]), with the
+    /// applied torque `τ` and force `F`, `free_spin = I_w⁻¹ (L × ω + τ)`.
     ///
     /// ```text
     /// K = 1/m 𝟙 − [ρ]× I_w⁻¹ [ρ]×
-    /// b = g ẑ + ρ × (I_w⁻¹ (L × ω)) − ω × ρ̇
+    /// b = g ẑ − F/m + ρ × (I_w⁻¹ (L × ω + τ)) − ω × ρ̇
     /// ```
     fn rolling_rates(
         &self,
         state: &GroundTopState,
         inverse_world: DMat3,
         omega: DVec3,
-        rho: DVec3,
-        rho_rate: DVec3,
+        (rho, rho_rate): (DVec3, DVec3),
+        free_spin: DVec3,
+        (torque, force): (DVec3, DVec3),
     ) -> Rates {
         let cross_rho = skew(rho);
         let k = DMat3::from_diagonal(DVec3::splat(1.0 / self.mass))
             - cross_rho * inverse_world * cross_rho;
-        let gyroscopic = inverse_world * state.l_world.cross(omega);
-        let b = self.gravity * DVec3::Z + rho.cross(gyroscopic) - omega.cross(rho_rate);
+        let b = self.gravity * DVec3::Z - force / self.mass + rho.cross(free_spin)
+            - omega.cross(rho_rate);
         let k_inverse = k.inverse();
-        let force = k_inverse * b;
+        let contact = k_inverse * b;
         Rates {
             d_com: state.velocity_world,
-            d_velocity: force / self.mass - self.gravity * DVec3::Z,
+            d_velocity: (contact + force) / self.mass - self.gravity * DVec3::Z,
             d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
-            d_l: rho.cross(force),
-            normal_force: force.z,
-            contact_force: force,
+            d_l: rho.cross(contact) + torque,
+            normal_force: contact.z,
+            contact_force: contact,
             // The vertical compliance with the contact point held
             // horizontally: 1/(K⁻¹)_zz, positive as K is positive definite.
             compliance: 1.0 / k_inverse.z_axis.z,

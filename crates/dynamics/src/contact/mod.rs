@@ -137,7 +137,25 @@
 //! rolling without slipping reverses its spin while conserving energy
 //! (`tests/contact_rattleback.rs`); λ is not conserved.
 //!
-//! # Further contacts: touchdown, reported
+//! # Applied loads
+//! [`GroundTop::try_with_inputs`] adds the crate's [`crate::Inputs`] — a
+//! torque `τ` about the centre of mass and a force `F` through it, both
+//! world axes, summed from constant parts, forces at body points, angular
+//! damping and a user law of `(t, state)`. They enter Newton and Euler
+//! beside the contact force, and so the contact force itself:
+//!
+//! ```text
+//! m v̇_G = N e + F − m g ẑ,   L̇ = ρ × N e + τ,   ω̇ = I_w⁻¹ (ρ × N e + τ + L × ω)
+//! N = [g − F_z/m − ((I_w⁻¹ (L × ω + τ)) × ρ)_z − (ω × ρ̇)_z] / κ
+//! b = g ẑ − F/m + ρ × (I_w⁻¹ (L × ω + τ)) − ω × ρ̇          (rolling)
+//! ```
+//!
+//! The energy then changes by the inputs' power too,
+//! `Ė = N f·v_P + τ·ω + F·v_G` ([`GroundTop::input_power`]; tested as
+//! `E(T) − E(0) = ∫ P dt` in `tests/contact_loads.rs`, with Moffatt's
+//! finite-time law for Euler's disk under a dissipation of his form).
+//!
+
 //! A body may carry further body-fixed shapes that do not touch at the
 //! start ([`GroundTop::try_with_other_contacts`], at most
 //! [`MAX_OTHER_CONTACTS`]) — the stem's ball of Leine & Glocker's tippe
@@ -217,6 +235,7 @@
 //! inversion ends at `ω_z = ω₀ (cos θ₀ − α)/(1 + α)`.
 
 mod adaptive;
+mod applied_loads;
 mod contact_shape;
 mod disk_contact;
 mod ellipsoid_contact;

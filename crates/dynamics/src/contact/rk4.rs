@@ -58,16 +58,17 @@ impl Trial {
     }
 }
 
-/// One classical RK4 step.
-fn rk4(top: &GroundTop, s: &GroundTopState, h: f64) -> Trial {
-    let k1 = top.rates(s);
-    let k2 = top.rates(&s.plus(&k1, 0.5 * h));
-    let k3 = top.rates(&s.plus(&k2, 0.5 * h));
-    let k4 = top.rates(&s.plus(&k3, h));
+/// One classical RK4 step of `h` from `s` at time `t`.
+fn rk4(top: &GroundTop, s: &GroundTopState, t: f64, h: f64) -> Trial {
+    let mid = t + 0.5 * h;
+    let k1 = top.rates(t, s);
+    let k2 = top.rates(mid, &s.plus(&k1, 0.5 * h));
+    let k3 = top.rates(mid, &s.plus(&k2, 0.5 * h));
+    let k4 = top.rates(t + h, &s.plus(&k3, h));
     let stages = [k1, k2, k3, k4];
     let sum = weighted(&stages, &[1.0, 2.0, 2.0, 1.0]);
     let next = s.plus(&sum, h / 6.0);
-    Trial::of(next, &stages, top.rates(&next))
+    Trial::of(next, &stages, top.rates(t + h, &next))
 }
 
 /// `InvalidStep` / `InvalidState` for a step that cannot start.
@@ -142,9 +143,9 @@ impl GroundTop {
         h: f64,
     ) -> Result<(), DynamicsError> {
         check_start(state, h)?;
-        let trial = rk4(self, state, h);
+        let trial = rk4(self, state, time, h);
         self.settle(state, time, h, METHOD, trial, |s, tau| {
-            rk4(self, s, tau).next
+            rk4(self, s, time, tau).next
         })
     }
 
@@ -232,11 +233,11 @@ impl GroundTop {
             self.crossing_in(
                 h,
                 |tau| redo(&start, tau),
-                |s| self.rates(s).normal_force > 0.0,
+                |tau, s| self.rates(time + tau, s).normal_force > 0.0,
             )
         });
         let touch = touch_by
-            .map(|hi| self.crossing_in(hi, |tau| redo(&start, tau), |s| self.others_clear(s)));
+            .map(|hi| self.crossing_in(hi, |tau| redo(&start, tau), |_, s| self.others_clear(s)));
         match (lift, touch) {
             (Some((t_lift, _)), Some((tau, at))) if tau < t_lift => {
                 *state = at;
@@ -246,7 +247,7 @@ impl GroundTop {
                 *state = at;
                 Err(DynamicsError::ContactLost {
                     time: time + tau,
-                    normal_force: self.rates(&at).normal_force,
+                    normal_force: self.rates(time + tau, &at).normal_force,
                 })
             }
             (None, Some((tau, at))) => {
@@ -269,12 +270,12 @@ impl GroundTop {
         &self,
         h: f64,
         redo: impl Fn(f64) -> GroundTopState,
-        holds: impl Fn(&GroundTopState) -> bool,
+        holds: impl Fn(f64, &GroundTopState) -> bool,
     ) -> (f64, GroundTopState) {
         let (mut lo, mut hi) = (0.0, h);
         for _ in 0..BISECTIONS {
             let mid = 0.5 * (lo + hi);
-            if holds(&redo(mid)) {
+            if holds(mid, &redo(mid)) {
                 lo = mid;
             } else {
                 hi = mid;
