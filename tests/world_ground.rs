@@ -62,7 +62,8 @@ fn the_world_moves_a_ground_body_as_the_contact_model_does_bit_for_bit() {
         assert_eq!(
             world.plan(id),
             Some(&Plan::OnGround {
-                friction: friction.model()
+                friction: friction.model(),
+                watched: 0,
             })
         );
         assert_same(&world.state(id).unwrap(), &top, &reference);

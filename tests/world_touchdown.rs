@@ -13,8 +13,8 @@ mod common;
 
 use glam::{DQuat, DVec3};
 use kreisel::dynamics::{
-    Body, BodyBuilder, ContactShape, DynamicsError, Friction, MAX_OTHER_CONTACTS, SphereContact,
-    World,
+    Body, BodyBuilder, ContactShape, DynamicsError, Friction, MAX_OTHER_CONTACTS, Plan,
+    SphereContact, World,
 };
 
 use common::tippe_top::{A, G, I1, I3, M, MU, OMEGA0, R, THETA0};
@@ -88,6 +88,13 @@ fn stem_touchdown(scenario: &str, friction: Friction) {
     assert_eq!(body.other_contacts(), &[stem()]);
     let mut world = World::try_new(GRAVITY, 1e-5).unwrap();
     let id = world.add(body).unwrap();
+    assert_eq!(
+        world.plan(id),
+        Some(&Plan::OnGround {
+            friction: friction.model(),
+            watched: 1,
+        })
+    );
     let err = world.advance_to(10.0).unwrap_err();
     let DynamicsError::BodyFailed {
         body,

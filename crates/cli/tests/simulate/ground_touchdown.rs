@@ -40,6 +40,14 @@ fn number_after(message: &str, before: &str) -> f64 {
 #[test]
 fn the_tippe_top_stem_scene_stops_at_the_generators_touchdown_time() {
     let path = workspace("examples/scenes/tippe_top_stem.toml");
+    let explain = simulate_file(&path, &["--explain"]);
+    assert!(
+        explain.stdout.contains(
+            "friction sliding; 1 further contact watched; lift-off or a touchdown stops the run"
+        ),
+        "{}",
+        explain.stdout
+    );
     let run = simulate_file(&path, &[]);
     assert_eq!(run.code, Some(1), "{}", run.stderr);
     let message = run.stderr.lines().last().unwrap_or_default();

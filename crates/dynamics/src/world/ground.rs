@@ -223,6 +223,7 @@ impl World {
         let ground = GroundMotion::try_new(&body, self.gravity, q, omega_world)?;
         let plan = Plan::OnGround {
             friction: ground.top.friction().model(),
+            watched: ground.top.other_contacts().len(),
         };
         let baseline = ground.principal_state();
         let (position, velocity) = (ground.state.com_world, ground.state.velocity_world);

@@ -111,6 +111,9 @@ pub enum Plan {
     OnGround {
         /// The friction law at the contact.
         friction: crate::FrictionModel,
+        /// How many further contact shapes are watched for touchdown
+        /// ([`crate::BodyBuilder::other_contacts`]).
+        watched: usize,
     },
 }
 
@@ -287,9 +290,17 @@ impl fmt::Display for Plan {
                 method.name(),
                 method.order()
             ),
-            Plan::OnGround { friction } => write!(
+            Plan::OnGround {
+                friction,
+                watched: 0,
+            } => write!(
                 f,
                 "body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction {friction}; lift-off stops the run)"
+            ),
+            Plan::OnGround { friction, watched } => write!(
+                f,
+                "body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction {friction}; {watched} further contact{} watched; lift-off or a touchdown stops the run)",
+                if *watched == 1 { "" } else { "s" }
             ),
         }
     }
