@@ -569,7 +569,8 @@ impl GroundTop {
         let normal_force = (self.gravity - free) / compliance;
         Rates {
             d_com: state.velocity_world,
-            d_velocity: (e * normal_force + force) / self.mass - self.gravity * DVec3::Z,
+            d_velocity: e * (normal_force / self.mass) + force / self.mass
+                - self.gravity * DVec3::Z,
             d_attitude: kreisel_kinematics::quat_derivative_world(state.world_from_body, omega),
             d_l: rho.cross(e) * normal_force + torque,
             normal_force,
