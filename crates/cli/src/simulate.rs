@@ -114,8 +114,9 @@ Scene (TOML; SI units, radians):
                              centre of mass follows from its attitude (a
                              `position` z must agree to 1e-9 m); x, y from
                              `position`; `velocity` horizontal (not with
-                             rolling: it follows from the spin). No pivot,
-                             torque, torque_body, force or angular_damping.
+                             rolling: it follows from the spin). No pivot;
+                             torque, torque_body, force and angular_damping
+                             act besides gravity and the contact.
   [[body.contact]]           several tables (at most 5): the first is the
                              contact above; the others (shape, radius,
                              center, normal, semi_axes only: no friction,

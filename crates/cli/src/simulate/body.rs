@@ -112,13 +112,6 @@ pub fn add_body(
         (Some(contact), None) => {
             let contacts = contact::check(&keys, contact)?;
             let checked = contacts.first;
-            if let Some((key, span)) = &first_input {
-                let message = format!(
-                    "`{key}` cannot be applied to a body on the ground (`contact`): \
-                     not supported"
-                );
-                return Err(keys.fail_at(span.clone(), &message));
-            }
             if let Some(v) = &b.velocity {
                 if checked.friction == Friction::Rolling {
                     let message = "`velocity` cannot be given with friction \"rolling\": \

@@ -371,20 +371,6 @@ fn bad_contacts_are_one_line_errors_at_their_line() {
         &["`pivot` cannot be given with `contact`"],
     );
     check(
-        "c_torque.toml",
-        DOWN,
-        &format!("torque = [0, 0, 1e-6]\n{ok}"),
-        10,
-        &["`torque` cannot be applied to a body on the ground"],
-    );
-    check(
-        "c_damping.toml",
-        DOWN,
-        &format!("angular_damping = 1e-6\n{ok}"),
-        10,
-        &["`angular_damping` cannot be applied"],
-    );
-    check(
         "c_vertical_velocity.toml",
         DOWN,
         &format!("velocity = [0, 0, 1]\n{ok}"),

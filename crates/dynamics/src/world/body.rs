@@ -11,8 +11,8 @@ use crate::{
 /// How a body is held.
 ///
 /// Applied torques and forces are not part of the support: they are the
-/// body's [`Inputs`] ([`Body::with_inputs`]), for free bodies and bodies
-/// on a pivot (not for a body on the ground).
+/// body's [`Inputs`] ([`Body::with_inputs`]), for every support (on the
+/// ground they enter the contact model, [`crate::GroundTop::try_with_inputs`]).
 ///
 /// ```
 /// use glam::DVec3;
@@ -311,7 +311,6 @@ impl Body {
     /// ```
     pub fn with_inputs(self, inputs: Inputs) -> Result<Self, DynamicsError> {
         inputs.validate()?;
-        refuse_inputs_on_ground(self.support, &inputs)?;
         Ok(Self { inputs, ..self })
     }
 
@@ -319,22 +318,6 @@ impl Body {
     pub(super) fn set_inputs(&mut self, inputs: Inputs) {
         self.inputs = inputs;
     }
-}
-
-/// [`DynamicsError::InvalidBody`] for inputs that are not all zero on a
-/// body on the ground (its contact model takes none).
-pub(super) fn refuse_inputs_on_ground(
-    support: Support,
-    inputs: &Inputs,
-) -> Result<(), DynamicsError> {
-    if matches!(support, Support::Ground { .. }) && !inputs.is_none() {
-        return Err(DynamicsError::InvalidBody {
-            field: "inputs",
-            reason: "cannot be applied to a body on the ground (not supported: \
-                     its contact model has no applied loads)",
-        });
-    }
-    Ok(())
 }
 
 impl BodyBuilder {

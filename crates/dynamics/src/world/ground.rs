@@ -197,7 +197,8 @@ impl GroundMotion {
     }
 }
 
-/// The contact model of `body` with `shape` and `friction` under `gravity`.
+/// The contact model of `body` with `shape` and `friction` under `gravity`,
+/// with the body's inputs.
 fn ground_top(
     body: &Body,
     shape: ContactShape,
@@ -206,7 +207,8 @@ fn ground_top(
 ) -> Result<GroundTop, DynamicsError> {
     let g = gravity_down(gravity)?;
     let props = body.mass_properties();
-    GroundTop::try_with_shape(props.mass, props.inertia, shape, friction, g)
+    GroundTop::try_with_shape(props.mass, props.inertia, shape, friction, g)?
+        .try_with_inputs(body.inputs().clone())
 }
 
 impl World {

@@ -30,8 +30,9 @@
 //!   watched: one reaching the plane is the world's failure too, with its
 //!   time, which shape and its approach speed
 //!   ([`crate::DynamicsError::ContactTouchdown`]; the impact is not
-//!   modelled). They take no inputs, and neither the methods nor the
-//!   tolerance change their plan (`ground.rs`).
+//!   modelled). Their inputs enter the contact model, read at the world's
+//!   time ([`crate::GroundTop::try_with_inputs`]); neither the methods nor
+//!   the tolerance change their plan (`ground.rs`).
 //! - With a [`Tolerance`] ([`World::set_tolerance`]) each body that steps
 //!   takes the cheapest method and sub-steps predicted to meet it
 //!   ([`World::choice`]).

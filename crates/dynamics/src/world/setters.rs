@@ -202,8 +202,7 @@ impl World {
     ///
     /// # Errors
     /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidInput`] as
-    /// [`Inputs::validate`]; [`DynamicsError::InvalidBody`] for inputs on
-    /// a body on the ground; [`DynamicsError::MethodTakesNoInputs`] when
+    /// [`Inputs::validate`]; [`DynamicsError::MethodTakesNoInputs`] when
     /// the world's free-body method (heavy-top method, on a pivot) cannot
     /// move a body with inputs. On an error nothing changes.
     ///
@@ -226,7 +225,17 @@ impl World {
     pub fn set_inputs(&mut self, id: BodyId, inputs: Inputs) -> Result<(), DynamicsError> {
         let entry = self.entry(id)?;
         inputs.validate()?;
-        super::body::refuse_inputs_on_ground(entry.body.support(), &inputs)?;
+        if let super::plan::Motion::Ground(ground) = &entry.motion {
+            // The contact model takes the inputs as they are (its RK4 has
+            // no splitting to choose); its state stays.
+            let top = ground.top.clone().try_with_inputs(inputs.clone())?;
+            let index = id.0;
+            self.entries[index].body.set_inputs(inputs);
+            if let super::plan::Motion::Ground(ground) = &mut self.entries[index].motion {
+                ground.top = top;
+            }
+            return Ok(());
+        }
         if !inputs.is_none() {
             if entry.top.is_some() {
                 super::Plan::driven_top_splitting(self.heavy_top_method())?;
