@@ -17,49 +17,12 @@ use kreisel::dynamics::{
     MAX_OTHER_CONTACTS, SphereContact,
 };
 
-use common::tippe_top::{G, leine_glocker};
-
-/// The stem's ball of Leine & Glocker's top: radius, m, and its centre's
-/// distance from the centre of mass along e₃, m (the demo's geometry,
-/// `examples/tippe_top/simulation.rs`, and the generator's).
-const STEM_R: f64 = 0.005;
-const STEM_C: f64 = 0.016;
-
-fn stem() -> ContactShape {
-    ContactShape::Sphere(SphereContact::try_new(STEM_R, DVec3::new(0.0, 0.0, STEM_C)).unwrap())
-}
+use common::tippe_top::{G, leine_glocker, stem, touchdown_reference};
 
 /// The tippe top with `friction`, watching its stem ball.
 fn tippe_top_with_stem(friction: Friction) -> (GroundTop, GroundTopState) {
     let (top, s) = leine_glocker(friction);
     (top.try_with_other_contacts(&[stem()]).unwrap(), s)
-}
-
-/// The generator's touchdown row for `scenario`: its time (rtol 1e-13),
-/// the same run's time at rtol 1e-11, the approach speed and the state.
-fn reference(scenario: &str) -> (f64, f64, f64, GroundTopState) {
-    let path = format!(
-        "{}/tests/data/contact/tippe_top_touchdown.csv",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let line = text
-        .lines()
-        .skip(1)
-        .find(|l| l.starts_with(&format!("{scenario},")))
-        .unwrap_or_else(|| panic!("no {scenario} row in {path}"));
-    let x: Vec<f64> = line
-        .split(',')
-        .skip(1)
-        .map(|v| v.parse().unwrap())
-        .collect();
-    let state = GroundTopState {
-        com_world: DVec3::new(x[3], x[4], x[5]),
-        velocity_world: DVec3::new(x[6], x[7], x[8]),
-        world_from_body: DQuat::from_xyzw(x[10], x[11], x[12], x[9]),
-        l_world: DVec3::new(x[13], x[14], x[15]),
-    };
-    (x[0], x[1], x[2], state)
 }
 
 /// The touchdown error's fields, or a panic with what came instead.
@@ -78,7 +41,12 @@ fn touchdown(result: Result<impl std::fmt::Debug, DynamicsError>) -> (f64, usize
 /// `rel` relative, the approach speed and the state loosely (they change
 /// fast there), the stem's gap at the reported state to round-off.
 fn against_generator(scenario: &str, top: &GroundTop, s: &GroundTopState, time: f64, speed: f64) {
-    let (t_ref, t_coarse, speed_ref, s_ref) = reference(scenario);
+    let common::tippe_top::Touchdown {
+        time: t_ref,
+        time_coarse: t_coarse,
+        approach_speed: speed_ref,
+        state: s_ref,
+    } = touchdown_reference(scenario);
     let gap = top.other_gap(s, 0).unwrap();
     eprintln!(
         "{scenario}: touchdown at {time} s, generator {t_ref} s (its rtol 1e-11 run: {t_coarse}), \

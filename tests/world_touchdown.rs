@@ -17,20 +17,12 @@ use kreisel::dynamics::{
     SphereContact, World,
 };
 
-use common::tippe_top::{A, G, I1, I3, M, MU, OMEGA0, R, THETA0};
+use common::tippe_top::{
+    A, G, I1, I3, M, MU, OMEGA0, R, STEM_C, STEM_R, THETA0, stem, touchdown_reference,
+};
 
 /// The world's gravity.
 const GRAVITY: DVec3 = DVec3::new(0.0, 0.0, -G);
-
-/// The stem's ball: radius, m, and its centre's distance from the centre
-/// of mass along e₃, m (the generator's geometry, as in
-/// `tests/contact_touchdown.rs`).
-const STEM_R: f64 = 0.005;
-const STEM_C: f64 = 0.016;
-
-fn stem() -> ContactShape {
-    ContactShape::Sphere(SphereContact::try_new(STEM_R, DVec3::new(0.0, 0.0, STEM_C)).unwrap())
-}
 
 /// Leine & Glocker's tippe top on the ground with `friction`, watching
 /// its stem ball.
@@ -48,27 +40,6 @@ fn stem_gap(position: DVec3, world_from_body: DQuat) -> f64 {
     position.z + (world_from_body.normalize() * DVec3::new(0.0, 0.0, STEM_C)).z - STEM_R
 }
 
-/// The generator's `scenario` row: touchdown time (rtol 1e-13), the same
-/// at rtol 1e-11, the approach speed, m/s.
-fn reference(scenario: &str) -> (f64, f64, f64) {
-    let path = format!(
-        "{}/tests/data/contact/tippe_top_touchdown.csv",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let line = text
-        .lines()
-        .find(|l| l.starts_with(&format!("{scenario},")))
-        .unwrap_or_else(|| panic!("no {scenario} row in {path}"));
-    let x: Vec<f64> = line
-        .split(',')
-        .skip(1)
-        .take(3)
-        .map(|v| v.parse().unwrap())
-        .collect();
-    (x[0], x[1], x[2])
-}
-
 // Measured (dt = 1e-5 s): see the eprintln.
 #[test]
 fn the_stem_touches_down_in_the_world_at_the_generators_time() {
@@ -83,7 +54,12 @@ fn the_viscous_stem_touches_down_in_the_world_at_the_generators_time() {
 /// The world runs the tippe top with `friction` until its stem touches
 /// down; checked against the generator's `scenario` row.
 fn stem_touchdown(scenario: &str, friction: Friction) {
-    let (t_ref, t_coarse, speed_ref) = reference(scenario);
+    let reference = touchdown_reference(scenario);
+    let (t_ref, t_coarse, speed_ref) = (
+        reference.time,
+        reference.time_coarse,
+        reference.approach_speed,
+    );
     let body = tippe_top(friction).try_build().unwrap();
     assert_eq!(body.other_contacts(), &[stem()]);
     let mut world = World::try_new(GRAVITY, 1e-5).unwrap();

@@ -2,7 +2,7 @@
 //! shared test problem of `tests/contact_*.rs` and `benches/tippe_top.rs`.
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
-use kreisel::dynamics::{Friction, GroundTop, GroundTopState, SphereContact};
+use kreisel::dynamics::{ContactShape, Friction, GroundTop, GroundTopState, SphereContact};
 
 /// Mass, kg.
 pub const M: f64 = 0.006;
@@ -61,4 +61,59 @@ pub fn distance(a: &[f64], b: &[f64]) -> f64 {
         .map(|(x, y)| (x - y).powi(2))
         .sum::<f64>()
         .sqrt()
+}
+
+/// The stem's ball: radius, m, and its centre's distance from the centre
+/// of mass along e₃, m (the demo's geometry,
+/// `examples/tippe_top/simulation.rs`, and the generator's).
+pub const STEM_R: f64 = 0.005;
+/// See [`STEM_R`].
+pub const STEM_C: f64 = 0.016;
+
+/// The stem's ball as a contact shape.
+pub fn stem() -> ContactShape {
+    ContactShape::Sphere(SphereContact::try_new(STEM_R, DVec3::new(0.0, 0.0, STEM_C)).unwrap())
+}
+
+/// The committed generator's stem touchdown for `scenario`
+/// (`tests/data/gen/tippe_top.py --touchdown`).
+pub struct Touchdown {
+    /// Its time at rtol 1e-13, s.
+    pub time: f64,
+    /// The same run's time at rtol 1e-11, s.
+    pub time_coarse: f64,
+    /// The stem ball's approach speed, m/s.
+    pub approach_speed: f64,
+    /// The state there.
+    pub state: GroundTopState,
+}
+
+/// The generator's touchdown row for `scenario` (`sliding`, `viscous`).
+pub fn touchdown_reference(scenario: &str) -> Touchdown {
+    let path = format!(
+        "{}/tests/data/contact/tippe_top_touchdown.csv",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let line = text
+        .lines()
+        .skip(1)
+        .find(|l| l.starts_with(&format!("{scenario},")))
+        .unwrap_or_else(|| panic!("no {scenario} row in {path}"));
+    let x: Vec<f64> = line
+        .split(',')
+        .skip(1)
+        .map(|v| v.parse().unwrap())
+        .collect();
+    Touchdown {
+        time: x[0],
+        time_coarse: x[1],
+        approach_speed: x[2],
+        state: GroundTopState {
+            com_world: DVec3::new(x[3], x[4], x[5]),
+            velocity_world: DVec3::new(x[6], x[7], x[8]),
+            world_from_body: DQuat::from_xyzw(x[10], x[11], x[12], x[9]),
+            l_world: DVec3::new(x[13], x[14], x[15]),
+        },
+    }
 }

@@ -257,27 +257,19 @@ fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, CliError> {
         )?;
         keys.positive("contact.radius", r)
     };
+    if name != ShapeName::Ellipsoid {
+        let why = "is only for an ellipsoid";
+        not_with(keys, "semi_axes", &raw.semi_axes, why)?;
+    }
     match name {
         ShapeName::Sphere => {
             not_with(keys, "normal", &raw.normal, "is only for a disk (its axis)")?;
-            not_with(
-                keys,
-                "semi_axes",
-                &raw.semi_axes,
-                "is only for an ellipsoid",
-            )?;
             let radius = radius_of(keys)?;
             let sphere = SphereContact::try_new(radius, center)
                 .map_err(|e| keys.fail(&raw.shape, &format!("`contact`: {e}")))?;
             Ok(ContactShape::Sphere(sphere))
         }
         ShapeName::Disk => {
-            not_with(
-                keys,
-                "semi_axes",
-                &raw.semi_axes,
-                "is only for an ellipsoid",
-            )?;
             let radius = radius_of(keys)?;
             let normal = required(
                 keys,

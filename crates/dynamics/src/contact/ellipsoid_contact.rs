@@ -79,13 +79,7 @@ impl EllipsoidContact {
                 reason: "every semi-axis must be positive and finite",
             });
         }
-        if let Some(x) = center_body.to_array().into_iter().find(|x| !x.is_finite()) {
-            return Err(DynamicsError::InvalidContact {
-                parameter: "center",
-                value: x,
-                reason: "must be finite",
-            });
-        }
+        super::sphere_contact::check_center(center_body)?;
         Ok(Self {
             semi_axes,
             center_body,

@@ -52,13 +52,7 @@ impl SphereContact {
                 reason: "must be positive and finite",
             });
         }
-        if let Some(x) = center_body.to_array().into_iter().find(|x| !x.is_finite()) {
-            return Err(DynamicsError::InvalidContact {
-                parameter: "center",
-                value: x,
-                reason: "must be finite",
-            });
-        }
+        check_center(center_body)?;
         Ok(Self {
             radius,
             center_body,
@@ -98,6 +92,19 @@ impl SphereContact {
     pub(crate) fn offset_and_rate(&self, q: DQuat, omega_world: DVec3) -> (DVec3, DVec3) {
         let c = q * self.center_body;
         (c - self.radius * DVec3::Z, omega_world.cross(c))
+    }
+}
+
+/// [`DynamicsError::InvalidContact`] for a shape's centre that is not
+/// finite.
+pub(super) fn check_center(center_body: DVec3) -> Result<(), DynamicsError> {
+    match center_body.to_array().into_iter().find(|x| !x.is_finite()) {
+        Some(x) => Err(DynamicsError::InvalidContact {
+            parameter: "center",
+            value: x,
+            reason: "must be finite",
+        }),
+        None => Ok(()),
     }
 }
 
