@@ -16,7 +16,7 @@ use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
-use kreisel::dynamics::{ContactShape, Friction, SphereContact};
+use kreisel::dynamics::Friction;
 
 #[allow(dead_code)]
 #[path = "../tests/common/tippe_top.rs"]
@@ -52,10 +52,7 @@ fn step(c: &mut Criterion) {
     // The same sliding top watching its stem's ball for touchdown
     // (`GroundTop::try_with_other_contacts`): the cost of the gap checks.
     let (top, start) = leine_glocker(Friction::try_sliding(0.3, 1e-3).unwrap());
-    let stem = SphereContact::try_new(0.005, DVec3::new(0.0, 0.0, 0.016)).unwrap();
-    let top = top
-        .try_with_other_contacts(&[ContactShape::Sphere(stem)])
-        .unwrap();
+    let top = top.try_with_other_contacts(&[tippe_top::stem()]).unwrap();
     group.bench_with_input(
         BenchmarkId::from_parameter("sliding_eps1mm_stem_watched"),
         &start,
