@@ -11,7 +11,7 @@ use kreisel_plot::ImageFormat;
 use super::chart::{History, OmegaData, omega_figure};
 use super::frame::{FrameRenderer, Overlay};
 use super::options::{HEADLESS_DURATION, Options};
-use super::output_file::{PendingFile, write_whole};
+use super::output_file::{PendingFile, check_directory, write_whole};
 use super::physics::{Handle, Prediction, Simulation};
 use super::report::{result_lines, significant};
 use super::{DemoError, gif_out};
@@ -106,25 +106,6 @@ pub fn run(
         writeln!(out, "wrote {}", path.display())?;
     }
     Ok(())
-}
-
-/// Fails unless the directory `path` is to be written in exists.
-fn check_directory(path: &Path) -> Result<(), DemoError> {
-    let dir = match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir,
-        _ => Path::new("."),
-    };
-    if dir.is_dir() {
-        Ok(())
-    } else {
-        Err(DemoError::Write {
-            path: path.to_path_buf(),
-            source: std::io::Error::new(
-                std::io::ErrorKind::NotFound,
-                format!("no directory {}", dir.display()),
-            ),
-        })
-    }
 }
 
 /// The GIF, rendered at `--fps` of simulated time and streamed to a

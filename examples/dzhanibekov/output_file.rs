@@ -73,6 +73,29 @@ impl Drop for PendingFile {
     }
 }
 
+/// Fails unless the directory `path` is to be written in exists (checked
+/// before a long run, so that its output is not lost at the end).
+///
+/// # Errors
+/// [`DemoError::Write`] naming `path`.
+pub fn check_directory(path: &Path) -> Result<(), DemoError> {
+    let dir = match path.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => Path::new("."),
+    };
+    if dir.is_dir() {
+        Ok(())
+    } else {
+        Err(DemoError::Write {
+            path: path.to_path_buf(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                format!("no directory {}", dir.display()),
+            ),
+        })
+    }
+}
+
 /// Writes `bytes` to `path` whole or not at all.
 ///
 /// # Errors

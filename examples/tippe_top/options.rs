@@ -1,6 +1,6 @@
 //! The demo's command line.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Parser;
 use kreisel::dynamics::Friction;
@@ -64,25 +64,6 @@ pub enum FrictionChoice {
 pub const MAX_DURATION: f64 = 1000.0;
 /// The shortest and longest steps accepted, s.
 pub const DT_RANGE: (f64, f64) = (1e-7, 1e-3);
-
-/// Fails unless the directory `path` is to be written in exists.
-fn check_directory(path: &Path) -> Result<(), DemoError> {
-    let dir = match path.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir,
-        _ => Path::new("."),
-    };
-    if dir.is_dir() {
-        Ok(())
-    } else {
-        Err(DemoError::Write {
-            path: path.to_path_buf(),
-            source: std::io::Error::new(
-                std::io::ErrorKind::NotFound,
-                format!("no directory {}", dir.display()),
-            ),
-        })
-    }
-}
 
 /// `Err(DemoError::Option)` unless `ok`.
 fn check(ok: bool, name: &'static str, value: f64, range: &'static str) -> Result<(), DemoError> {
@@ -149,7 +130,7 @@ impl Options {
             return Err(DemoError::PlotFormat { path: path.clone() });
         }
         for path in self.gif.iter().chain(&self.plot) {
-            check_directory(path)?;
+            super::shared::output_file::check_directory(path)?;
         }
         Ok(())
     }

@@ -138,6 +138,9 @@ impl AdaptiveTolerance {
     pub fn new(rtol: f64, atol: f64) -> Self {
         match Self::try_new(rtol, atol) {
             Ok(tol) => tol,
+            // The documented panic of the `new` half of the `new`/`try_new`
+            // pair, for tolerances written in code; no input path (CLI,
+            // Python, World) calls `new`.
             Err(e) => panic!("{e}"),
         }
     }

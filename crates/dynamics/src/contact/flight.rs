@@ -8,9 +8,6 @@ use glam::{DQuat, DVec3};
 use super::{GroundTop, GroundTopState};
 use crate::{DynamicsError, ExactSolution, PrincipalState, RigidBody};
 
-/// Bisection steps that locate a landing inside a sampling interval.
-const BISECTIONS: usize = 60;
-
 /// Samples per radian of the fastest possible turn, `|L|/I_min`: the gaps
 /// are checked at least every `1/16` rad of rotation.
 const SAMPLES_PER_RADIAN: f64 = 16.0;
@@ -189,20 +186,11 @@ impl GroundTop {
                 }
             }
             if let Some(hi) = hi {
-                let clear = |s: &GroundTopState| {
+                let clear = |_: f64, s: &GroundTopState| {
                     let g = self.all_gaps(s);
                     (0..g.len()).all(|j| !armed[j] || g[j].0 > 0.0)
                 };
-                let (mut lo, mut hi) = (tau_a, hi);
-                for _ in 0..BISECTIONS {
-                    let mid = 0.5 * (lo + hi);
-                    if clear(&flight.at(mid)) {
-                        lo = mid;
-                    } else {
-                        hi = mid;
-                    }
-                }
-                let at = flight.at(hi);
+                let (hi, at) = super::rk4::crossing((tau_a, hi), |tau| flight.at(tau), clear);
                 let gaps = self.all_gaps(&at);
                 let j = (0..gaps.len())
                     .filter(|&j| armed[j])

@@ -5,7 +5,7 @@
 use glam::{DMat3, DQuat, DVec2, DVec3};
 
 use super::applied_loads::AppliedLoads;
-use super::{ContactShape, Friction, MAX_OTHER_CONTACTS, SphereContact};
+use super::{ContactShape, Friction, SphereContact};
 use crate::DynamicsError;
 
 /// A rigid body whose sphere (or disk rim, [`GroundTop::try_with_shape`])
@@ -42,12 +42,9 @@ pub struct GroundTop {
     gravity: f64,
     shape: ContactShape,
     friction: Friction,
-    /// Further shapes watched for touchdown: the first `other_count`
-    /// (the other slots hold copies of `shape` and are never read; a fixed
-    /// array keeps the type `Copy`).
-    pub(super) others: [ContactShape; MAX_OTHER_CONTACTS],
-    /// How many of `others` are in use.
-    pub(super) other_count: usize,
+    /// Further shapes watched for touchdown (at most
+    /// [`super::MAX_OTHER_CONTACTS`]).
+    pub(super) others: Vec<ContactShape>,
     /// Applied torques and forces ([`GroundTop::try_with_inputs`]).
     pub(super) loads: Option<AppliedLoads>,
 }
@@ -217,8 +214,7 @@ impl GroundTop {
             gravity,
             shape,
             friction,
-            others: [shape; MAX_OTHER_CONTACTS],
-            other_count: 0,
+            others: Vec::new(),
             loads: None,
         })
     }

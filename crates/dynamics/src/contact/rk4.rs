@@ -9,8 +9,8 @@ use crate::{Divergence, DynamicsError};
 /// The method's name in [`DynamicsError::Diverged`].
 const METHOD: &str = "ground-top rk4";
 
-/// Bisection steps that locate a lift-off or a touchdown inside a step
-/// (2⁻⁶⁰ of it).
+/// Bisection steps that locate a lift-off, a touchdown or a landing inside
+/// its interval (2⁻⁶⁰ of it).
 const BISECTIONS: usize = 60;
 
 /// `Σ wᵢ kᵢ` over Runge–Kutta stages (the normal force and compliance
@@ -34,6 +34,26 @@ pub(super) fn weighted(stages: &[Rates], weights: &[f64]) -> Rates {
         }
     }
     sum
+}
+
+/// The instant `τ ∈ (lo, hi]` where `holds(τ, at(τ))` first fails, found
+/// by bisection (it holds at `lo`, fails at `hi`), and the state there: a
+/// lift-off (`N > 0` fails), a touchdown or a landing (every gap positive
+/// fails). Shared by the steppers and the exact flight.
+pub(super) fn crossing(
+    (mut lo, mut hi): (f64, f64),
+    at: impl Fn(f64) -> GroundTopState,
+    holds: impl Fn(f64, &GroundTopState) -> bool,
+) -> (f64, GroundTopState) {
+    for _ in 0..BISECTIONS {
+        let mid = 0.5 * (lo + hi);
+        if holds(mid, &at(mid)) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    (hi, at(hi))
 }
 
 /// A trial step: the state it ends at, the smallest normal force and
@@ -198,7 +218,7 @@ impl GroundTop {
                 normal_force: normal_min,
             });
         }
-        if end.normal_force > 0.0 && self.other_count == 0 {
+        if end.normal_force > 0.0 && self.others.is_empty() {
             *state = next;
             return Ok(());
         }
@@ -220,7 +240,7 @@ impl GroundTop {
         redo: impl Fn(&GroundTopState, f64) -> GroundTopState,
     ) -> Result<(), DynamicsError> {
         let start = *state;
-        let touch_by = if self.other_count == 0 {
+        let touch_by = if self.others.is_empty() {
             None
         } else {
             self.touchdown_bound(&start, &next, time, h, |tau| redo(&start, tau))?
@@ -230,14 +250,19 @@ impl GroundTop {
             return Ok(());
         }
         let lift = lost.then(|| {
-            self.crossing_in(
-                h,
+            crossing(
+                (0.0, h),
                 |tau| redo(&start, tau),
                 |tau, s| self.rates(time + tau, s).normal_force > 0.0,
             )
         });
-        let touch = touch_by
-            .map(|hi| self.crossing_in(hi, |tau| redo(&start, tau), |_, s| self.others_clear(s)));
+        let touch = touch_by.map(|hi| {
+            crossing(
+                (0.0, hi),
+                |tau| redo(&start, tau),
+                |_, s| self.others_clear(s),
+            )
+        });
         match (lift, touch) {
             (Some((t_lift, _)), Some((tau, at))) if tau < t_lift => {
                 *state = at;
@@ -260,28 +285,6 @@ impl GroundTop {
                 Ok(())
             }
         }
-    }
-
-    /// The instant `τ ∈ (0, h]` where `holds` first fails along the step
-    /// `redo(τ)` (bisection; it holds at the start, fails at `h`), and the
-    /// state there: the lift-off (`N > 0`) or a touchdown (every further
-    /// gap positive).
-    fn crossing_in(
-        &self,
-        h: f64,
-        redo: impl Fn(f64) -> GroundTopState,
-        holds: impl Fn(f64, &GroundTopState) -> bool,
-    ) -> (f64, GroundTopState) {
-        let (mut lo, mut hi) = (0.0, h);
-        for _ in 0..BISECTIONS {
-            let mid = 0.5 * (lo + hi);
-            if holds(mid, &redo(mid)) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        (hi, redo(hi))
     }
 
     /// Takes `steps` steps of `h` from `time`, calling `observe(t, state)`

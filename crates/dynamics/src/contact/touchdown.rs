@@ -9,8 +9,8 @@ use super::{ContactShape, GroundTop, GroundTopState};
 use crate::DynamicsError;
 
 /// The most further contact shapes a [`GroundTop`] watches
-/// ([`GroundTop::try_with_other_contacts`]); a fixed capacity keeps
-/// [`GroundTop`] `Copy` and free of allocation.
+/// ([`GroundTop::try_with_other_contacts`]); a fixed capacity keeps the
+/// gap checks after each step free of allocation.
 pub const MAX_OTHER_CONTACTS: usize = 4;
 
 /// The lowest point of `shape` seen from the centre of mass, world axes,
@@ -73,16 +73,14 @@ impl GroundTop {
                 reason: "too many further contact shapes (at most MAX_OTHER_CONTACTS = 4)",
             });
         }
-        self.others = [self.shape(); MAX_OTHER_CONTACTS];
-        self.others[..others.len()].copy_from_slice(others);
-        self.other_count = others.len();
+        self.others = others.to_vec();
         Ok(self)
     }
 
     /// The further contact shapes watched for touchdown
     /// ([`GroundTop::try_with_other_contacts`]; empty by default).
     pub fn other_contacts(&self) -> &[ContactShape] {
-        &self.others[..self.other_count]
+        &self.others
     }
 
     /// The gap of further contact `contact`, the height of its lowest
@@ -114,7 +112,7 @@ impl GroundTop {
     /// The further contact with the smallest gap, and that gap (`None`
     /// without further contacts).
     fn lowest_other(&self, state: &GroundTopState) -> Option<(usize, f64)> {
-        (0..self.other_count)
+        (0..self.others.len())
             .filter_map(|i| Some((i, self.other_gap(state, i)?)))
             .min_by(|a, b| a.1.total_cmp(&b.1))
     }
@@ -176,7 +174,7 @@ impl GroundTop {
         h: f64,
         redo: impl Fn(f64) -> GroundTopState,
     ) -> Result<Option<f64>, DynamicsError> {
-        let n = self.other_count;
+        let n = self.others.len();
         let begin = self.other_gaps(start);
         if begin.0[..n].iter().any(|&g| g.is_nan() || g <= 0.0) {
             return Err(self.touchdown_at(start, time));

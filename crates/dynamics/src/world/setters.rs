@@ -223,19 +223,21 @@ impl World {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn set_inputs(&mut self, id: BodyId, inputs: Inputs) -> Result<(), DynamicsError> {
-        let entry = self.entry(id)?;
+        self.entry(id)?;
         inputs.validate()?;
-        if let super::plan::Motion::Ground(ground) = &entry.motion {
+        if let Some(super::Entry {
+            motion: super::plan::Motion::Ground(ground),
+            body,
+            ..
+        }) = self.entries.get_mut(id.0)
+        {
             // The contact model takes the inputs as they are (its RK4 has
             // no splitting to choose); its state stays.
-            let top = ground.top.clone().try_with_inputs(inputs.clone())?;
-            let index = id.0;
-            self.entries[index].body.set_inputs(inputs);
-            if let super::plan::Motion::Ground(ground) = &mut self.entries[index].motion {
-                ground.top = top;
-            }
+            ground.top = ground.top.clone().try_with_inputs(inputs.clone())?;
+            body.set_inputs(inputs);
             return Ok(());
         }
+        let entry = self.entry(id)?;
         if !inputs.is_none() {
             if entry.top.is_some() {
                 super::Plan::driven_top_splitting(self.heavy_top_method())?;
