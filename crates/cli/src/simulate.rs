@@ -585,6 +585,8 @@ fn diverged(
             "body `{body}`: method {used} diverged at t = {} s ({reason}); {hint}",
             crate::numbers::Shortest(*time)
         ),
+        // Its message says when, what drifted and what to change.
+        DynamicsError::GroundCheckFailed { .. } => format!("body `{body}`: {error}"),
         DynamicsError::ContactLost { .. }
         | DynamicsError::DiskFlat { .. }
         | DynamicsError::ContactIndeterminate { .. } => format!(

@@ -116,6 +116,20 @@ pub enum DynamicsError {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A body on the ground failed its guard ([`crate::GroundCheck`]):
+    /// the step is too large for its motion, or its friction too stiff for
+    /// an explicit step; the state is the one before the step.
+    #[error(
+        "the ground contact's check failed at t = {time} s: {violation} (steps of {step} s are too large for this motion: use a smaller dt)"
+    )]
+    GroundCheckFailed {
+        /// The time of the state that failed, s.
+        time: f64,
+        /// The step that reached it, s.
+        step: f64,
+        /// Which check failed.
+        violation: crate::GroundViolation,
+    },
     /// A time a [`crate::World`] cannot advance to.
     #[error("cannot advance the world from t = {now} s to t = {t} s: {reason}")]
     InvalidTime {

@@ -86,7 +86,8 @@ mod world;
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
 pub use contact::{
     AdaptiveStats, AdaptiveTolerance, ContactShape, DiskContact, EllipsoidContact, Friction,
-    FrictionModel, GroundTop, GroundTopState, Landing, MAX_OTHER_CONTACTS, SphereContact,
+    FrictionModel, GROUND_CHECK_TOLERANCE, GroundCheck, GroundTop, GroundTopState, GroundViolation,
+    Landing, MAX_OTHER_CONTACTS, SphereContact,
 };
 pub use divergence::{DIVERGENCE_FACTOR, DivergenceCheck};
 pub use error::{Divergence, DynamicsError};

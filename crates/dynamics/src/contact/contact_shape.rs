@@ -35,6 +35,25 @@ impl ContactShape {
         }
     }
 
+    /// The shape's size `ℓ`, m: a sphere's or a rim's radius, an
+    /// ellipsoid's smallest semi-axis (the scale of the guard's contact
+    /// check, [`crate::GROUND_CHECK_TOLERANCE`]).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{ContactShape, EllipsoidContact};
+    /// let e = EllipsoidContact::try_new(DVec3::new(0.2, 0.03, 0.02), DVec3::ZERO)?;
+    /// assert_eq!(ContactShape::Ellipsoid(e).size(), 0.02);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn size(&self) -> f64 {
+        match self {
+            Self::Sphere(s) => s.radius(),
+            Self::Disk(d) => d.radius(),
+            Self::Ellipsoid(e) => e.semi_axes().min_element(),
+        }
+    }
+
     /// The shape's centre seen from the centre of mass, world axes: `A c`.
     pub fn center_from_com_world(&self, world_from_body: DQuat) -> DVec3 {
         let c = match self {

@@ -20,6 +20,9 @@
 //!   ball) watched for touchdown, reported with its time;
 //! - [`GroundTop::try_fly`]: after a lift-off, the exact ballistic flight
 //!   until a shape lands ([`Landing`], with its time);
+//! - [`GroundCheck`]: the guard after every step of a run (|q|, the
+//!   contact on the plane, the centre of mass above it, the energy), a
+//!   typed error with its time beyond [`GROUND_CHECK_TOLERANCE`];
 //! - [`GroundTop::try_advance_adaptive`]: Dormand–Prince 5(4) with
 //!   step-size control to an [`AdaptiveTolerance`], the same contact
 //!   checks, statistics in [`AdaptiveStats`].
@@ -241,6 +244,7 @@ mod disk_contact;
 mod ellipsoid_contact;
 mod flight;
 mod friction;
+mod ground_check;
 mod ground_top;
 mod rk4;
 mod sphere_contact;
@@ -252,6 +256,7 @@ pub use self::disk_contact::DiskContact;
 pub use self::ellipsoid_contact::EllipsoidContact;
 pub use self::flight::Landing;
 pub use self::friction::{Friction, FrictionModel};
+pub use self::ground_check::{GROUND_CHECK_TOLERANCE, GroundCheck, GroundViolation};
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;
 pub use self::touchdown::MAX_OTHER_CONTACTS;

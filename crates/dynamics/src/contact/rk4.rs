@@ -3,7 +3,7 @@
 use glam::{DQuat, DVec3};
 
 use super::ground_top::Rates;
-use super::{GroundTop, GroundTopState};
+use super::{GroundCheck, GroundTop, GroundTopState};
 use crate::{Divergence, DynamicsError};
 
 /// The method's name in [`DynamicsError::Diverged`].
@@ -288,11 +288,15 @@ impl GroundTop {
     }
 
     /// Takes `steps` steps of `h` from `time`, calling `observe(t, state)`
-    /// after each, and returns the final time.
+    /// after each, and returns the final time. Every step is checked by a
+    /// [`GroundCheck`] started at `state`.
     ///
     /// # Errors
     /// As [`GroundTop::try_step`], at the first step that fails (`state`
-    /// left as that function says).
+    /// left as that function says);
+    /// [`DynamicsError::GroundCheckFailed`] for a step whose state fails
+    /// the guard ([`crate::GROUND_CHECK_TOLERANCE`]), `state` left at the
+    /// step's start.
     ///
     /// ```
     /// use glam::{DMat3, DQuat, DVec2, DVec3};
@@ -316,10 +320,16 @@ impl GroundTop {
         steps: usize,
         mut observe: impl FnMut(f64, &GroundTopState),
     ) -> Result<f64, DynamicsError> {
+        let mut check = GroundCheck::new(self, state);
         let mut t = time;
         for n in 0..steps {
+            let start = *state;
             self.try_step(state, t, h)?;
             t = time + (n + 1) as f64 * h;
+            if let Err(e) = check.check(self, state, t, h) {
+                *state = start;
+                return Err(e);
+            }
             observe(t, state);
         }
         Ok(t)

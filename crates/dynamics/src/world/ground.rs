@@ -25,6 +25,15 @@
 //! ([`DynamicsError::BodyFailed`]); the body holds the state the model
 //! left (at lift-off: the state where the normal force reached zero).
 //!
+//! Every sub-step is checked by the body's [`GroundCheck`] (|q|, the
+//! contact point on the plane, the centre of mass above it, the energy
+//! not rising under friction nor drifting without it, beyond
+//! [`crate::GROUND_CHECK_TOLERANCE`]): a step too large for the motion —
+//! a game frame of 1/60 s for a spinning top — is the world's failure
+//! with the source [`DynamicsError::GroundCheckFailed`] and its time, the
+//! body left at the last state that passed. A setter starts the checks
+//! again from the new state; applied loads switch the energy check off.
+//!
 //! A body may carry further contact shapes that do not touch
 //! ([`crate::BodyBuilder::other_contacts`], the stem's ball of a tippe
 //! top): its [`GroundTop`] watches them
@@ -43,7 +52,9 @@ use super::clock::WHOLE_STEPS_TOLERANCE;
 use super::plan::Motion;
 use super::state::Reading;
 use super::{Body, BodyId, BodyState, Entry, Plan, Support, World};
-use crate::{ContactShape, DynamicsError, Friction, GroundTop, GroundTopState, PrincipalState};
+use crate::{
+    ContactShape, DynamicsError, Friction, GroundCheck, GroundTop, GroundTopState, PrincipalState,
+};
 
 /// A body on the ground as the world moves it: its contact model, its
 /// state, and the rotation from principal to body axes (to report the
@@ -53,6 +64,8 @@ pub(crate) struct GroundMotion {
     pub(crate) top: GroundTop,
     pub(crate) state: GroundTopState,
     body_from_principal: DQuat,
+    /// The guard, started where the body was last placed.
+    check: GroundCheck,
 }
 
 /// `g` of a world whose gravity is `(0, 0, −g)`, `g > 0`.
@@ -103,6 +116,14 @@ fn place(
     };
     state.com_world.x += position_xy.x;
     state.com_world.y += position_xy.y;
+    if state.com_world.z < 0.0 {
+        // Every part of a body on the table is above it, so is their mean.
+        return Err(DynamicsError::InvalidBody {
+            field: "contact",
+            reason: "touching the plane puts the centre of mass below it: a body on the table \
+                     has all its mass above the plane (is the contact shape's centre right?)",
+        });
+    }
     check_others_clear(top, &state)?;
     Ok(state)
 }
@@ -144,25 +165,40 @@ impl GroundMotion {
             .try_with_other_contacts(body.other_contacts())?;
         let state = place(&top, q, omega_world, position_xy, velocity_xy)?;
         Ok(Self {
+            check: GroundCheck::new(&top, &state),
             top,
             state,
             body_from_principal: body.rigid_body().body_from_principal(),
         })
     }
 
-    /// One step of `h` from time `t`: equal sub-steps of at most `dt`.
+    /// One step of `h` from time `t`: equal sub-steps of at most `dt`,
+    /// each checked by the body's [`GroundCheck`].
     ///
     /// # Errors
     /// The errors of [`GroundTop::try_step`] (lift-off, a further shape's
-    /// touchdown, a disk flat, Painlevé, divergence), with their time.
+    /// touchdown, a disk flat, Painlevé, divergence), with their time;
+    /// [`DynamicsError::GroundCheckFailed`] for a sub-step whose state
+    /// fails the guard (the state is left at the sub-step's start).
     pub(crate) fn step(&mut self, t: f64, h: f64, dt: f64) -> Result<(), DynamicsError> {
         let n = substeps(h, dt);
         let sub = h / n as f64;
         for j in 0..n {
-            self.top
-                .try_step(&mut self.state, t + j as f64 * sub, sub)?;
+            let start = self.state;
+            let t_j = t + j as f64 * sub;
+            self.top.try_step(&mut self.state, t_j, sub)?;
+            if let Err(e) = self.check.check(&self.top, &self.state, t_j + sub, sub) {
+                self.state = start;
+                return Err(e);
+            }
         }
         Ok(())
+    }
+
+    /// Starts the guard again from the current state (after a setter or
+    /// new inputs: the energy it compares with has changed).
+    pub(crate) fn restart_check(&mut self) {
+        self.check = GroundCheck::new(&self.top, &self.state);
     }
 
     /// The rotational state as the other plans hold it: principal axes,
@@ -277,6 +313,8 @@ impl World {
             now.com_world.truncate(),
             velocity_xy,
         )?;
+        // A setter changes the energy: the guard starts again here.
+        ground.restart_check();
         entry.baseline = ground.principal_state();
         self.refresh_reading(index);
         Ok(())

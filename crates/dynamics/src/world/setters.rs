@@ -234,6 +234,7 @@ impl World {
             // The contact model takes the inputs as they are (its RK4 has
             // no splitting to choose); its state stays.
             ground.top = ground.top.clone().try_with_inputs(inputs.clone())?;
+            ground.restart_check();
             body.set_inputs(inputs);
             return Ok(());
         }
