@@ -69,18 +69,21 @@ pub fn sequence<T>(
     item: impl Fn(&str, &Bound<'_, PyAny>) -> PyResult<T>,
 ) -> PyResult<Vec<T>> {
     let expected = format!("a sequence of {n} {what}");
-    if value.is_instance_of::<PyString>() || value.is_instance_of::<PyBytes>() {
+    // Lists, tuples and numpy arrays (not a collections.abc.Sequence); not
+    // a string, whose characters are no numbers.
+    let is_sequence = value.cast::<PySequence>().is_ok() || value.hasattr("__array__")?;
+    if !is_sequence || value.is_instance_of::<PyString>() || value.is_instance_of::<PyBytes>() {
         return Err(wrong_type(name, &expected, value));
     }
-    let seq = value
-        .cast::<PySequence>()
+    // (a 0-dimensional array has no length)
+    let len = value
+        .len()
         .map_err(|_| wrong_type(name, &expected, value))?;
-    let len = seq.len()?;
     if len != n {
         return Err(error(format!("{name}: expected {expected}, got {len} items")));
     }
     (0..n)
-        .map(|i| item(&format!("{name}[{i}]"), &seq.get_item(i)?))
+        .map(|i| item(&format!("{name}[{i}]"), &value.get_item(i)?))
         .collect()
 }
 

@@ -185,13 +185,7 @@ fn simulate<'py>(
             .transpose()?;
         let columns = py
             .detach(|| run(&path, text, method, threads))
-            .map_err(|e| match e {
-                // The scene's own `method` key (no `method` argument given).
-                CliError::Method { message } if method.is_none() => {
-                    error(format!("scene: {message}"))
-                }
-                other => cli_error(other),
-            })?;
+            .map_err(cli_error)?;
         let dict = PyDict::new(py);
         let np = py.import("numpy")?;
         let mut numbers = columns.numbers.into_iter();

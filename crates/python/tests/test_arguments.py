@@ -6,6 +6,7 @@ an OverflowError). Table-driven: each callable x each argument x bad
 values; then one regression test per case the issue reported."""
 
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -27,9 +28,10 @@ VEC3 = [((1.0, 2.0), KE), ((1.0, 2.0, 3.0, 4.0), KE), ([], KE), (5.0, TE), ("abc
         ((1.0, "x", 3.0), TE), ((1.0, HUGE, 3.0), KE), ({"a": 1}, TE)]  # fmt: skip
 QUAT = [((1.0, 0.0, 0.0), KE), ((1.0, 0.0, 0.0, 0.0, 0.0), KE), (1.0, TE), ("wxyz", TE),
         ((1.0, None, 0.0, 0.0), TE)]  # fmt: skip
-FLOAT = [("abc", TE), (None, TE), (HUGE, KE), ([1.0], TE)]
+FLOAT = [("abc", TE), (HUGE, KE), ([1.0], TE)]  # None: the default of an optional one
 POSITIVE = FLOAT + [(0.0, KE), (-1.0, KE), (NAN, KE), (INF, KE)]
 FINITE = FLOAT + [(NAN, KE), (INF, KE)]
+REQUIRED = [(None, TE)]
 INDEX = [(-1, KE), (7, KE), (2**64, KE), (HUGE, KE), (1.0, TE), ("0", TE), (None, TE)]
 COUNT = [(-1, KE), (2**64, KE), (-HUGE, KE), (1.5, TE), ("3", TE)]
 BOOL = [("yes", TE), (None, TE)]
@@ -88,9 +90,9 @@ CALLABLES = [
      dict(scene=PATH + [(b"[simulation]\n", TE)], method=[("euler", KE), (3, TE)],
           threads=COUNT + [(0, KE)])),
     ("World", lambda: kreisel.World, dict(dt=0.01),
-     dict(dt=POSITIVE, gravity=VEC3 + [((0.0, NAN, 0.0), KE)], method=[("euler", KE), (3, TE)])),
+     dict(dt=POSITIVE + REQUIRED, gravity=VEC3 + [((0.0, NAN, 0.0), KE)], method=[("euler", KE), (3, TE)])),
     ("World.add_body", lambda: kreisel.World(0.01).add_body, dict(mass=1.0, moments=(1.0, 2.0, 3.0)),
-     dict(mass=POSITIVE, moments=VEC3 + [((1.0, -2.0, 3.0), KE)], attitude=QUAT + [((0.0,) * 4, KE)],
+     dict(mass=POSITIVE + REQUIRED, moments=VEC3 + [((1.0, -2.0, 3.0), KE)], attitude=QUAT + [((0.0,) * 4, KE)],
           omega_body=VEC3 + [((NAN, 0.0, 0.0), KE)], position=VEC3 + [((INF, 0.0, 0.0), KE)],
           velocity=VEC3 + [((NAN, 0.0, 0.0), KE)], pivot=VEC3 + [((NAN, 0.0, 0.0), KE)],
           torque=VEC3 + [((NAN, 0.0, 0.0), KE)], torque_body=VEC3 + [((INF, 0.0, 0.0), KE)],
@@ -105,16 +107,19 @@ CALLABLES = [
     ("World.set_rotation", lambda: world().set_rotation,
      dict(body=0, attitude=(1.0, 0.0, 0.0, 0.0), omega_body=(0.0, 0.0, 1.0)),
      dict(body=INDEX, attitude=QUAT, omega_body=VEC3)),
-    ("World.step", lambda: world().step, dict(h=0.01), dict(h=POSITIVE)),
+    ("World.step", lambda: world().step, dict(h=0.01), dict(h=POSITIVE + REQUIRED)),
     ("World.advance_steps", lambda: world().advance_steps, dict(n=3), dict(n=COUNT)),
-    ("World.advance_to", lambda: world().advance_to, dict(t=0.5), dict(t=FINITE + [(-1.0, KE)])),
+    ("World.advance_to", lambda: world().advance_to, dict(t=0.5), dict(t=FINITE + REQUIRED + [(-1.0, KE)])),
+    ("World.states", lambda: world().states, {}, {}),
     ("World.plan", lambda: world().plan, dict(body=0), dict(body=INDEX)),
     ("World.state", lambda: world().state, dict(body=0), dict(body=INDEX)),
     ("top", lambda: kreisel.top, TOP,
-     dict(i1=POSITIVE, i3=FINITE + [(0.7, KE), (-0.1, KE)], mgl=FINITE, theta0=FINITE,
+     dict(i1=POSITIVE + REQUIRED, i3=FINITE + REQUIRED + [(0.7, KE), (-0.1, KE)], mgl=FINITE + REQUIRED,
+          theta0=FINITE + REQUIRED,
           theta_dot0=FINITE, phi_dot0=FINITE, psi_dot0=FINITE)),
     ("LagrangeTop", lambda: kreisel.LagrangeTop, TOP,
-     dict(i1=POSITIVE, i3=FINITE + [(0.7, KE)], mgl=FINITE, theta0=FINITE, theta_dot0=FINITE,
+     dict(i1=POSITIVE + REQUIRED, i3=FINITE + [(0.7, KE)], mgl=FINITE, theta0=FINITE + REQUIRED,
+          theta_dot0=FINITE,
           phi_dot0=FINITE, psi_dot0=FINITE)),
     ("LagrangeTop.euler_at", lambda: lagrange_top().euler_at, dict(t=[0.0, 1.0]),
      dict(t=[([0.0, NAN], KE), ("soon", KE), (None, KE), ([[1.0], [2.0, 3.0]], KE)])),
@@ -135,7 +140,8 @@ CASES = [
 def names_the_argument(message, argument):
     """The message begins with the argument's name (`threads: …`,
     `faces[3, 2] = …`, `moments must be …`)."""
-    return re.match(rf"{re.escape(argument)}\b(?![-_])", message) is not None
+    name = re.escape(argument)
+    return re.match(rf"(argument '{name}': |{name}\b(?![-_]))", message) is not None
 
 
 @pytest.fixture(autouse=True)
@@ -168,7 +174,7 @@ def test_the_table_covers_every_public_callable():
     assert public - {"KreiselError"} == listed
     for cls in [kreisel.World, kreisel.LagrangeTop]:
         methods = {n for n in dir(cls) if not n.startswith("_") and callable(getattr(cls, n))}
-        covered = {name.split(".")[1] for name, *_ in CALLABLES if name.startswith(cls.__name__ + ".")}
+        covered = {name.split(".")[1].split("(")[0] for name, *_ in CALLABLES if name.startswith(cls.__name__ + ".")}
         assert methods == covered, cls
 
 
@@ -248,3 +254,59 @@ def test_top_names_the_python_argument_not_the_flag():
         with pytest.raises(kreisel.KreiselError) as e:
             make(0.3, 0.1, 2.0, 0.5, theta_dot0=NAN)
         assert str(e.value) == "theta_dot0: NaN is not a finite number"
+
+
+# --- the CLI's advice, worded with the Python keywords (typed variants of
+# the CLI's error, rebuilt in the Python layer)
+
+FIXTURES = Path(__file__).resolve().parents[3] / "crates" / "inertia" / "tests" / "fixtures"
+
+
+def test_cracks_advise_the_weld_keyword():
+    path = FIXTURES / "closed_in_practice" / "near_duplicates.stl"
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.mass_properties(path, weld="off")
+    assert str(e.value).endswith("; rerun with weld=2e-8 to close them")
+
+
+def test_open_bodies_closed_together_advise_merge(tmp_path):
+    path = tmp_path / "halves.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\no a\nf 1 3 2\nf 1 2 4\nf 1 4 3\no b\nf 2 3 4\n")
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.mass_properties(path)
+    assert str(e.value).endswith("rerun with merge=True to treat them as one solid")
+    assert kreisel.mass_properties(path, merge=True)["volume"] == pytest.approx(1 / 6, rel=1e-15)
+
+
+def test_open_mesh_advises_model_keywords():
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.mass_properties_from_arrays(TETRA_V, TETRA_F[:3])
+    assert str(e.value).endswith(
+        'if the surface is open on purpose, model="shell" models a thin-walled part '
+        '(see thickness) and model="hull" a convex one'
+    )
+
+
+def test_mesh_out_of_range_advises_units_or_scale():
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.mass_properties_from_arrays(TETRA_V, TETRA_F, scale=1e200)
+    assert str(e.value).endswith("(set with units or scale, metres per mesh unit)")
+
+
+def test_derived_density_names_mass():
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.mass_properties_from_arrays(TETRA_V, TETRA_F, mass=1e300, scale=1e-30)
+    assert str(e.value).startswith("mass: <arrays>: total volume ")
+    assert str(e.value).endswith("gives no finite positive density for mass 1e300 kg")
+
+
+def test_a_method_that_cannot_move_a_pivot():
+    # The scene's own method: the scene's line names the key; the argument's:
+    # the message names the argument.
+    scene = SCENE.replace("[simulation]\n", '[simulation]\nmethod = "dmv"\n') + "pivot = [0.0, 0.0, -0.1]\n"
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.simulate(scene)
+    assert str(e.value).startswith("<string>:2: `method`: method `dmv` cannot move a body with a `pivot`")
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.simulate(scene.replace('method = "dmv"\n', ""), method="dmv")
+    assert str(e.value).startswith("method: method `dmv` cannot move a body with a `pivot`")
