@@ -80,7 +80,9 @@ pub fn sequence<T>(
         .len()
         .map_err(|_| wrong_type(name, &expected, value))?;
     if len != n {
-        return Err(error(format!("{name}: expected {expected}, got {len} items")));
+        return Err(error(format!(
+            "{name}: expected {expected}, got {len} items"
+        )));
     }
     (0..n)
         .map(|i| item(&format!("{name}[{i}]"), &value.get_item(i)?))

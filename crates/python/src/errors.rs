@@ -13,7 +13,7 @@ pyo3::create_exception!(
     kreisel,
     KreiselError,
     PyValueError,
-    "Bad input to kreisel: the message is the CLI's one line (what is wrong and where)."
+    "Bad input to kreisel: the message is the CLI's one line (what is wrong and where); for a bad argument it begins with the argument's name."
 );
 
 /// A `KreiselError` with `message` (made one line, as the CLI prints it).

@@ -13,7 +13,7 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::arguments::{finite, integer, int, matrix3, named, numbers};
+use crate::arguments::{finite, int, integer, matrix3, named, numbers};
 use crate::errors::{error, guard};
 
 /// A world of rigid bodies that do not interact, each moved by the
