@@ -310,3 +310,16 @@ def test_a_method_that_cannot_move_a_pivot():
     with pytest.raises(kreisel.KreiselError) as e:
         kreisel.simulate(scene.replace('method = "dmv"\n', ""), method="dmv")
     assert str(e.value).startswith("method: method `dmv` cannot move a body with a `pivot`")
+
+
+def test_numpy_values_are_accepted_where_python_ones_are():
+    # numpy arrays as sequences, numpy scalars as numbers and integers.
+    w = kreisel.World(np.float32(0.5), gravity=np.zeros(3))
+    b = w.add_body(np.float64(2.0), inertia=np.diag([1.0, 2.0, 3.0]), omega_body=np.array([0.0, 0.0, 1.0]),
+                   attitude=np.array([2.0, 0.0, 0.0, 0.0]))  # fmt: skip
+    w.set_inputs(np.int64(b), torque=np.zeros(3, np.float32), angular_damping=np.float32(0.0))
+    w.advance_steps(np.uint64(4))
+    s = w.state(np.int32(b))
+    assert s["time"] == 2.0 and s["energy"] == 1.5  # 3 * 1^2 / 2, torque-free
+    assert kreisel.simulate(SCENE, threads=np.int64(1))["t"].tolist() == [0.0, 0.5, 1.0]
+    assert kreisel.top(np.float32(0.25), 0.125, 2, 0.5)["i1"] == 0.25
