@@ -1,7 +1,11 @@
 //! The package's one exception, `kreisel.KreiselError` (a `ValueError`),
-//! carrying the same one-line message as the CLI, and the guard that keeps
-//! a Rust panic from ever crossing into Python.
+//! carrying the same one-line message as the CLI (with the Python
+//! argument where the CLI names its option: `i3`, not `--i3`), and the
+//! guard that keeps a Rust panic from ever crossing into Python.
 
+use kreisel_cli::error::{BodyProblem, CliError, one_line};
+use kreisel_cli::numbers::Shortest;
+use kreisel_inertia::InertiaError;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -9,12 +13,81 @@ pyo3::create_exception!(
     kreisel,
     KreiselError,
     PyValueError,
-    "Bad input to kreisel: the message is the CLI's one line (what is wrong and where)."
+    "Bad input to kreisel: the message is the CLI's one line (what is wrong and where); for a bad argument it begins with the argument's name."
 );
 
 /// A `KreiselError` with `message` (made one line, as the CLI prints it).
 pub fn error(message: impl std::fmt::Display) -> PyErr {
     KreiselError::new_err(kreisel_cli::error::one_line(&message.to_string()))
+}
+
+/// The Python keyword of a command-line option: `--theta-dot0` is
+/// `theta_dot0` (the functions take the options as keywords of those names).
+fn keyword(option: &str) -> String {
+    option.trim_start_matches('-').replace('-', "_")
+}
+
+/// A `KreiselError` for an error of the CLI's code: its one line, but
+/// where it names a command-line option (a typed field, or a hint of the
+/// CLI's own wording) the Python argument instead.
+pub fn cli_error(e: CliError) -> PyErr {
+    match e {
+        CliError::Argument { argument, message } => {
+            error(format!("{}: {message}", keyword(&argument)))
+        }
+        CliError::Method { message } => error(format!("method: {message}")),
+        CliError::DerivedDensity { path, mass, volume } => error(format!(
+            "mass: {}: total volume {} m^3 gives no finite positive density for mass {} kg",
+            path.display(),
+            Shortest(volume),
+            Shortest(mass)
+        )),
+        CliError::Body {
+            path,
+            body,
+            problem,
+        } => error(format!(
+            "{}: body '{}': {}",
+            path.display(),
+            one_line(&body),
+            body_problem(&problem)
+        )),
+        other => error(other),
+    }
+}
+
+/// [`BodyProblem`]'s message with the advice in keywords (`model="shell"`,
+/// `weld=…`, `merge=True`) where the CLI's names its options.
+fn body_problem(problem: &BodyProblem) -> String {
+    let text = |source: &InertiaError| one_line(&source.to_string());
+    match problem {
+        BodyProblem::Inertia { source } => format!("{}{}", text(source), solid_hint(source)),
+        BodyProblem::Cracks { source, weld } => format!(
+            "{}; rerun with weld={} to close them",
+            text(source),
+            Shortest(*weld)
+        ),
+        BodyProblem::ClosedOnlyMerged { source } => format!(
+            "{}; the file's bodies together form a closed surface: rerun with merge=True to treat them as one solid",
+            text(source)
+        ),
+        other => other.to_string(),
+    }
+}
+
+/// What gives the right answer for a surface that encloses no volume (the
+/// CLI's advice, in keywords).
+fn solid_hint(error: &InertiaError) -> &'static str {
+    match error {
+        InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. } => {
+            "; if the surface is open on purpose, model=\"shell\" models a thin-walled part (see thickness) and model=\"hull\" a convex one"
+        }
+        InertiaError::MeshOutOfRange { .. } => " (set with units or scale, metres per mesh unit)",
+        InertiaError::NonOrientable { .. } => {
+            "; it bounds no volume, but model=\"shell\" models it as a thin wall (see thickness)"
+        }
+        _ => "",
+    }
 }
 
 /// Runs `f`, turning a Rust panic into a `KreiselError` ("internal error:

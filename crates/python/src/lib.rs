@@ -10,6 +10,7 @@
 
 use pyo3::prelude::*;
 
+mod arguments;
 mod errors;
 mod mass;
 mod rotations;

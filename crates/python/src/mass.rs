@@ -22,13 +22,19 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::errors::{error, guard};
+use crate::arguments::{number, path};
+use crate::errors::{cli_error, error, guard};
 
 /// Wall thickness of the shell model without `thickness`, m (the CLI's).
 const DEFAULT_THICKNESS: f64 = kreisel_cli::inertia::DEFAULT_THICKNESS;
 
 /// The name of the file in the report of `mass_properties_from_arrays`.
 const ARRAYS_FILE: &str = "<arrays>";
+
+/// An optional number argument (`name` names it in messages).
+fn optional(name: &str, value: Option<&Bound<'_, PyAny>>) -> PyResult<Option<f64>> {
+    value.map(|v| number(name, v)).transpose()
+}
 
 /// A positive finite number, or the CLI's message for `quantity`.
 fn positive(value: f64, quantity: &str) -> PyResult<f64> {
@@ -45,15 +51,19 @@ fn positive(value: f64, quantity: &str) -> PyResult<f64> {
 #[allow(clippy::too_many_arguments)] // the Python keywords, one each
 fn setup(
     file: PathBuf,
-    density: Option<f64>,
-    mass: Option<f64>,
+    density: Option<&Bound<'_, PyAny>>,
+    mass: Option<&Bound<'_, PyAny>>,
     units: &str,
     model: &str,
-    thickness: Option<f64>,
+    thickness: Option<&Bound<'_, PyAny>>,
     weld: Option<&Bound<'_, PyAny>>,
     merge: bool,
-    scale: Option<f64>,
+    scale: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Setup> {
+    let density = optional("density", density)?;
+    let mass = optional("mass", mass)?;
+    let thickness = optional("thickness", thickness)?;
+    let scale = optional("scale", scale)?;
     let units = match units {
         "mm" => Units::Mm,
         "cm" => Units::Cm,
@@ -228,21 +238,22 @@ fn report_dict<'py>(py: Python<'py>, report: &Report) -> PyResult<Bound<'py, PyD
 #[allow(clippy::too_many_arguments)] // the Python keywords, one each
 fn mass_properties<'py>(
     py: Python<'py>,
-    path: PathBuf,
-    density: Option<f64>,
-    mass: Option<f64>,
+    path: &Bound<'py, PyAny>,
+    density: Option<&Bound<'py, PyAny>>,
+    mass: Option<&Bound<'py, PyAny>>,
     units: &str,
     model: &str,
-    thickness: Option<f64>,
+    thickness: Option<&Bound<'py, PyAny>>,
     weld: Option<&Bound<'py, PyAny>>,
     merge: bool,
-    scale: Option<f64>,
+    scale: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
+        let file = self::path("path", path)?;
         let setup = setup(
-            path, density, mass, units, model, thickness, weld, merge, scale,
+            file, density, mass, units, model, thickness, weld, merge, scale,
         )?;
-        let report = py.detach(|| compute(setup)).map_err(error)?;
+        let report = py.detach(|| compute(setup)).map_err(cli_error)?;
         report_dict(py, &report)
     })
 }
@@ -306,13 +317,29 @@ fn faces_of(faces: &Bound<'_, PyAny>, vertex_count: usize) -> PyResult<Vec<[u32;
         let dtype = array.getattr("dtype")?.str()?.to_string();
         return Err(bad(format!("got dtype {dtype}")));
     }
-    let array = array.call_method1("astype", ("int64",))?;
-    let rows = rows_of_three::<i64>(&array, &bad)?;
+    // Signed and unsigned read apart: a uint64 beyond i64 keeps its value.
+    if kind == "u" {
+        let array = array.call_method1("astype", ("uint64",))?;
+        indices(&rows_of_three::<u64>(&array, &bad)?, vertex_count, bad)
+    } else {
+        let array = array.call_method1("astype", ("int64",))?;
+        indices(&rows_of_three::<i64>(&array, &bad)?, vertex_count, bad)
+    }
+}
+
+/// Rows of integers as vertex indices below `vertex_count`, or `bad`
+/// naming the first that is not one (with its value).
+fn indices<T: Copy + std::fmt::Display + TryInto<u32>>(
+    rows: &[[T; 3]],
+    vertex_count: usize,
+    bad: impl Fn(String) -> PyErr,
+) -> PyResult<Vec<[u32; 3]>> {
     let mut out = Vec::with_capacity(rows.len());
     for (i, row) in rows.iter().enumerate() {
         let mut tri = [0u32; 3];
         for (j, (&k, slot)) in row.iter().zip(&mut tri).enumerate() {
-            *slot = u32::try_from(k)
+            *slot = k
+                .try_into()
                 .ok()
                 .filter(|&k| (k as usize) < vertex_count)
                 .ok_or_else(|| {
@@ -385,14 +412,14 @@ fn mass_properties_from_arrays<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyAny>,
     faces: &Bound<'py, PyAny>,
-    density: Option<f64>,
-    mass: Option<f64>,
+    density: Option<&Bound<'py, PyAny>>,
+    mass: Option<&Bound<'py, PyAny>>,
     units: &str,
     model: &str,
-    thickness: Option<f64>,
+    thickness: Option<&Bound<'py, PyAny>>,
     weld: Option<&Bound<'py, PyAny>>,
     name: &str,
-    scale: Option<f64>,
+    scale: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let setup = setup(
@@ -413,7 +440,7 @@ fn mass_properties_from_arrays<'py>(
                 let body = body_of(&setup, name, vertices, faces)?;
                 compute_scaled(setup, vec![body])
             })
-            .map_err(error)?;
+            .map_err(cli_error)?;
         report_dict(py, &report)
     })
 }

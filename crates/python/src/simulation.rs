@@ -17,10 +17,12 @@ use kreisel_cli::error::CliError;
 use kreisel_cli::simulate::{Column, prepare, run_rows};
 use kreisel_dynamics::{BodyId, World};
 use numpy::PyArray1;
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::errors::{error, guard};
+use crate::arguments;
+use crate::errors::{cli_error, error, guard};
 
 #[path = "simulation_world.rs"]
 mod world;
@@ -83,19 +85,24 @@ impl Columns {
 fn scene_source(scene: &Bound<'_, PyAny>) -> PyResult<(PathBuf, Option<String>)> {
     if let Ok(text) = scene.extract::<String>() {
         // TOML needs a line per key: one line cannot hold a scene.
-        return Ok(if text.contains('\n') {
-            (PathBuf::from(TEXT_SCENE), Some(text))
+        if text.contains('\n') {
+            return Ok((PathBuf::from(TEXT_SCENE), Some(text)));
+        }
+    }
+    let path = arguments::path("scene", scene).map_err(|e| {
+        if e.is_instance_of::<PyTypeError>(scene.py()) {
+            PyTypeError::new_err(format!(
+                "scene must be a path or the TOML text of a scene, got {}",
+                scene
+                    .get_type()
+                    .name()
+                    .map_or_else(|_| "?".to_owned(), |n| n.to_string())
+            ))
         } else {
-            (PathBuf::from(text), None)
-        });
-    }
-    match scene.extract::<PathBuf>() {
-        Ok(path) => Ok((path, None)),
-        Err(_) => Err(error(format!(
-            "scene must be a path or the TOML text of a scene, got {}",
-            scene.get_type().name()?
-        ))),
-    }
+            e
+        }
+    })?;
+    Ok((path, None))
 }
 
 /// Reads, parses and runs the scene; the columns of every row.
@@ -103,7 +110,7 @@ fn run(
     path: &Path,
     text: Option<String>,
     method: Option<&str>,
-    threads: Option<usize>,
+    threads: Option<NonZeroUsize>,
 ) -> Result<Columns, CliError> {
     let text = match text {
         Some(text) => text,
@@ -113,13 +120,8 @@ fn run(
         })?,
     };
     let (mut scene, name) = prepare(path, &text, method)?;
-    let threads = match threads {
-        Some(n) => NonZeroUsize::new(n).ok_or_else(|| CliError::Argument {
-            argument: "threads".to_owned(),
-            message: "must be at least 1".to_owned(),
-        })?,
-        None => std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN),
-    };
+    let threads = threads
+        .unwrap_or_else(|| std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN));
     scene.world.set_threads(threads);
     let mut columns = Columns::new();
     run_rows(&mut scene, path, &name, &mut |world, bodies| {
@@ -136,13 +138,16 @@ fn run(
 /// ``vy``, ``vz``. One row per body and output time, bodies in scene order;
 /// the numbers are those the CSV spells (bit for bit).
 ///
-/// ``method`` overrides the scene's (as ``--method``); ``threads`` as
-/// ``--threads`` (the output does not depend on it). A scene given as text
+/// ``method`` overrides the scene's (as ``--method``); ``threads`` (at
+/// least 1) as ``--threads`` (the output does not depend on it). A scene given as text
 /// finds its mesh files relative to the working directory. The GIL is
 /// released while the scene runs.
 ///
 /// Raises KreiselError with the CLI's one-line message: an unreadable
-/// scene, a bad key (naming its line), a body that diverges.
+/// scene, a bad key (naming its line), a body that diverges; for a bad
+/// argument, a message beginning with its name (``threads: …``, ``method:
+/// …``, ``scene: path is empty``); TypeError for a scene that is neither a
+/// path nor text.
 ///
 /// >>> import kreisel
 /// >>> rows = kreisel.simulate('''
@@ -164,13 +169,23 @@ fn simulate<'py>(
     py: Python<'py>,
     scene: &Bound<'py, PyAny>,
     method: Option<&str>,
-    threads: Option<usize>,
+    threads: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let (path, text) = scene_source(scene)?;
+        let threads = threads
+            .map(|n| arguments::integer("threads", n, 1, u64::MAX))
+            .transpose()?
+            .map(|n| {
+                usize::try_from(n)
+                    .ok()
+                    .and_then(NonZeroUsize::new)
+                    .ok_or_else(|| error(format!("threads: {n} is more than this machine counts")))
+            })
+            .transpose()?;
         let columns = py
             .detach(|| run(&path, text, method, threads))
-            .map_err(error)?;
+            .map_err(cli_error)?;
         let dict = PyDict::new(py);
         let np = py.import("numpy")?;
         let mut numbers = columns.numbers.into_iter();

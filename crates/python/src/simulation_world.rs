@@ -6,13 +6,14 @@
 //! names errors.
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{Body, BodyId, FreeBodyMethod, Inputs, World};
+use kreisel_dynamics::{Body, BodyId, DynamicsError, FreeBodyMethod, Inputs, World};
 use kreisel_inertia::MassProperties;
 use kreisel_kinematics::try_normalize_quat;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use crate::arguments::{finite, int, integer, matrix3, named, numbers};
 use crate::errors::{error, guard};
 
 /// A world of rigid bodies that do not interact, each moved by the
@@ -39,36 +40,82 @@ pub struct PyWorld {
     ids: Vec<BodyId>,
 }
 
+/// An optional argument.
+type Arg<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
+
+/// The vector argument `name` (zero when absent).
+fn vector(name: &str, value: Arg<'_, '_>) -> PyResult<DVec3> {
+    value.map_or(Ok(DVec3::ZERO), |v| {
+        numbers::<3>(name, v).map(DVec3::from_array)
+    })
+}
+
 /// The inputs from the keywords (zero when absent).
 fn inputs(
-    torque: Option<[f64; 3]>,
-    torque_body: Option<[f64; 3]>,
-    force: Option<[f64; 3]>,
-    angular_damping: f64,
-) -> Inputs {
-    let v = |x: Option<[f64; 3]>| x.map_or(DVec3::ZERO, DVec3::from_array);
-    Inputs::default()
-        .with_torque_world(v(torque))
-        .with_torque_body(v(torque_body))
-        .with_force_world(v(force))
-        .with_angular_damping(angular_damping)
+    torque: Arg<'_, '_>,
+    torque_body: Arg<'_, '_>,
+    force: Arg<'_, '_>,
+    angular_damping: Arg<'_, '_>,
+) -> PyResult<Inputs> {
+    let damping = angular_damping.map_or(Ok(0.0), |d| finite("angular_damping", d))?;
+    Ok(Inputs::default()
+        .with_torque_world(vector("torque", torque)?)
+        .with_torque_body(vector("torque_body", torque_body)?)
+        .with_force_world(vector("force", force)?)
+        .with_angular_damping(damping))
 }
 
 /// The attitude `[w, x, y, z]`, normalised as a scene's `orientation` is.
-fn quaternion([w, x, y, z]: [f64; 4]) -> PyResult<DQuat> {
+fn quaternion(value: &Bound<'_, PyAny>) -> PyResult<DQuat> {
+    let [w, x, y, z] = numbers::<4>("attitude", value)?;
     try_normalize_quat(DQuat::from_xyzw(x, y, z, w))
-        .map_err(|_| error("attitude must be a quaternion w, x, y, z of finite numbers, not zero"))
+        .map_err(|_| error("attitude: must be a quaternion w, x, y, z, not zero"))
+}
+
+/// The Python argument a library error is about, if it is about one.
+fn argument_of(e: &DynamicsError) -> Option<&'static str> {
+    match e {
+        DynamicsError::UnphysicalInertia { .. } => Some("moments"),
+        DynamicsError::InvalidStep { .. } => Some("dt"),
+        DynamicsError::InvalidTime { .. } => Some("t"),
+        DynamicsError::InvalidBody { field, .. } => match *field {
+            "position" => Some("position"),
+            "velocity" => Some("velocity"),
+            "pivot_body" => Some("pivot"),
+            "gravity" => Some("gravity"),
+            _ => None,
+        },
+        DynamicsError::InvalidInput { input, .. } => match *input {
+            "torque_world" => Some("torque"),
+            "torque_body" => Some("torque_body"),
+            "force_world" => Some("force"),
+            "angular_damping" => Some("angular_damping"),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The library's error, naming the Python argument it is about.
+fn world_error(e: DynamicsError) -> PyErr {
+    match argument_of(&e) {
+        Some(name) => named(name)(e),
+        None => error(e),
+    }
 }
 
 impl PyWorld {
-    /// The engine's id of the body Python calls `body`.
-    fn id(&self, body: usize) -> PyResult<BodyId> {
-        self.ids.get(body).copied().ok_or_else(|| {
-            error(format!(
-                "no body {body} in this world (it has {}: 0 to {})",
-                self.ids.len(),
-                self.ids.len() as i64 - 1
-            ))
+    /// The engine's id of the body Python calls `body` (an int).
+    fn id(&self, body: &Bound<'_, PyAny>) -> PyResult<BodyId> {
+        let n = int("body", body)?;
+        let found = usize::try_from(n).ok().and_then(|i| self.ids.get(i));
+        found.copied().ok_or_else(|| {
+            let has = match self.ids.len() {
+                0 => "no bodies".to_owned(),
+                1 => "1 body: 0 to 0".to_owned(),
+                len => format!("{len} bodies: 0 to {}", len - 1),
+            };
+            error(format!("body: no body {n} in this world (it has {has})"))
         })
     }
 }
@@ -76,11 +123,14 @@ impl PyWorld {
 #[pymethods]
 impl PyWorld {
     #[new]
-    #[pyo3(signature = (dt, gravity=[0.0, 0.0, 0.0], method="auto"))]
-    fn new(dt: f64, gravity: [f64; 3], method: &str) -> PyResult<Self> {
+    #[pyo3(signature = (dt, gravity=None, method="auto"))]
+    #[pyo3(text_signature = "(dt, gravity=(0.0, 0.0, 0.0), method='auto')")]
+    fn new(dt: &Bound<'_, PyAny>, gravity: Arg<'_, '_>, method: &str) -> PyResult<Self> {
         guard(|| {
-            let mut world = World::try_new(DVec3::from_array(gravity), dt).map_err(error)?;
-            let free: FreeBodyMethod = method.parse().map_err(error)?;
+            let dt = finite("dt", dt)?;
+            let gravity = vector("gravity", gravity)?;
+            let mut world = World::try_new(gravity, dt).map_err(world_error)?;
+            let free: FreeBodyMethod = method.parse().map_err(named("method"))?;
             // As the scene: a method without a heavy-top version leaves the default.
             world
                 .set_free_body_method(free)
@@ -112,28 +162,35 @@ impl PyWorld {
     /// ...                  attitude=(0.99, 0.14, 0, 0), pivot=(0, 0, -0.05))
     /// >>> w.plan(top)
     /// 'Lagrange top on a pivot: exact, closed form ...'
-    #[pyo3(signature = (mass, moments=None, inertia=None, *, attitude=None, omega_body=[0.0, 0.0, 0.0], position=[0.0, 0.0, 0.0], velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=0.0))]
+    #[pyo3(signature = (mass, moments=None, inertia=None, *, attitude=None, omega_body=None, position=None, velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=None))]
+    #[pyo3(
+        text_signature = "($self, mass, moments=None, inertia=None, *, attitude=None, omega_body=(0.0, 0.0, 0.0), position=(0.0, 0.0, 0.0), velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=0.0)"
+    )]
     #[allow(clippy::too_many_arguments)] // the Python keywords, one each
     fn add_body(
         &mut self,
-        mass: f64,
-        moments: Option<[f64; 3]>,
-        inertia: Option<[[f64; 3]; 3]>,
-        attitude: Option<[f64; 4]>,
-        omega_body: [f64; 3],
-        position: [f64; 3],
-        velocity: Option<[f64; 3]>,
-        pivot: Option<[f64; 3]>,
-        torque: Option<[f64; 3]>,
-        torque_body: Option<[f64; 3]>,
-        force: Option<[f64; 3]>,
-        angular_damping: f64,
+        mass: &Bound<'_, PyAny>,
+        moments: Arg<'_, '_>,
+        inertia: Arg<'_, '_>,
+        attitude: Arg<'_, '_>,
+        omega_body: Arg<'_, '_>,
+        position: Arg<'_, '_>,
+        velocity: Arg<'_, '_>,
+        pivot: Arg<'_, '_>,
+        torque: Arg<'_, '_>,
+        torque_body: Arg<'_, '_>,
+        force: Arg<'_, '_>,
+        angular_damping: Arg<'_, '_>,
     ) -> PyResult<usize> {
         guard(|| {
+            let mass = finite("mass", mass)?;
+            if mass <= 0.0 {
+                return Err(error(format!("mass: {mass} kg: must be positive")));
+            }
             let builder = match (moments, inertia) {
-                (Some(m), None) => Body::from_principal_moments(mass, DVec3::from_array(m)),
+                (Some(m), None) => Body::from_principal_moments(mass, vector("moments", Some(m))?),
                 (None, Some(rows)) => {
-                    let tensor = DMat3::from_cols_array_2d(&rows).transpose();
+                    let tensor = DMat3::from_cols_array_2d(&matrix3("inertia", rows)?).transpose();
                     let props = MassProperties::try_new(mass, DVec3::ZERO, tensor)
                         .map_err(|e| error(format!("inertia: {e}")))?;
                     Body::from_mass_properties(props)
@@ -147,22 +204,23 @@ impl PyWorld {
             let attitude = attitude.map_or(Ok(DQuat::IDENTITY), quaternion)?;
             let builder = builder
                 .world_from_body(attitude)
-                .omega_body(DVec3::from_array(omega_body));
-            let position = DVec3::from_array(position);
+                .omega_body(vector("omega_body", omega_body)?);
+            let position = vector("position", position)?;
             let builder = match (pivot, velocity) {
                 (Some(_), Some(_)) => {
                     return Err(error(
                         "velocity cannot be given with pivot: the pivot is fixed",
                     ));
                 }
-                (Some(p), None) => builder.pivot(DVec3::from_array(p), position),
-                (None, v) => builder.free(position, v.map_or(DVec3::ZERO, DVec3::from_array)),
+                (Some(p), None) => builder.pivot(vector("pivot", Some(p))?, position),
+                (None, v) => builder.free(position, vector("velocity", v)?),
             };
+            let inputs = inputs(torque, torque_body, force, angular_damping)?;
             let body = builder
                 .try_build()
-                .and_then(|b| b.with_inputs(inputs(torque, torque_body, force, angular_damping)))
-                .map_err(error)?;
-            let id = self.world.add(body).map_err(error)?;
+                .and_then(|b| b.with_inputs(inputs))
+                .map_err(world_error)?;
+            let id = self.world.add(body).map_err(world_error)?;
             self.ids.push(id);
             Ok(self.ids.len() - 1)
         })
@@ -171,19 +229,22 @@ impl PyWorld {
     /// Replaces what is applied to body ``body`` from now on (all zero when
     /// omitted): ``torque`` (world axes), ``torque_body``, ``force``
     /// (world axes, through the centre of mass), ``angular_damping``.
-    #[pyo3(signature = (body, *, torque=None, torque_body=None, force=None, angular_damping=0.0))]
+    #[pyo3(signature = (body, *, torque=None, torque_body=None, force=None, angular_damping=None))]
+    #[pyo3(
+        text_signature = "($self, body, *, torque=None, torque_body=None, force=None, angular_damping=0.0)"
+    )]
     fn set_inputs(
         &mut self,
-        body: usize,
-        torque: Option<[f64; 3]>,
-        torque_body: Option<[f64; 3]>,
-        force: Option<[f64; 3]>,
-        angular_damping: f64,
+        body: &Bound<'_, PyAny>,
+        torque: Arg<'_, '_>,
+        torque_body: Arg<'_, '_>,
+        force: Arg<'_, '_>,
+        angular_damping: Arg<'_, '_>,
     ) -> PyResult<()> {
         guard(|| {
             let id = self.id(body)?;
-            let inputs = inputs(torque, torque_body, force, angular_damping);
-            self.world.set_inputs(id, inputs).map_err(error)
+            let inputs = inputs(torque, torque_body, force, angular_damping)?;
+            self.world.set_inputs(id, inputs).map_err(world_error)
         })
     }
 
@@ -191,33 +252,49 @@ impl PyWorld {
     /// velocity (body axes, rad/s) now.
     fn set_rotation(
         &mut self,
-        body: usize,
-        attitude: [f64; 4],
-        omega_body: [f64; 3],
+        body: &Bound<'_, PyAny>,
+        attitude: &Bound<'_, PyAny>,
+        omega_body: &Bound<'_, PyAny>,
     ) -> PyResult<()> {
         guard(|| {
             let id = self.id(body)?;
+            let attitude = quaternion(attitude)?;
+            let omega = vector("omega_body", Some(omega_body))?;
             self.world
-                .set_rotation(id, quaternion(attitude)?, DVec3::from_array(omega_body))
-                .map_err(error)
+                .set_rotation(id, attitude, omega)
+                .map_err(world_error)
         })
     }
 
     /// One step of ``h`` seconds (exact solutions are evaluated at its end).
-    fn step(&mut self, py: Python<'_>, h: f64) -> PyResult<()> {
-        guard(|| py.detach(|| self.world.step(h)).map_err(error))
+    fn step(&mut self, py: Python<'_>, h: &Bound<'_, PyAny>) -> PyResult<()> {
+        guard(|| {
+            let h = finite("h", h)?;
+            py.detach(|| self.world.step(h)).map_err(|e| match e {
+                DynamicsError::InvalidStep { .. } => named("h")(e),
+                other => world_error(other),
+            })
+        })
     }
 
-    /// ``n`` whole steps of ``dt`` (the grid of ``kreisel simulate``).
-    fn advance_steps(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
-        guard(|| py.detach(|| self.world.advance_steps(n)).map_err(error))
+    /// ``n`` whole steps of ``dt`` (the grid of ``kreisel simulate``; n
+    /// from 0 to 2^64 - 1).
+    fn advance_steps(&mut self, py: Python<'_>, n: &Bound<'_, PyAny>) -> PyResult<()> {
+        guard(|| {
+            let n = integer("n", n, 0, u64::MAX)?;
+            py.detach(|| self.world.advance_steps(n))
+                .map_err(world_error)
+        })
     }
 
     /// Advances to time ``t`` (s): stepping methods take steps of ``dt``,
     /// the last shortened to land on ``t``; exact solutions are evaluated
     /// at ``t`` once.
-    fn advance_to(&mut self, py: Python<'_>, t: f64) -> PyResult<()> {
-        guard(|| py.detach(|| self.world.advance_to(t)).map_err(error))
+    fn advance_to(&mut self, py: Python<'_>, t: &Bound<'_, PyAny>) -> PyResult<()> {
+        guard(|| {
+            let t = finite("t", t)?;
+            py.detach(|| self.world.advance_to(t)).map_err(world_error)
+        })
     }
 
     /// The world's time, s.
@@ -244,7 +321,7 @@ impl PyWorld {
     }
 
     /// How body ``body`` is moved (what it is, which method, why).
-    fn plan(&self, body: usize) -> PyResult<String> {
+    fn plan(&self, body: &Bound<'_, PyAny>) -> PyResult<String> {
         guard(|| {
             let id = self.id(body)?;
             Ok(self
@@ -260,13 +337,17 @@ impl PyWorld {
     /// ``l_world`` (angular momentum about the centre of mass, or the pivot,
     /// world axes), ``energy`` (J), ``position`` and ``velocity`` of the
     /// centre of mass (world axes).
-    fn state<'py>(&self, py: Python<'py>, body: usize) -> PyResult<Bound<'py, PyDict>> {
+    fn state<'py>(
+        &self,
+        py: Python<'py>,
+        body: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
         guard(|| {
             let id = self.id(body)?;
             let s = self
                 .world
                 .state(id)
-                .ok_or_else(|| error(format!("no body {body} in this world")))?;
+                .ok_or_else(|| error(format!("body: no body {body} in this world")))?;
             let q = s.world_from_body;
             let dict = PyDict::new(py);
             dict.set_item("time", s.time)?;

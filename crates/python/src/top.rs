@@ -13,25 +13,33 @@ use numpy::{IxDyn, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::errors::{error, guard};
+use crate::arguments::number;
+use crate::errors::{cli_error, error, guard};
 
 /// Arrays of times at least this long are evaluated without the GIL.
 const DETACH_FROM: usize = 1024;
 
-/// The arguments as the CLI's.
-fn args(i1: f64, i3: f64, mgl: f64, theta0: f64, rates: [f64; 3]) -> TopArgs {
-    let [theta_dot0, phi_dot0, psi_dot0] = rates;
-    TopArgs {
-        i1,
-        i3,
-        mgl,
-        theta0,
-        theta_dot0,
-        phi_dot0,
-        psi_dot0,
+/// An optional argument (0 when absent).
+type Rate<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
+
+/// The arguments as the CLI's (numbers, not yet checked: the CLI checks
+/// them, naming the option, which [`cli_error`] names by its keyword).
+fn args(
+    [i1, i3, mgl, theta0]: [&Bound<'_, PyAny>; 4],
+    [theta_dot0, phi_dot0, psi_dot0]: [Rate<'_, '_>; 3],
+) -> PyResult<TopArgs> {
+    let rate = |name, value: Rate<'_, '_>| value.map_or(Ok(0.0), |v| number(name, v));
+    Ok(TopArgs {
+        i1: number("i1", i1)?,
+        i3: number("i3", i3)?,
+        mgl: number("mgl", mgl)?,
+        theta0: number("theta0", theta0)?,
+        theta_dot0: rate("theta_dot0", theta_dot0)?,
+        phi_dot0: rate("phi_dot0", phi_dot0)?,
+        psi_dot0: rate("psi_dot0", psi_dot0)?,
         format: Format::Json,
         plot: None,
-    }
+    })
 }
 
 /// The summary as the dict of `kreisel top --format json` (keys in its
@@ -72,28 +80,30 @@ fn summary_dict<'py>(py: Python<'py>, s: &Summary) -> PyResult<Bound<'py, PyDict
 /// i1: transverse moment about the pivot, i3: about the symmetry axis
 /// (kg m^2), mgl = M g l (J); theta0 (rad, from the upward vertical) and
 /// the initial rates (rad/s) of theta, phi (precession) and psi (spin).
-/// Raises KreiselError with the CLI's message naming the option.
+/// Raises KreiselError with the CLI's message, naming the argument (``i3:
+/// 0.7: exceeds 2 i1 …``); TypeError for an argument that is not a number.
 ///
 /// >>> import kreisel
 /// >>> r = kreisel.top(0.3, 0.1, 2.0, 0.5, psi_dot0=60.0)
 /// >>> r["motion"], r["sleeping"]
 /// ('cusps', False)
 #[pyfunction]
-#[pyo3(signature = (i1, i3, mgl, theta0, theta_dot0=0.0, phi_dot0=0.0, psi_dot0=0.0))]
+#[pyo3(signature = (i1, i3, mgl, theta0, theta_dot0=None, phi_dot0=None, psi_dot0=None))]
+#[pyo3(text_signature = "(i1, i3, mgl, theta0, theta_dot0=0.0, phi_dot0=0.0, psi_dot0=0.0)")]
 #[allow(clippy::too_many_arguments)] // the Python keywords, one each
 fn top<'py>(
     py: Python<'py>,
-    i1: f64,
-    i3: f64,
-    mgl: f64,
-    theta0: f64,
-    theta_dot0: f64,
-    phi_dot0: f64,
-    psi_dot0: f64,
+    i1: &Bound<'py, PyAny>,
+    i3: &Bound<'py, PyAny>,
+    mgl: &Bound<'py, PyAny>,
+    theta0: &Bound<'py, PyAny>,
+    theta_dot0: Rate<'_, 'py>,
+    phi_dot0: Rate<'_, 'py>,
+    psi_dot0: Rate<'_, 'py>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let args = args(i1, i3, mgl, theta0, [theta_dot0, phi_dot0, psi_dot0]);
-        let (_, summary) = solve_and_summarise(&args).map_err(error)?;
+        let args = args([i1, i3, mgl, theta0], [theta_dot0, phi_dot0, psi_dot0])?;
+        let (_, summary) = solve_and_summarise(&args).map_err(cli_error)?;
         summary_dict(py, &summary)
     })
 }
@@ -165,19 +175,20 @@ fn shaped<'py>(
 #[pymethods]
 impl PyLagrangeTop {
     #[new]
-    #[pyo3(signature = (i1, i3, mgl, theta0, theta_dot0=0.0, phi_dot0=0.0, psi_dot0=0.0))]
+    #[pyo3(signature = (i1, i3, mgl, theta0, theta_dot0=None, phi_dot0=None, psi_dot0=None))]
+    #[pyo3(text_signature = "(i1, i3, mgl, theta0, theta_dot0=0.0, phi_dot0=0.0, psi_dot0=0.0)")]
     fn new(
-        i1: f64,
-        i3: f64,
-        mgl: f64,
-        theta0: f64,
-        theta_dot0: f64,
-        phi_dot0: f64,
-        psi_dot0: f64,
+        i1: &Bound<'_, PyAny>,
+        i3: &Bound<'_, PyAny>,
+        mgl: &Bound<'_, PyAny>,
+        theta0: &Bound<'_, PyAny>,
+        theta_dot0: Rate<'_, '_>,
+        phi_dot0: Rate<'_, '_>,
+        psi_dot0: Rate<'_, '_>,
     ) -> PyResult<Self> {
         guard(|| {
-            let args = args(i1, i3, mgl, theta0, [theta_dot0, phi_dot0, psi_dot0]);
-            let (motion, summary) = solve_and_summarise(&args).map_err(error)?;
+            let args = args([i1, i3, mgl, theta0], [theta_dot0, phi_dot0, psi_dot0])?;
+            let (motion, summary) = solve_and_summarise(&args).map_err(cli_error)?;
             Ok(Self { motion, summary })
         })
     }

@@ -25,6 +25,25 @@ ASSEMBLY_KEYS = [
 ]  # fmt: skip
 
 
+# The CLI's advice names its options; Python's names the keywords.
+KEYWORDS = [
+    ("--shell models a thin-walled part (see --thickness) and --hull a convex one",
+     'model="shell" models a thin-walled part (see thickness) and model="hull" a convex one'),
+    ("--shell models it as a thin wall (see --thickness)", 'model="shell" models it as a thin wall (see thickness)'),
+    ("(set with --units or --scale S, metres per mesh unit)", "(set with units or scale, metres per mesh unit)"),
+    ("rerun with --merge to", "rerun with merge=True to"),
+    ("rerun with --weld ", "rerun with weld="),
+]  # fmt: skip
+
+
+def in_keywords(cli_line):
+    """The CLI's error line as Python words it (its advice in keywords)."""
+    for option, keyword in KEYWORDS:
+        cli_line = cli_line.replace(option, keyword)
+    assert "--" not in cli_line, cli_line
+    return cli_line
+
+
 def assert_same_as_json(from_json, value, where="report"):
     """`value` (the dict) holds exactly what the CLI's JSON holds: the same
     keys in the same order, strings equal, numbers equal as f64 (JSON's
@@ -217,7 +236,7 @@ def test_bad_files_have_the_cli_message(path, kwargs, args):
     message = str(e.value)
     assert "\n" not in message
     if args is not None:
-        assert message == cli.error_line("inertia", path, *args)
+        assert message == in_keywords(cli.error_line("inertia", path, *args))
 
 
 def test_garbage_and_truncated_files(tmp_path):
@@ -306,7 +325,7 @@ def test_open_arrays_say_what_the_cli_says(tmp_path):
     path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n")
     with pytest.raises(kreisel.KreiselError) as e:
         kreisel.mass_properties_from_arrays(TETRA_V, TETRA_F[:3], name="open")
-    expected = cli.error_line("inertia", path).replace(str(path), "<arrays>")
+    expected = in_keywords(cli.error_line("inertia", path)).replace(str(path), "<arrays>")
     assert str(e.value) == expected
 
 

@@ -179,19 +179,26 @@ def test_bad_scenes_have_the_cli_message(tmp_path, edit):
         assert str(e.value) == expected.replace(str(path), "<string>")
 
 
+def method_line(*args):
+    """The CLI's error line, but naming the `method` argument where the CLI
+    names its option `--method`."""
+    line = cli.error_line(*args)
+    return "method: " + line[len("--method: ") :] if line.startswith("--method: ") else line
+
+
 def test_unknown_method_and_divergence(tmp_path):
     path = tmp_path / "scene.toml"
     path.write_text(SCENE)
     with pytest.raises(kreisel.KreiselError) as e:
         kreisel.simulate(path, method="euler")
-    assert str(e.value) == cli.error_line("simulate", path, "--method", "euler")
+    assert str(e.value) == method_line("simulate", path, "--method", "euler")
     # rk4 cannot move the driven body; dmv has no heavy-top version.
     with pytest.raises(kreisel.KreiselError) as e:
         kreisel.simulate(SCENE, method="rk4")
-    assert str(e.value) == cli.error_line("simulate", path, "--method", "rk4").replace(str(path), "<string>")
+    assert str(e.value) == method_line("simulate", path, "--method", "rk4").replace(str(path), "<string>")
     with pytest.raises(kreisel.KreiselError) as e:
         kreisel.simulate(path, method="dmv")
-    assert str(e.value) == cli.error_line("simulate", path, "--method", "dmv")
+    assert str(e.value) == method_line("simulate", path, "--method", "dmv")
     fast = tmp_path / "fast.toml"
     fast.write_text(
         "[simulation]\nduration = 1\ndt = 0.1\n[[body]]\nmass = 1\n"
@@ -207,9 +214,9 @@ def test_garbage_arguments():
     for bad in [3, None, b"[simulation]\n", ["a"]]:
         with pytest.raises((kreisel.KreiselError, TypeError)):
             kreisel.simulate(bad)
-    with pytest.raises(kreisel.KreiselError, match="threads: must be at least 1"):
+    with pytest.raises(kreisel.KreiselError, match="^threads: 0 is out of range"):
         kreisel.simulate(SCENE, threads=0)
-    with pytest.raises((OverflowError, TypeError, ValueError)):
+    with pytest.raises(kreisel.KreiselError, match="^threads: -1 is out of range"):
         kreisel.simulate(SCENE, threads=-1)
     with pytest.raises(kreisel.KreiselError):
         kreisel.simulate("\x00\n")
@@ -334,7 +341,7 @@ def test_heavy_top_energy_and_pivot():
     "make,fragment",
     [
         (lambda: kreisel.World(dt=0.0), "step size must be positive"),
-        (lambda: kreisel.World(dt=float("nan")), "step size must be positive"),
+        (lambda: kreisel.World(dt=float("nan")), "dt: nan is not a finite number"),
         (lambda: kreisel.World(dt=0.1, method="euler"), "euler"),
         (lambda: kreisel.World(dt=0.1, gravity=(0, 0, float("inf"))), "gravity"),
         (lambda: kreisel.World(dt=0.1).add_body(1.0, moments=(1, 1, 3)), "inequality"),
@@ -350,7 +357,8 @@ def test_heavy_top_energy_and_pivot():
         (lambda: kreisel.World(dt=0.1).state(0), "no body 0"),
         (lambda: kreisel.World(dt=0.1).set_inputs(3, torque=(1, 0, 0)), "no body 3"),
         (lambda: kreisel.World(dt=0.1).step(-1.0), "step"),
-        (lambda: kreisel.World(dt=0.1).advance_to(float("nan")), "cannot advance the world"),
+        (lambda: kreisel.World(dt=0.1).advance_to(float("nan")), "t: nan is not a finite number"),
+        (lambda: kreisel.World(dt=0.1).advance_to(-1.0), "t: cannot advance the world"),
     ],
 )
 def test_world_errors(make, fragment):

@@ -9,7 +9,7 @@ import numpy.typing as npt
 __version__: str
 
 class KreiselError(ValueError):
-    """Bad input to kreisel: the message is the CLI's one line (what is wrong and where)."""
+    """Bad input to kreisel: the message is the CLI's one line (what is wrong and where); for a bad argument it begins with the argument's name."""
 
 # --- rotations ---------------------------------------------------------------
 
