@@ -11,6 +11,7 @@
 #![forbid(unsafe_code)]
 
 mod figure;
+mod labels;
 mod output;
 pub mod series;
 
@@ -351,7 +352,7 @@ const SAMPLES_PER_PERIOD: usize = 400;
 /// The axis e₃ in world coordinates over three or more nutation periods
 /// (more while the precession over them is under a quarter turn, up to 12),
 /// and a caption saying what it covers.
-fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) {
+pub(crate) fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) {
     let period = motion
         .nutation_period()
         .filter(|p| p.is_finite() && *p > 0.0);
@@ -452,6 +453,7 @@ fn plot(
         theta_max: summary.theta_max,
         f: &f,
         roots: &summary.roots,
+        beta: summary.beta,
         samples_per_period,
     });
     let bytes = format.render(&figure).map_err(|e| CliError::Plot {
