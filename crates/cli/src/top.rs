@@ -47,8 +47,13 @@ Output (SI units, radians; numbers in shortest round-trip form):
   theta_min, theta_max    nutation limits, rad
   nutation_period         s
   mean_precession_rate    rad/s (mean dphi/dt over a nutation period)
-  motion        no_loops, loops or cusps (sign of dphi/dt at the limits)
-  sleeping      theta0 = 0 and theta_dot0 = 0 (nutation fields: null/none)
+  motion        no_loops, loops or cusps (sign of dphi/dt at the limits);
+                none when theta stays constant: the sleeping top, the axis
+                on the downward vertical (theta0 = pi, theta_dot0 = 0),
+                steady precession (then nutation_period is none too, and
+                mean_precession_rate is dphi/dt, none on the vertical)
+  sleeping      theta0 = 0 and theta_dot0 = 0 (nutation fields: null/none);
+                theta0 = 1e-15 is not sleeping: it nutates in a tiny band
   sleeping_stable         omega3^2 > 4 I1 M g l / I3^2
 --plot FILE.svg or FILE.png draws the path of the symmetry axis on the unit
 sphere over three or more nutation periods, and f(u) with its roots.
@@ -320,6 +325,13 @@ fn solve(args: &TopArgs) -> Result<LagrangeTopMotion, CliError> {
     top.try_solve(args.initial()).map_err(dynamics_error)
 }
 
+/// Whether the axis stays on the vertical: the sleeping top (θ = 0) or
+/// at rest in θ on the downward vertical (θ = π, the f64 nearest π).
+fn on_the_vertical(motion: &LagrangeTopMotion) -> bool {
+    motion.motion().is_none()
+        && (motion.theta_max() == 0.0 || motion.theta_min() >= std::f64::consts::PI)
+}
+
 /// The library's answers for `motion`.
 fn summarise(args: &TopArgs, motion: &LagrangeTopMotion) -> Summary {
     Summary {
@@ -338,8 +350,12 @@ fn summarise(args: &TopArgs, motion: &LagrangeTopMotion) -> Summary {
         roots: motion.roots(),
         theta_min: motion.theta_min(),
         theta_max: motion.theta_max(),
-        nutation_period: motion.nutation_period(),
-        mean_precession_rate: motion.mean_precession_rate(),
+        // A period only for a motion that nutates (`motion` not null); on
+        // the vertical (θ = 0 or π throughout) φ itself is undefined.
+        nutation_period: motion.motion().and(motion.nutation_period()),
+        mean_precession_rate: motion
+            .mean_precession_rate()
+            .filter(|_| !on_the_vertical(motion)),
         motion: motion.motion().map(motion_name),
         sleeping: motion.is_sleeping(),
         sleeping_stable: motion.sleeping_stable(),
