@@ -3,6 +3,7 @@
 //! the SVG and PNG figures, and one-line errors for bad arguments.
 
 mod errors;
+mod limits;
 mod plots;
 mod report;
 mod series;

@@ -101,10 +101,16 @@ fn roots_are_named_u1_u2_u3_when_one_is_a_pole() {
         let run = run_case(case, &["--plot", path.to_str().unwrap()]);
         assert_eq!(run.code, Some(0), "{}", run.stderr);
         let texts = svg_texts(&std::fs::read_to_string(&path).unwrap());
-        let roots: Vec<&String> = texts.iter().filter(|t| ["u₁ = ", "u₂ = ", "u₃ = "].iter().any(|n| t.starts_with(n))).collect();
+        let roots: Vec<&String> = texts
+            .iter()
+            .filter(|t| ["u₁ = ", "u₂ = ", "u₃ = "].iter().any(|n| t.starts_with(n)))
+            .collect();
         assert_eq!(roots.len(), 3, "{roots:?}");
         for name in want {
-            assert!(texts.iter().any(|t| t == name), "{case:?}: no {name:?} in {roots:?}");
+            assert!(
+                texts.iter().any(|t| t == name),
+                "{case:?}: no {name:?} in {roots:?}"
+            );
         }
     }
 }
