@@ -44,6 +44,8 @@ pub struct TopPlot<'a> {
     pub beta: f64,
     /// Samples of `axis_path` per nutation period, when it has periods.
     pub samples_per_period: Option<usize>,
+    /// Whether the legend gives θmin and θmax in degrees.
+    pub degrees: bool,
 }
 
 /// Draws the two panels.
@@ -87,9 +89,7 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         sphere_zoom(fig, plot, &zoom);
     }
     for label in sphere_labels(plot, &panel) {
-        fig.text(
-            Text::new(label.at, label.text, LABEL_SIZE, Anchor::Start).colored(label.color),
-        );
+        fig.text(Text::new(label.at, label.text, LABEL_SIZE, Anchor::Start).colored(label.color));
     }
     // Legend below the sphere.
     let x = 40.0;
@@ -105,12 +105,12 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         ),
         (
             THETA_MIN,
-            format!("\u{3b8}min = {} rad", short(plot.theta_min)),
+            format!("\u{3b8}min = {}", angle(plot.theta_min, plot.degrees)),
             true,
         ),
         (
             THETA_MAX,
-            format!("\u{3b8}max = {} rad", short(plot.theta_max)),
+            format!("\u{3b8}max = {}", angle(plot.theta_max, plot.degrees)),
             true,
         ),
     ];
@@ -471,6 +471,15 @@ fn zoom(fig: &mut Figure, plot: &TopPlot<'_>, main: &Axes, (u1, u2): (f64, f64),
     }
 }
 
+/// An angle (given in radians) for a label: `0.5 rad`, or `28.6479°`.
+fn angle(radians: f64, degrees: bool) -> String {
+    if degrees {
+        format!("{}\u{b0}", short(radians.to_degrees()))
+    } else {
+        format!("{} rad", short(radians))
+    }
+}
+
 /// A number with 6 significant digits, for labels.
 fn short(value: f64) -> String {
     let text = format!("{:.5e}", value);
@@ -504,6 +513,7 @@ mod tests {
             roots: &[0.8, 0.9, 3.0],
             beta: 10.0,
             samples_per_period: Some(30),
+            degrees: false,
         });
         let texts: Vec<&str> = fig
             .items

@@ -168,6 +168,7 @@ mod tests {
             roots: &roots,
             beta: motion.beta(),
             samples_per_period: per_period,
+            degrees: false,
         };
         let pixels = path.iter().map(|&v| SPHERE.pixel(v).0).collect();
         (
