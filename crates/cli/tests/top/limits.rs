@@ -129,10 +129,9 @@ fn a_steady_precession_reports_no_nutation_period() {
 }
 
 /// ψ̇₀ → 0⁺: the pendulum that swings almost through the bottom,
-/// T = 2K(cos²(θ₀/2))/√(Mgl/I₁), ⟨φ̇⟩ = π/T (K by the AGM); 1e-140 as
-/// 1e-10. Below ~1e-145 rad/s the turning point lies closer to the
-/// bottom than f64 resolves: one line "too small" (ψ̇₀ = 1e-300 said
-/// "too large").
+/// T = 2K(cos²(θ₀/2))/√(Mgl/I₁), ⟨φ̇⟩ = π/T (K by the AGM), from 1e-10 down
+/// to 1e-300 rad/s (which was refused as "too large": 1 + u₁ underflowed).
+/// 5e-324 rad/s, whose I₃ω₃/I₁ underflows to 0, is refused as too small.
 #[test]
 fn a_vanishing_spin_tends_to_the_pendulum() {
     let (i1, i3, mgl, theta): (f64, f64, f64, f64) = (0.3, 0.1, 2.0, 0.5);
@@ -142,7 +141,7 @@ fn a_vanishing_spin_tends_to_the_pendulum() {
         (x, y) = (0.5 * (x + y), (x * y).sqrt());
     }
     let period = std::f64::consts::PI / x / (mgl / i1).sqrt();
-    for psi_dot in [1e-10, 1e-100, 1e-140] {
+    for psi_dot in [1e-10, 1e-100, 1e-140, 1e-200, 1e-300] {
         let run = run_case(
             &[i1, i3, mgl, theta, 0.0, 0.0, psi_dot],
             &["--format", "json"],
@@ -156,7 +155,11 @@ fn a_vanishing_spin_tends_to_the_pendulum() {
             "{psi_dot}: {mean}"
         );
     }
-    let run = run_case(&[i1, i3, mgl, theta, 0.0, 0.0, 1e-300], &[]);
+    let run = run_case(&[i1, i3, mgl, theta, 0.0, 0.0, 5e-324], &[]);
     let line = run.error_line(1);
-    assert!(line.contains("--psi-dot0: 1e-300: too small"), "{line}");
+    assert!(line.contains("--psi-dot0: 5e-324: too small"), "{line}");
+    // Below the resolution in θ₀ with a stable spin: too small, naming θ₀.
+    let run = run_case(&[i1, i3, mgl, 1e-90, 0.0, 0.0, 60.0], &[]);
+    let line = run.error_line(1);
+    assert!(line.contains("--theta0: 1e-90: too small"), "{line}");
 }

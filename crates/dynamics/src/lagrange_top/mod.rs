@@ -26,6 +26,7 @@ mod classify;
 mod evaluate;
 mod heavy;
 mod motion;
+mod passes;
 mod roots;
 mod steady;
 #[cfg(test)]
@@ -331,8 +332,11 @@ impl LagrangeTop {
     /// motion overflow f64 (`(I₃ω₃/I₁)²`, `θ̇₀² + sin²θ₀ φ̇₀²`, the
     /// coefficients of f(u), the frequency of the nutation), or so small
     /// that a turning point lies closer to a vertical than `1 ∓ cos θ`
-    /// resolves without passing through it (a spin below ~10⁻¹⁵⁰ rad/s
-    /// released off the vertical, θ₀ below ~10⁻⁸⁰ with a stable spin).
+    /// resolves on a band that small too (θ₀ below ~10⁻⁸⁰ with a stable
+    /// spin), or whose momentum `I₃ω₃/I₁`, `sin²θ₀ φ̇₀` underflows to 0. A
+    /// tiny spin released off the vertical (ψ̇₀ = 10⁻³⁰⁰ rad/s) is solved:
+    /// the axis passes the vertical closer than f64 resolves, as in the
+    /// limit, φ and ψ stepping by π there.
     ///
     /// ```
     /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
@@ -388,6 +392,20 @@ impl LagrangeTop {
         }
         let s = theta.sin();
         let b0 = s * s * phi_dot;
+        // A rate whose momentum underflows to 0 would silently become 0.
+        let lost = |momentum: f64, from: f64| momentum == 0.0 && from != 0.0;
+        if lost(a, omega3) || lost(b0, s * phi_dot) {
+            let (parameter, value) = if lost(a, omega3) && psi_dot != 0.0 {
+                ("psi_dot", psi_dot)
+            } else {
+                ("phi_dot", phi_dot)
+            };
+            return Err(DynamicsError::InvalidTop {
+                parameter,
+                value,
+                reason: "too small: its angular momentum underflows f64 (use 0 or a larger value)",
+            });
+        }
         let a0 = theta_dot * theta_dot + b0 * phi_dot;
         if !(a0 * 4.0).is_finite() || !(a * b0 * 4.0).is_finite() {
             return Err(if theta_dot.abs() >= phi_dot.abs() {

@@ -82,10 +82,21 @@ fn a_tiny_tilt_nutates_like_the_linearised_top() {
         let m = top.try_solve(init).unwrap();
         assert!(!m.is_sleeping(), "{theta}");
         let rel = |got: f64, want: f64| (got / want - 1.0).abs();
-        assert!(rel(m.theta_min(), theta) < 1e-15, "{theta}: {}", m.theta_min());
-        assert!(rel(m.theta_max() / theta, a / root) < 1e-12, "{theta}: {}", m.theta_max());
+        assert!(
+            rel(m.theta_min(), theta) < 1e-15,
+            "{theta}: {}",
+            m.theta_min()
+        );
+        assert!(
+            rel(m.theta_max() / theta, a / root) < 1e-12,
+            "{theta}: {}",
+            m.theta_max()
+        );
         let period = m.nutation_period().unwrap();
-        assert!(rel(period, std::f64::consts::TAU / root) < 1e-12, "{theta}: {period}");
+        assert!(
+            rel(period, std::f64::consts::TAU / root) < 1e-12,
+            "{theta}: {period}"
+        );
         let mean = m.mean_precession_rate().unwrap();
         assert!(rel(mean, 0.5 * (a - root)) < 1e-9, "{theta}: {mean}");
         assert!(rel(m.euler_at(0.0).theta, theta) < 1e-15);
@@ -120,7 +131,7 @@ fn a_vanishing_spin_is_the_pendulum_limit() {
     }
     let k = std::f64::consts::PI / (2.0 * x);
     let period = 2.0 * k / (mgl / i1).sqrt();
-    for psi_dot in [1e-10, 1e-50, 1e-100, 1e-140] {
+    for psi_dot in [1e-10, 1e-50, 1e-100, 1e-140, 1e-160, 1e-300] {
         let init = LagrangeTopInitial {
             theta,
             psi_dot,
@@ -128,20 +139,62 @@ fn a_vanishing_spin_is_the_pendulum_limit() {
         };
         let motion = top.try_solve(init).unwrap();
         let t = motion.nutation_period().unwrap();
-        assert!((t / period - 1.0).abs() < 1e-13, "{psi_dot}: {t} vs {period}");
+        assert!(
+            (t / period - 1.0).abs() < 1e-13,
+            "{psi_dot}: {t} vs {period}"
+        );
         let mean = motion.mean_precession_rate().unwrap();
         let want = std::f64::consts::PI / period;
-        assert!((mean / want - 1.0).abs() < 1e-11, "{psi_dot}: {mean} vs {want}");
-        assert!(std::f64::consts::PI - motion.theta_max() < 1e-9, "{psi_dot}");
+        assert!(
+            (mean / want - 1.0).abs() < 1e-11,
+            "{psi_dot}: {mean} vs {want}"
+        );
+        assert!(
+            std::f64::consts::PI - motion.theta_max() < 1e-9,
+            "{psi_dot}"
+        );
     }
-    // Closer to the bottom than f64 resolves: refused as too small.
-    for psi_dot in [1e-160, 1e-300] {
+    // ψ̇₀ = 1e-300 passes the bottom within ~1e-301 rad, unresolved: the
+    // motion is 1e-10's up to ~1e-10 away from the passes; φ and ψ step by
+    // +π at each (the sign of the spin), 3 passes over 3 periods.
+    let at = |psi_dot: f64, t: f64| {
         let init = LagrangeTopInitial {
             theta,
             psi_dot,
             ..LagrangeTopInitial::default()
         };
-        let e = top.try_solve(init).unwrap_err().to_string();
-        assert!(e.contains("psi_dot") && e.contains("too small"), "{e}");
+        top.try_solve(init).unwrap().euler_at(t)
+    };
+    for k in 0..=60 {
+        let t = 3.0 * period * (f64::from(k) + 0.37) / 60.0;
+        let (small, tiny) = (at(1e-10, t), at(1e-300, t));
+        assert!((small.theta - tiny.theta).abs() < 1e-12, "{t}");
+        assert!(
+            (small.phi - tiny.phi).abs() < 1e-8,
+            "{t}: φ {} vs {}",
+            small.phi,
+            tiny.phi
+        );
+        assert!(
+            (small.psi - tiny.psi).abs() < 1e-8,
+            "{t}: ψ {} vs {}",
+            small.psi,
+            tiny.psi
+        );
     }
+    let end = at(1e-300, 3.0 * period - 1e-3);
+    assert!(
+        (end.phi - 3.0 * std::f64::consts::PI).abs() < 1e-9,
+        "{}",
+        end.phi
+    );
+    assert!((at(-1e-300, 3.0 * period - 1e-3).phi + 3.0 * std::f64::consts::PI).abs() < 1e-9);
+    // A spin whose I₃ω₃/I₁ underflows is refused, not taken as 0.
+    let init = LagrangeTopInitial {
+        theta,
+        psi_dot: 5e-324,
+        ..LagrangeTopInitial::default()
+    };
+    let e = top.try_solve(init).unwrap_err().to_string();
+    assert!(e.contains("psi_dot") && e.contains("too small"), "{e}");
 }
