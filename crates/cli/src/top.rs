@@ -206,7 +206,7 @@ pub struct Summary {
     pub theta_min: f64,
     /// Largest θ, rad.
     pub theta_max: f64,
-    /// Period of θ(t), s (`None` for a sleeping top).
+    /// Period of θ(t), s (`None` when θ stays constant: `motion` is `None`).
     pub nutation_period: Option<f64>,
     /// Mean φ̇ over a nutation period, rad/s.
     pub mean_precession_rate: Option<f64>,
@@ -392,12 +392,15 @@ const SAMPLES_PER_PERIOD: usize = 400;
 /// (more while the precession over them is under a quarter turn, up to 12),
 /// and a caption saying what it covers.
 pub(crate) fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) {
+    // The report's period and precession (none without nutation, none on
+    // the vertical).
     let period = motion
-        .nutation_period()
+        .motion()
+        .and(motion.nutation_period())
         .filter(|p| p.is_finite() && *p > 0.0);
     let precession = motion
         .mean_precession_rate()
-        .filter(|w| w.is_finite() && *w != 0.0);
+        .filter(|w| w.is_finite() && *w != 0.0 && !on_the_vertical(motion));
     let (duration, periods, caption) = match (period, precession) {
         (Some(p), w) => {
             let per_period = w.map_or(0.0, |w| (w * p).abs());
@@ -429,7 +432,7 @@ pub(crate) fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Opti
                 ),
             )
         }
-        (None, None) => (0.0, 1, "at rest (sleeping top)".to_owned()),
+        (None, None) => (0.0, 1, "the axis stays where it is".to_owned()),
     };
     let n = if duration > 0.0 {
         periods * SAMPLES_PER_PERIOD

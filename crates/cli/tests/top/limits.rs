@@ -86,6 +86,15 @@ fn the_axis_on_the_downward_vertical_does_not_nutate() {
         (num(&run.stdout, "theta_min"), num(&run.stdout, "theta_max")),
         (pi, pi)
     );
+    // The figure says so too (its caption counted "3 nutation periods").
+    let svg = scratch_dir().join("hanging.svg");
+    let plot = run_case(
+        &[i1, i3, mgl, pi, 0.0, 0.0, psi_dot],
+        &["--plot", svg.to_str().unwrap()],
+    );
+    assert_eq!(plot.code, Some(0), "{}", plot.stderr);
+    let svg = std::fs::read_to_string(&svg).unwrap();
+    assert!(!svg.contains("nutation periods") && svg.contains("the axis stays where it is"));
     let text = run_case(&[i1, i3, mgl, pi, 0.0, 0.0, psi_dot], &[]);
     assert!(
         text.stdout.contains("\nnutation_period: none\n")
