@@ -11,6 +11,7 @@
 #![forbid(unsafe_code)]
 
 mod figure;
+mod labels;
 mod output;
 pub mod series;
 
@@ -38,7 +39,10 @@ Model:
   I1 about the pivot is larger still); theta0 lies in [0, pi].
   With u = cos theta, du/dt^2 = f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2.
 
-Output (SI units, radians; numbers in shortest round-trip form):
+Output (SI units, radians; numbers in shortest round-trip form; with
+--degrees theta0 is read in degrees and theta0, theta_min, theta_max are
+written in degrees as theta0_deg, theta_min_deg, theta_max_deg, the CSV's
+angles as theta_deg, phi_deg, psi_deg; rates and the rest stay as below):
   a, b          p_psi / I1 and p_phi / I1, rad/s
   alpha, beta   2 E' / I1 and 2 M g l / I1, 1/s^2
   omega3        spin I1 a / I3, rad/s
@@ -46,8 +50,13 @@ Output (SI units, radians; numbers in shortest round-trip form):
   theta_min, theta_max    nutation limits, rad
   nutation_period         s
   mean_precession_rate    rad/s (mean dphi/dt over a nutation period)
-  motion        no_loops, loops or cusps (sign of dphi/dt at the limits)
-  sleeping      theta0 = 0 and theta_dot0 = 0 (nutation fields: null/none)
+  motion        no_loops, loops or cusps (sign of dphi/dt at the limits);
+                none when theta stays constant: the sleeping top, the axis
+                on the downward vertical (theta0 = pi, theta_dot0 = 0),
+                steady precession (then nutation_period is none too, and
+                mean_precession_rate is dphi/dt, none on the vertical)
+  sleeping      theta0 = 0 and theta_dot0 = 0 (nutation fields: null/none);
+                theta0 = 1e-15 is not sleeping: it nutates in a tiny band
   sleeping_stable         omega3^2 > 4 I1 M g l / I3^2
 --plot FILE.svg or FILE.png draws the path of the symmetry axis on the unit
 sphere over three or more nutation periods, and f(u) with its roots.
@@ -70,7 +79,8 @@ sphere over three or more nutation periods, and f(u) with its roots.
 Examples:
   kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --plot top.svg
   kreisel top --i1 1 --i3 0.5 --mgl 1 --theta0 1 --phi-dot0 -1 --psi-dot0 8 --format json
-  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --csv top.csv --dt 0.001";
+  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --csv top.csv --dt 0.001
+  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 30 --degrees --psi-dot0 60";
 
 /// The command line of `kreisel top`: the top ([`TopArgs`]) and the time
 /// series to write.
@@ -92,6 +102,11 @@ pub struct TopCommand {
     /// Time between the --csv rows, s [default: nutation period / 200]
     #[arg(long, value_name = "H", requires = "csv", allow_hyphen_values = true)]
     pub dt: Option<f64>,
+
+    /// Read --theta0 and write the angles (theta0, theta_min, theta_max, the
+    /// CSV's theta, phi, psi, the figure's) in degrees; rates stay in rad/s
+    #[arg(long)]
+    pub degrees: bool,
 }
 
 /// Arguments of `kreisel top` that describe the top and its report.
@@ -109,7 +124,7 @@ pub struct TopArgs {
     #[arg(long, value_name = "MGL", allow_hyphen_values = true)]
     pub mgl: f64,
 
-    /// Initial angle of the symmetry axis from the upward vertical, rad, in [0, pi]
+    /// Initial angle of the symmetry axis from the upward vertical, rad, in [0, pi] (deg with --degrees)
     #[arg(long, value_name = "TH", allow_hyphen_values = true)]
     pub theta0: f64,
 
@@ -191,7 +206,7 @@ pub struct Summary {
     pub theta_min: f64,
     /// Largest θ, rad.
     pub theta_max: f64,
-    /// Period of θ(t), s (`None` for a sleeping top).
+    /// Period of θ(t), s (`None` when θ stays constant: `motion` is `None`).
     pub nutation_period: Option<f64>,
     /// Mean φ̇ over a nutation period, rad/s.
     pub mean_precession_rate: Option<f64>,
@@ -201,6 +216,20 @@ pub struct Summary {
     pub sleeping: bool,
     /// Whether the upright spinning top is stable (notes §3.11).
     pub sleeping_stable: bool,
+}
+
+impl Summary {
+    /// The same summary with its angles in degrees: θ₀ as given
+    /// (`theta0_degrees`, not converted back and forth), θ_min and θ_max
+    /// by [`f64::to_degrees`].
+    pub fn in_degrees(&self, theta0_degrees: f64) -> Summary {
+        Summary {
+            theta0: theta0_degrees,
+            theta_min: self.theta_min.to_degrees(),
+            theta_max: self.theta_max.to_degrees(),
+            ..self.clone()
+        }
+    }
 }
 
 /// The name of a kind of motion in the output.
@@ -319,6 +348,13 @@ fn solve(args: &TopArgs) -> Result<LagrangeTopMotion, CliError> {
     top.try_solve(args.initial()).map_err(dynamics_error)
 }
 
+/// Whether the axis stays on the vertical: the sleeping top (θ = 0) or
+/// at rest in θ on the downward vertical (θ = π, the f64 nearest π).
+fn on_the_vertical(motion: &LagrangeTopMotion) -> bool {
+    motion.motion().is_none()
+        && (motion.theta_max() == 0.0 || motion.theta_min() >= std::f64::consts::PI)
+}
+
 /// The library's answers for `motion`.
 fn summarise(args: &TopArgs, motion: &LagrangeTopMotion) -> Summary {
     Summary {
@@ -337,8 +373,12 @@ fn summarise(args: &TopArgs, motion: &LagrangeTopMotion) -> Summary {
         roots: motion.roots(),
         theta_min: motion.theta_min(),
         theta_max: motion.theta_max(),
-        nutation_period: motion.nutation_period(),
-        mean_precession_rate: motion.mean_precession_rate(),
+        // A period only for a motion that nutates (`motion` not null); on
+        // the vertical (θ = 0 or π throughout) φ itself is undefined.
+        nutation_period: motion.motion().and(motion.nutation_period()),
+        mean_precession_rate: motion
+            .mean_precession_rate()
+            .filter(|_| !on_the_vertical(motion)),
         motion: motion.motion().map(motion_name),
         sleeping: motion.is_sleeping(),
         sleeping_stable: motion.sleeping_stable(),
@@ -351,13 +391,16 @@ const SAMPLES_PER_PERIOD: usize = 400;
 /// The axis e₃ in world coordinates over three or more nutation periods
 /// (more while the precession over them is under a quarter turn, up to 12),
 /// and a caption saying what it covers.
-fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) {
+pub(crate) fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) {
+    // The report's period and precession (none without nutation, none on
+    // the vertical).
     let period = motion
-        .nutation_period()
+        .motion()
+        .and(motion.nutation_period())
         .filter(|p| p.is_finite() && *p > 0.0);
     let precession = motion
         .mean_precession_rate()
-        .filter(|w| w.is_finite() && *w != 0.0);
+        .filter(|w| w.is_finite() && *w != 0.0 && !on_the_vertical(motion));
     let (duration, periods, caption) = match (period, precession) {
         (Some(p), w) => {
             let per_period = w.map_or(0.0, |w| (w * p).abs());
@@ -389,7 +432,7 @@ fn axis_path(motion: &LagrangeTopMotion) -> (Vec<DVec3>, String, Option<usize>) 
                 ),
             )
         }
-        (None, None) => (0.0, 1, "at rest (sleeping top)".to_owned()),
+        (None, None) => (0.0, 1, "the axis stays where it is".to_owned()),
     };
     let n = if duration > 0.0 {
         periods * SAMPLES_PER_PERIOD
@@ -416,15 +459,17 @@ fn short_time(t: f64) -> String {
     Shortest(rounded).to_string()
 }
 
-/// The figure's title: the parameters.
-fn title(args: &TopArgs) -> String {
+/// The figure's title: the parameters (θ₀ as given: in degrees with
+/// `degrees`).
+fn title(args: &TopArgs, degrees: bool) -> String {
     format!(
         "Heavy symmetric top: I\u{2081} = {} kg m\u{b2}, I\u{2083} = {} kg m\u{b2}, Mgl = {} J;  \
-         \u{3b8}\u{2080} = {} rad, d\u{3b8}/dt = {}, d\u{3c6}/dt = {}, d\u{3c8}/dt = {} rad/s",
+         \u{3b8}\u{2080} = {}{}, d\u{3b8}/dt = {}, d\u{3c6}/dt = {}, d\u{3c8}/dt = {} rad/s",
         Shortest(args.i1),
         Shortest(args.i3),
         Shortest(args.mgl),
         Shortest(args.theta0),
+        if degrees { "\u{b0}" } else { " rad" },
         Shortest(args.theta_dot0),
         Shortest(args.phi_dot0),
         Shortest(args.psi_dot0),
@@ -437,22 +482,24 @@ fn title(args: &TopArgs) -> String {
 /// [`CliError::Plot`] when rendering fails or the file cannot be written.
 fn plot(
     args: &TopArgs,
+    degrees: bool,
     motion: &LagrangeTopMotion,
     summary: &Summary,
-    format: ImageFormat,
-    path: &std::path::Path,
+    (format, path): (ImageFormat, &std::path::Path),
 ) -> Result<(), CliError> {
     let (axis, caption, samples_per_period) = axis_path(motion);
     let f = |u: f64| motion.f(u);
     let figure = figure::figure(&figure::TopPlot {
-        title: title(args),
+        title: title(args, degrees),
         axis_path: &axis,
         path_caption: caption,
         theta_min: summary.theta_min,
         theta_max: summary.theta_max,
         f: &f,
         roots: &summary.roots,
+        beta: summary.beta,
         samples_per_period,
+        degrees,
     });
     let bytes = format.render(&figure).map_err(|e| CliError::Plot {
         path: path.to_owned(),
@@ -476,6 +523,28 @@ pub fn solve_and_summarise(args: &TopArgs) -> Result<(LagrangeTopMotion, Summary
     Ok((motion, summary))
 }
 
+/// The arguments with --theta0 in radians (`degrees`: given in degrees).
+///
+/// # Errors
+/// [`CliError::Argument`] for a finite --theta0 outside [0, 180] degrees
+/// (the library's message would show it in radians).
+fn in_radians(args: &TopArgs, degrees: bool) -> Result<TopArgs, CliError> {
+    let mut radians = args.clone();
+    if degrees {
+        if args.theta0.is_finite() && !(0.0..=180.0).contains(&args.theta0) {
+            return Err(argument(
+                "--theta0",
+                format!(
+                    "{} deg: must lie in [0, 180] (the angle of the axis from the upward vertical)",
+                    Shortest(args.theta0)
+                ),
+            ));
+        }
+        radians.theta0 = args.theta0.to_radians();
+    }
+    Ok(radians)
+}
+
 /// Runs `kreisel top`.
 ///
 /// # Errors
@@ -483,7 +552,8 @@ pub fn solve_and_summarise(args: &TopArgs) -> Result<(LagrangeTopMotion, Summary
 /// for the figure, [`CliError::CreateOutput`] / [`CliError::Write`] for the
 /// `--csv` file and standard output.
 pub fn run(command: &TopCommand) -> Result<(), CliError> {
-    let args = &command.top;
+    let degrees = command.degrees;
+    let args = &in_radians(&command.top, degrees)?;
     let format = args.validate()?;
     let (motion, summary) = solve_and_summarise(args)?;
     if command.csv.is_some() && command.csv == args.plot {
@@ -501,14 +571,19 @@ pub fn run(command: &TopCommand) -> Result<(), CliError> {
         None => None,
     };
     if let (Some(format), Some(path)) = (format, &args.plot) {
-        plot(args, &motion, &summary, format, path)?;
+        plot(&command.top, degrees, &motion, &summary, (format, path))?;
     }
     if let Some((schedule, path)) = grid {
-        series::write_csv(&motion, &schedule, path)?;
+        series::write_csv(&motion, &schedule, path, degrees)?;
     }
+    let report = if degrees {
+        summary.in_degrees(command.top.theta0)
+    } else {
+        summary
+    };
     let text = match args.format {
-        Format::Text => output::text(&summary),
-        Format::Json => output::json(&summary),
+        Format::Text => output::text(&report, degrees),
+        Format::Json => output::json(&report, degrees),
     };
     crate::convert::print_stdout(&text)
 }

@@ -9,6 +9,7 @@ use kreisel_plot::axes::{Axes, Labels, TITLE_FONT};
 use kreisel_plot::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text};
 use kreisel_plot::sphere::{LocalView, SpherePanel, View, circle_of_latitude};
 
+use super::labels::{self, LABEL_SIZE, PlacedLabel};
 use crate::numbers::Shortest;
 
 /// Figure width, px.
@@ -39,8 +40,12 @@ pub struct TopPlot<'a> {
     pub f: &'a dyn Fn(f64) -> f64,
     /// The real roots of f, ascending.
     pub roots: &'a [f64],
+    /// β = 2 Mgl / I₁ (its sign says which root is the third), 1/s².
+    pub beta: f64,
     /// Samples of `axis_path` per nutation period, when it has periods.
     pub samples_per_period: Option<usize>,
+    /// Whether the legend gives θmin and θmax in degrees.
+    pub degrees: bool,
 }
 
 /// Draws the two panels.
@@ -59,14 +64,7 @@ pub fn figure(plot: &TopPlot<'_>) -> Figure {
 
 /// The left panel: the axis path on the sphere with the θ_min and θ_max circles.
 fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
-    let panel = SpherePanel {
-        center: Point::new(310.0, 330.0),
-        radius: 215.0,
-        view: View {
-            elevation: 30f64.to_radians(),
-            azimuth: -60f64.to_radians(),
-        },
-    };
+    let panel = SPHERE;
     fig.text(Text::new(
         Point::new(panel.center.x, 72.0),
         "Symmetry axis e\u{2083} on the unit sphere (seen from above at 30\u{b0})",
@@ -75,20 +73,11 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
     ));
     panel.draw_frame(fig);
     // A sleeping top's circles are the pole itself: nothing to draw.
+    let dashed = |color| Stroke::dashed(color, 1.5, 6.0, 4.0);
     if plot.theta_max > 0.0 {
-        panel.latitude(
-            fig,
-            plot.theta_min,
-            &Stroke::dashed(THETA_MIN, 1.5, 6.0, 4.0),
-            "\u{3b8}min",
-        );
+        panel.latitude(fig, plot.theta_min, &dashed(THETA_MIN), "");
         if plot.theta_max != plot.theta_min {
-            panel.latitude(
-                fig,
-                plot.theta_max,
-                &Stroke::dashed(THETA_MAX, 1.5, 6.0, 4.0),
-                "\u{3b8}max",
-            );
+            panel.latitude(fig, plot.theta_max, &dashed(THETA_MAX), "");
         }
     }
     panel.path(fig, plot.axis_path, &Stroke::solid(PATH, 1.8));
@@ -96,13 +85,11 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         let (p, _) = panel.pixel(start);
         fig.circle(p, 4.0, Some(Color::BLACK), None);
     }
-    // A narrow band of nutation is a line at this scale: magnify two periods.
-    let band = plot.theta_max - plot.theta_min;
-    if let Some(n) = plot
-        .samples_per_period
-        .filter(|_| band > 0.0 && band < 0.05)
-    {
-        sphere_zoom(fig, plot, &panel, n);
+    if let Some(zoom) = zoom_of(plot, &panel) {
+        sphere_zoom(fig, plot, &zoom);
+    }
+    for label in sphere_labels(plot, &panel) {
+        fig.text(Text::new(label.at, label.text, LABEL_SIZE, Anchor::Start).colored(label.color));
     }
     // Legend below the sphere.
     let x = 40.0;
@@ -118,12 +105,12 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
         ),
         (
             THETA_MIN,
-            format!("\u{3b8}min = {} rad", short(plot.theta_min)),
+            format!("\u{3b8}min = {}", angle(plot.theta_min, plot.degrees)),
             true,
         ),
         (
             THETA_MAX,
-            format!("\u{3b8}max = {} rad", short(plot.theta_max)),
+            format!("\u{3b8}max = {}", angle(plot.theta_max, plot.degrees)),
             true,
         ),
     ];
@@ -148,21 +135,101 @@ fn sphere_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
     }
 }
 
-/// An inset magnifying two nutation periods of the axis path, with the
-/// θ_min and θ_max circles: below the sphere's centre for a path above the
-/// equator, above it otherwise.
-fn sphere_zoom(fig: &mut Figure, plot: &TopPlot<'_>, panel: &SpherePanel, per_period: usize) {
+/// The sphere panel of the figure.
+pub const SPHERE: SpherePanel = SpherePanel {
+    center: Point { x: 310.0, y: 330.0 },
+    radius: 215.0,
+    view: View {
+        elevation: std::f64::consts::PI / 6.0,
+        azimuth: -std::f64::consts::PI / 3.0,
+    },
+};
+
+/// Where labels on the sphere may go: the left panel between its title and
+/// the legend.
+pub const SPHERE_REGION: Rect = Rect {
+    left: 20.0,
+    top: 80.0,
+    width: 580.0,
+    height: 480.0,
+};
+
+/// The magnified inset of a narrow band: the piece of the path it shows
+/// (two nutation periods), the direction at its centre and its frame.
+struct Zoom<'a> {
+    piece: &'a [DVec3],
+    center: DVec3,
+    frame: Rect,
+}
+
+/// The inset for a band narrower than 0.05 rad (a line at the sphere's
+/// scale) with nutation periods: below the sphere's centre for a path above
+/// the equator, above it otherwise.
+fn zoom_of<'a>(plot: &TopPlot<'a>, panel: &SpherePanel) -> Option<Zoom<'a>> {
+    let band = plot.theta_max - plot.theta_min;
+    let per_period = plot
+        .samples_per_period
+        .filter(|_| band > 0.0 && band < 0.05)?;
     let piece = &plot.axis_path[..plot.axis_path.len().min(2 * per_period + 1)];
-    let Some(center) = piece.iter().copied().sum::<DVec3>().try_normalize() else {
-        return;
-    };
+    let center = piece.iter().copied().sum::<DVec3>().try_normalize()?;
     let top = if center.z >= 0.0 { 430.0 } else { 120.0 };
-    let frame = Rect {
-        left: panel.center.x - 200.0,
-        top,
-        width: 400.0,
-        height: 105.0,
-    };
+    Some(Zoom {
+        piece,
+        center,
+        frame: Rect {
+            left: panel.center.x - 200.0,
+            top,
+            width: 400.0,
+            height: 105.0,
+        },
+    })
+}
+
+/// The θmin and θmax labels on the sphere, placed clear of the path, the
+/// circles, each other and the rest of the panel ([`labels::place`]).
+pub fn sphere_labels(plot: &TopPlot<'_>, panel: &SpherePanel) -> Vec<PlacedLabel> {
+    if plot.theta_max <= 0.0 {
+        return Vec::new();
+    }
+    let mut wanted = vec![("\u{3b8}min".to_owned(), plot.theta_min, THETA_MIN)];
+    if plot.theta_max != plot.theta_min {
+        wanted.push(("\u{3b8}max".to_owned(), plot.theta_max, THETA_MAX));
+    }
+    let path: Vec<Point> = plot.axis_path.iter().map(|&v| panel.pixel(v).0).collect();
+    let z_top = panel.pixel(DVec3::Z * 1.2).0;
+    let z_axis = vec![panel.pixel(-DVec3::Z).0, z_top];
+    let mut boxes = vec![labels::text_box(
+        Point::new(z_top.x + 6.0, z_top.y + 5.0),
+        "z (up)",
+        13.0,
+    )];
+    if let Some(&start) = plot.axis_path.first() {
+        let p = panel.pixel(start).0;
+        boxes.push(Rect {
+            left: p.x - 4.0,
+            top: p.y - 4.0,
+            width: 8.0,
+            height: 8.0,
+        });
+    }
+    if let Some(zoom) = zoom_of(plot, panel) {
+        boxes.push(zoom.frame);
+    }
+    labels::place(
+        &wanted,
+        labels::Obstacles {
+            lines: vec![path, z_axis],
+            boxes,
+            region: SPHERE_REGION,
+            panel,
+        },
+    )
+}
+
+/// An inset magnifying two nutation periods of the axis path, with the
+/// θ_min and θ_max circles.
+fn sphere_zoom(fig: &mut Figure, plot: &TopPlot<'_>, zoom: &Zoom<'_>) {
+    let (piece, center, frame) = (zoom.piece, zoom.center, zoom.frame);
     let mut view = LocalView {
         frame,
         center,
@@ -200,8 +267,12 @@ fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
     let (u1, u2) = (plot.theta_max.cos(), plot.theta_min.cos());
     // Show [−1, 1] and the third root when it is near (above 1 for Mgl > 0,
     // below −1 for a hanging top); otherwise say where it is.
-    let outside = |r: f64| !(-1.0 - 1e-12..=1.0 + 1e-12).contains(&r);
-    let third = plot.roots.iter().copied().find(|&r| outside(r));
+    let third = plot
+        .roots
+        .iter()
+        .zip(root_names(plot.roots, plot.beta))
+        .find(|(_, name)| *name == "u\u{2083}")
+        .map(|(&r, _)| r);
     let x_hi = match third {
         Some(r) if r > 1.0 && r <= 1.6 => r + 0.1,
         _ => 1.15,
@@ -266,20 +337,14 @@ fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
     axes.curve(fig, &[(1.0, y_lo), (1.0, y_hi)], &bound);
     axes.curve(fig, &samples, &Stroke::solid(Color::BLACK, 2.0));
     // Roots: markers on the axis, labels above them (alternating heights);
-    // u₁ ≤ u₂ bound the motion, u₃ is the one outside [−1, 1].
+    // u₁ ≤ u₂ bound the motion, u₃ is the third root ([`root_names`]).
     let mut off_scale = Vec::new();
-    let mut inside = 0;
-    for (k, &r) in plot.roots.iter().enumerate() {
-        let name = if outside(r) {
-            "u\u{2083}"
-        } else {
-            inside += 1;
-            if inside == 1 {
-                "u\u{2081}"
-            } else {
-                "u\u{2082}"
-            }
-        };
+    for (k, (&r, name)) in plot
+        .roots
+        .iter()
+        .zip(root_names(plot.roots, plot.beta))
+        .enumerate()
+    {
         let p = axes.pixel(r, 0.0);
         if axes.frame.contains(p) {
             axes.marker(fig, r, 0.0, 5.0, Color::rgb(230, 160, 20));
@@ -328,6 +393,24 @@ fn cubic_panel(fig: &mut Figure, plot: &TopPlot<'_>) {
             13.0,
             Anchor::Start,
         ));
+    }
+}
+
+/// The names of the roots of f (ascending, as the library gives them):
+/// u₁ ≤ u₂ bound the motion in [−1, 1], u₃ is the third root, ≥ 1 for
+/// β > 0 (the largest) and ≤ −1 for β < 0 (the smallest); a free top
+/// (β = 0), or one whose third root lies beyond the f64 range, has only
+/// u₁ ≤ u₂. A root exactly at ±1 is named by this order too: the pole is
+/// u₁ or u₂ when the axis reaches it, u₃ when it is the cubic's third root
+/// (f < 0 beside it inside [−1, 1]).
+pub fn root_names(roots: &[f64], beta: f64) -> Vec<&'static str> {
+    const U1: &str = "u\u{2081}";
+    const U2: &str = "u\u{2082}";
+    const U3: &str = "u\u{2083}";
+    match (roots.len(), beta) {
+        (3, b) if b > 0.0 => vec![U1, U2, U3],
+        (3, b) if b < 0.0 => vec![U3, U1, U2],
+        (n, _) => [U1, U2, U3].into_iter().take(n).collect(),
     }
 }
 
@@ -388,6 +471,15 @@ fn zoom(fig: &mut Figure, plot: &TopPlot<'_>, main: &Axes, (u1, u2): (f64, f64),
     }
 }
 
+/// An angle (given in radians) for a label: `0.5 rad`, or `28.6479°`.
+fn angle(radians: f64, degrees: bool) -> String {
+    if degrees {
+        format!("{}\u{b0}", short(radians.to_degrees()))
+    } else {
+        format!("{} rad", short(radians))
+    }
+}
+
 /// A number with 6 significant digits, for labels.
 fn short(value: f64) -> String {
     let text = format!("{:.5e}", value);
@@ -419,7 +511,9 @@ mod tests {
             theta_max: 0.6,
             f: &f,
             roots: &[0.8, 0.9, 3.0],
+            beta: 10.0,
             samples_per_period: Some(30),
+            degrees: false,
         });
         let texts: Vec<&str> = fig
             .items

@@ -18,14 +18,30 @@ enum Value<'a> {
     Flag(bool),
 }
 
-/// The fields in output order, with their units.
-fn fields(s: &Summary) -> Vec<(&'static str, Value<'_>, &'static str)> {
+/// An angle field `(key, value, "rad")`, or with `degrees` (the value
+/// already in degrees) `(key_deg, value, "deg")`.
+fn angle<'a>(
+    keys: (&'static str, &'static str),
+    value: f64,
+    degrees: bool,
+) -> (&'static str, Value<'a>, &'static str) {
+    if degrees {
+        (keys.1, Value::Number(value), "deg")
+    } else {
+        (keys.0, Value::Number(value), "rad")
+    }
+}
+
+/// The fields in output order, with their units (with `degrees` the
+/// summary's angles are in degrees, [`Summary::in_degrees`], and their
+/// keys end in `_deg`).
+fn fields(s: &Summary, degrees: bool) -> Vec<(&'static str, Value<'_>, &'static str)> {
     use Value::{Flag, List, Number, Optional, Word};
     vec![
         ("i1", Number(s.i1), "kg m^2 (about the pivot)"),
         ("i3", Number(s.i3), "kg m^2"),
         ("mgl", Number(s.mgl), "J"),
-        ("theta0", Number(s.theta0), "rad"),
+        angle(("theta0", "theta0_deg"), s.theta0, degrees),
         ("theta_dot0", Number(s.theta_dot0), "rad/s"),
         ("phi_dot0", Number(s.phi_dot0), "rad/s"),
         ("psi_dot0", Number(s.psi_dot0), "rad/s"),
@@ -35,8 +51,8 @@ fn fields(s: &Summary) -> Vec<(&'static str, Value<'_>, &'static str)> {
         ("beta", Number(s.beta), "1/s^2"),
         ("omega3", Number(s.omega3), "rad/s"),
         ("roots", List(&s.roots), "(u = cos theta, ascending)"),
-        ("theta_min", Number(s.theta_min), "rad"),
-        ("theta_max", Number(s.theta_max), "rad"),
+        angle(("theta_min", "theta_min_deg"), s.theta_min, degrees),
+        angle(("theta_max", "theta_max_deg"), s.theta_max, degrees),
         ("nutation_period", Optional(s.nutation_period), "s"),
         (
             "mean_precession_rate",
@@ -59,9 +75,9 @@ fn json_number(out: &mut String, value: f64) {
 }
 
 /// The JSON report: one object, one member per line, ending with a newline.
-pub fn json(s: &Summary) -> String {
+pub fn json(s: &Summary, degrees: bool) -> String {
     let mut out = String::from("{\n");
-    for (i, (key, value, _)) in fields(s).into_iter().enumerate() {
+    for (i, (key, value, _)) in fields(s, degrees).into_iter().enumerate() {
         if i > 0 {
             out.push_str(",\n");
         }
@@ -97,9 +113,9 @@ pub fn json(s: &Summary) -> String {
 }
 
 /// The text report: `name: value unit`, one per line.
-pub fn text(s: &Summary) -> String {
+pub fn text(s: &Summary, degrees: bool) -> String {
     let mut out = String::new();
-    for (key, value, unit) in fields(s) {
+    for (key, value, unit) in fields(s, degrees) {
         let _ = write!(out, "{key}: ");
         let mut with_unit = true;
         match value {
@@ -158,7 +174,7 @@ mod tests {
 
     #[test]
     fn json_has_every_field_and_nulls() {
-        let json = json(&summary());
+        let json = json(&summary(), false);
         assert!(json.starts_with("{\n  \"i1\": 0.3,\n"), "{json}");
         assert!(json.contains("\"roots\": [0.8, 0.87, 30],\n"), "{json}");
         assert!(json.contains("\"nutation_period\": null,\n"));
@@ -169,7 +185,7 @@ mod tests {
 
     #[test]
     fn text_has_units() {
-        let text = text(&summary());
+        let text = text(&summary(), false);
         assert!(text.contains("\nomega3: 60 rad/s\n"), "{text}");
         assert!(text.contains("\nnutation_period: none\n"), "{text}");
         assert!(

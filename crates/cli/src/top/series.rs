@@ -33,6 +33,10 @@ use crate::simulate::schedule::{Schedule, ScheduleProblem};
 /// The header line of the CSV, without its newline.
 pub const HEADER: &str = "t,theta,phi,psi,theta_dot,phi_dot,psi_dot,qw,qx,qy,qz";
 
+/// The header line with `--degrees` (θ, φ, ψ in degrees; rates in rad/s).
+pub const HEADER_DEGREES: &str =
+    "t,theta_deg,phi_deg,psi_deg,theta_dot,phi_dot,psi_dot,qw,qx,qy,qz";
+
 /// The most rows a `--csv` file may hold (about 200 bytes each).
 pub const MAX_ROWS: u64 = 1_000_000;
 
@@ -126,8 +130,12 @@ pub fn write_rows<W: Write + ?Sized>(
     motion: &LagrangeTopMotion,
     schedule: &Schedule,
     out: &mut W,
+    degrees: bool,
 ) -> std::io::Result<()> {
-    writeln!(out, "{HEADER}")?;
+    let header = if degrees { HEADER_DEGREES } else { HEADER };
+    // Degrees by `to_degrees`, as the report's angles.
+    let angle = |x: f64| if degrees { x.to_degrees() } else { x };
+    writeln!(out, "{header}")?;
     for k in 0..=schedule.steps() {
         let t = schedule.time(k);
         let e = motion.euler_at(t);
@@ -136,9 +144,9 @@ pub fn write_rows<W: Write + ?Sized>(
             out,
             &[
                 t,
-                e.theta,
-                e.phi,
-                e.psi,
+                angle(e.theta),
+                angle(e.phi),
+                angle(e.psi),
                 e.theta_dot,
                 e.phi_dot,
                 e.psi_dot,
@@ -161,6 +169,7 @@ pub fn write_csv(
     motion: &LagrangeTopMotion,
     schedule: &Schedule,
     path: &Path,
+    degrees: bool,
 ) -> Result<(), CliError> {
     let (file, pending) =
         crate::atomic_file::create(path).map_err(|source| CliError::CreateOutput {
@@ -169,7 +178,7 @@ pub fn write_csv(
         })?;
     let output = Stream::File(path.to_owned());
     let mut writer = BufWriter::with_capacity(1 << 16, file);
-    write_rows(motion, schedule, &mut writer)
+    write_rows(motion, schedule, &mut writer, degrees)
         .and_then(|()| writer.flush())
         .map_err(|source| CliError::Write {
             output: output.clone(),

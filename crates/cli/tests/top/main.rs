@@ -2,7 +2,9 @@
 //! report against the library's answers, the text format, the sleeping top,
 //! the SVG and PNG figures, and one-line errors for bad arguments.
 
+mod degrees;
 mod errors;
+mod limits;
 mod plots;
 mod report;
 mod series;

@@ -1,6 +1,6 @@
 //! `--plot`: well-formed SVG and PNG files of the right size.
 
-use crate::support::{CASES, run_case, scratch_dir};
+use crate::support::{CASES, Case, run_case, scratch_dir};
 
 #[test]
 fn svg_plot_is_well_formed() {
@@ -62,5 +62,55 @@ fn png_plot_has_signature_and_size() {
         assert_eq!((width, height), (1280, 640));
         assert!(png.len() > 20_000, "a drawn image, {} bytes", png.len());
         assert_eq!(&png[png.len() - 8..png.len() - 4], b"IEND");
+    }
+}
+
+/// The texts of an SVG's `<text>` elements.
+fn svg_texts(svg: &str) -> Vec<String> {
+    svg.split("<text ")
+        .skip(1)
+        .filter_map(|t| Some(t.split_once('>')?.1.split_once("</text>")?.0.to_owned()))
+        .collect()
+}
+
+/// Issue 25: released from rest without spin (a = b = 0), f(u) =
+/// (1 − u²)(α − βu) has the roots −1 (the axis swings through the bottom:
+/// u₁), cos θ₀ (u₂) and +1, the cubic's third root (u₃): two roots were
+/// both labelled u₂.
+#[test]
+fn roots_are_named_u1_u2_u3_when_one_is_a_pole() {
+    let cases: [(Case, [&str; 3]); 3] = [
+        // β > 0, the pole u = 1 is the third root.
+        (
+            [0.3, 0.1, 2.0, 0.5, 0.0, 0.0, 0.0],
+            ["u₁ = -1", "u₂ = 0.877583", "u₃ = 1"],
+        ),
+        // β < 0 (centre of mass below the pivot): u = −1 is the third root.
+        (
+            [0.3, 0.1, -2.0, 0.5, 0.0, 0.0, 0.0],
+            ["u₃ = -1", "u₁ = 0.877583", "u₂ = 1"],
+        ),
+        // An ordinary fast top: u₃ far off scale.
+        (
+            [0.3, 0.1, 2.0, 0.5, 0.0, 0.0, 60.0],
+            ["u₁ = 0.869447", "u₂ = 0.877583", "u₃ = 29.1306 (off scale)"],
+        ),
+    ];
+    for (k, (case, want)) in cases.iter().enumerate() {
+        let path = scratch_dir().join(format!("roots{k}.svg"));
+        let run = run_case(case, &["--plot", path.to_str().unwrap()]);
+        assert_eq!(run.code, Some(0), "{}", run.stderr);
+        let texts = svg_texts(&std::fs::read_to_string(&path).unwrap());
+        let roots: Vec<&String> = texts
+            .iter()
+            .filter(|t| ["u₁ = ", "u₂ = ", "u₃ = "].iter().any(|n| t.starts_with(n)))
+            .collect();
+        assert_eq!(roots.len(), 3, "{roots:?}");
+        for name in want {
+            assert!(
+                texts.iter().any(|t| t == name),
+                "{case:?}: no {name:?} in {roots:?}"
+            );
+        }
     }
 }

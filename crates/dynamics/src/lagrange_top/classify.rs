@@ -277,6 +277,14 @@ impl LagrangeTopMotion {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn mean_precession_rate(&self) -> Option<f64> {
+        let mean = self.through_mean()?;
+        let passes = self.pass_rate();
+        Some(if passes == 0.0 { mean } else { mean + passes })
+    }
+
+    /// The mean precession rate without the steps of φ at close passes of
+    /// a vertical (`passes`): the secular part of φ in the through form.
+    pub(super) fn through_mean(&self) -> Option<f64> {
         self.nutation_period()?;
         if self.kind == Kind::Steady {
             return Some(self.init.phi_dot);
@@ -332,6 +340,13 @@ impl LagrangeTopMotion {
             return Some(TopMotionKind::Cusps);
         }
         let rate = |r: (f64, f64), at_top: bool| -> f64 {
+            // A close pass: φ̇ ≈ (b ∓ a)/(2(1 ∓ u)) there, of the sign of b ∓ a.
+            if at_top && self.pass_top != 0.0 {
+                return self.pass_top;
+            }
+            if !at_top && self.pass_bottom != 0.0 {
+                return self.pass_bottom;
+            }
             if at_top && self.through_top {
                 return self.bpa;
             }

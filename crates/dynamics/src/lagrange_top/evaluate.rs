@@ -262,6 +262,7 @@ impl LagrangeTopMotion {
     pub fn euler_at(&self, t: f64) -> EulerAnglesAndRates {
         let mut e = self.signed_euler(t);
         let pi = std::f64::consts::PI;
+        let mut flipped = false;
         if e.theta < 0.0 || e.theta > pi {
             // Rx(θ) = Rx(θ mod 2π); past π, (φ, θ, ψ) ≡ (φ + π, 2π − θ, ψ − π).
             let r = e.theta.rem_euclid(2.0 * pi);
@@ -270,10 +271,12 @@ impl LagrangeTopMotion {
                 e.phi += pi;
                 e.psi -= pi;
                 e.theta_dot = -e.theta_dot;
+                flipped = true;
             } else {
                 e.theta = r;
             }
         }
+        self.apply_passes(&mut e, t, flipped);
         e
     }
 

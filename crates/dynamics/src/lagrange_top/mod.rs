@@ -26,6 +26,7 @@ mod classify;
 mod evaluate;
 mod heavy;
 mod motion;
+mod passes;
 mod roots;
 mod steady;
 #[cfg(test)]
@@ -321,15 +322,21 @@ impl LagrangeTop {
     ///
     /// θ₀ must lie in [0, π] (the angle from the upward vertical; the
     /// equivalent attitude `(φ + π, −θ, ψ − π)` is the caller's choice to
-    /// make). A θ₀ within 10⁻¹⁴ rad of a pole (0 or π) is taken as
-    /// exactly on it: `u = cos θ` resolves no closer start, and the attitude
-    /// changes by less than 10⁻¹⁴ rad.
+    /// make). The f64 nearest π (and anything within 2·10⁻¹⁶ of π) is
+    /// taken as π; a θ₀ just above 0 is kept (10⁻¹⁵ rad nutates in a band of
+    /// that size, continuous with 10⁻⁸).
     ///
     /// # Errors
     /// [`DynamicsError::InvalidTop`] if an angle or rate is not finite, θ₀
     /// is outside [0, π], or a rate is so large that the constants of the
     /// motion overflow f64 (`(I₃ω₃/I₁)²`, `θ̇₀² + sin²θ₀ φ̇₀²`, the
-    /// coefficients of f(u), the frequency of the nutation).
+    /// coefficients of f(u), the frequency of the nutation), or so small
+    /// that a turning point lies closer to a vertical than `1 ∓ cos θ`
+    /// resolves on a band that small too (θ₀ below ~10⁻⁸⁰ with a stable
+    /// spin), or whose momentum `I₃ω₃/I₁`, `sin²θ₀ φ̇₀` underflows to 0. A
+    /// tiny spin released off the vertical (ψ̇₀ = 10⁻³⁰⁰ rad/s) is solved:
+    /// the axis passes the vertical closer than f64 resolves, as in the
+    /// limit, φ and ψ stepping by π there.
     ///
     /// ```
     /// use kreisel_dynamics::{LagrangeTop, LagrangeTopInitial};
@@ -385,6 +392,20 @@ impl LagrangeTop {
         }
         let s = theta.sin();
         let b0 = s * s * phi_dot;
+        // A rate whose momentum underflows to 0 would silently become 0.
+        let lost = |momentum: f64, from: f64| momentum == 0.0 && from != 0.0;
+        if lost(a, omega3) || lost(b0, s * phi_dot) {
+            let (parameter, value) = if lost(a, omega3) && psi_dot != 0.0 {
+                ("psi_dot", psi_dot)
+            } else {
+                ("phi_dot", phi_dot)
+            };
+            return Err(DynamicsError::InvalidTop {
+                parameter,
+                value,
+                reason: "too small: its angular momentum underflows f64 (use 0 or a larger value)",
+            });
+        }
         let a0 = theta_dot * theta_dot + b0 * phi_dot;
         if !(a0 * 4.0).is_finite() || !(a * b0 * 4.0).is_finite() {
             return Err(if theta_dot.abs() >= phi_dot.abs() {
@@ -398,6 +419,26 @@ impl LagrangeTop {
             return Err(too_large("psi_dot", psi_dot));
         }
         let motion = LagrangeTopMotion::new(*self, initial);
+        let tiny_tilt = theta > 0.0 && theta < 1e-60;
+        if motion.pole_distance_underflows() || (tiny_tilt && !motion.is_finite()) {
+            return Err({
+                // The axis comes closer to a vertical than 1 ∓ cos θ resolves.
+                let (parameter, value) = if tiny_tilt {
+                    ("theta", theta)
+                } else if (phi_dot * theta.cos()).abs() > psi_dot.abs() {
+                    ("phi_dot", phi_dot)
+                } else {
+                    ("psi_dot", psi_dot)
+                };
+                DynamicsError::InvalidTop {
+                    parameter,
+                    value,
+                    reason: "too small: the axis comes closer to the vertical than f64 resolves \
+                             (1 - |cos theta| underflows); use 0 (exactly on or through the vertical) \
+                             or a larger value",
+                }
+            });
+        }
         if !motion.is_finite() {
             return Err(too_large("psi_dot", psi_dot));
         }

@@ -1,6 +1,7 @@
 //! The closed-form motion: `u = cos θ` by `sn²`, φ and ψ by Π.
 
 use super::centre::centre_r_from_cubic;
+use super::passes::close_pass;
 use super::roots::{ShiftedCubic, polish_pole_distance};
 use super::third_kind::{ThirdKind, complete_k};
 use super::{LagrangeTop, LagrangeTopInitial};
@@ -76,6 +77,11 @@ pub struct LagrangeTopMotion {
     pub(super) through_top: bool,
     /// `u₁ = −1` exactly (`b = −a`): the axis passes through the downward vertical.
     pub(super) through_bottom: bool,
+    /// ±1 when the axis passes the upward vertical closer than f64
+    /// resolves (sign of `b − a`; then `through_top` too), else 0 (`passes`).
+    pub(super) pass_top: f64,
+    /// ±1 when it so passes the downward vertical (sign of `b + a`), else 0.
+    pub(super) pass_bottom: f64,
     pub(super) kind: Kind,
     /// +1 for β ≥ 0 (base u₁), −1 for β < 0 (base u₂).
     pub(super) sigma: f64,
@@ -111,10 +117,12 @@ pub struct LagrangeTopMotion {
     pub(super) zeta_x: f64,
 }
 
-/// Starts closer than this to a pole (rad) are put on the pole: `u = cos θ`
-/// cannot resolve them (the phase at the turning point near the pole would
-/// round to the turning point itself and misplace the jump of φ by π).
-pub(super) const POLE_SNAP: f64 = 1e-14;
+/// Starts closer than this to π (rad) are put on the downward vertical:
+/// π itself is not an f64, and the f64 nearest it (1.2·10⁻¹⁶ below) means
+/// π. Near θ = 0 nothing is snapped: a start 10⁻¹⁵ rad from upright nutates
+/// in a band of that size, continuous with 10⁻⁸ (the closed form resolves
+/// `1 − cos θ₀ = 2 sin²(θ₀/2)` to full relative accuracy).
+pub(super) const POLE_SNAP: f64 = 2e-16;
 
 /// Which closed form applies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -165,16 +173,27 @@ impl LagrangeTopMotion {
             && (self.kind != Kind::Nutating || self.g.is_finite())
     }
 
+    /// Whether a turning point's distance from a pole, `1 − u₂` or
+    /// `1 + u₁`, is below 10⁻²⁹⁰ (near or in the subnormal range, where
+    /// `(b ∓ a)²` that forms it has lost its digits: a mean precession rate
+    /// 30 % off at ψ̇₀ = 10⁻¹⁶⁰ rad/s) although the axis does not pass
+    /// through that vertical (`b ∓ a ≠ 0`): it comes closer than f64 resolves.
+    pub(super) fn pole_distance_underflows(&self) -> bool {
+        let unresolved = |distance: f64, b_pole: f64, through: bool| {
+            distance < 1e-290 && b_pole != 0.0 && !through
+        };
+        self.kind == Kind::Nutating
+            && (unresolved(self.one_minus_u2, self.bma, self.through_top)
+                || unresolved(self.one_plus_u1, self.bpa, self.through_bottom))
+    }
+
     pub(super) fn new(top: LagrangeTop, initial: LagrangeTopInitial) -> LagrangeTopMotion {
         let pi = std::f64::consts::PI;
         // θ₀ ∈ [0, π] (checked by `LagrangeTop::try_solve`).
         let mut init = initial;
-        // Within POLE_SNAP of a pole the start is put exactly on it (see
-        // `LagrangeTop::try_solve`); π itself is not an f64, so the bottom is
-        // flagged and given sin θ₀ = 0, cos θ₀ = −1 exactly.
-        if init.theta < POLE_SNAP {
-            init.theta = 0.0;
-        }
+        // Within POLE_SNAP of π the start is put exactly on the downward
+        // vertical (see `LagrangeTop::try_solve`); π itself is not an f64,
+        // so the bottom is flagged and given sin θ₀ = 0, cos θ₀ = −1 exactly.
         let at_bottom = pi - init.theta < POLE_SNAP;
         if at_bottom {
             init.theta = pi;
@@ -212,8 +231,8 @@ impl LagrangeTopMotion {
         // α ∓ β = A₀ ∓ β (1 ∓ u₀), without cancellation.
         let alpha_minus_beta = a0 - beta * one_minus_u0;
         let alpha_plus_beta = a0 + beta * one_plus_u0;
-        let through_top = bma == 0.0 && alpha_minus_beta > 0.0;
-        let through_bottom = bpa == 0.0 && alpha_plus_beta > 0.0;
+        let mut through_top = bma == 0.0 && alpha_minus_beta > 0.0;
+        let mut through_bottom = bpa == 0.0 && alpha_plus_beta > 0.0;
         if through_top {
             tp.w2 = one_minus_u0;
         }
@@ -238,7 +257,7 @@ impl LagrangeTopMotion {
                 direct.max(0.0)
             }
         };
-        let one_minus_u2 = if through_top {
+        let mut one_minus_u2 = if through_top {
             0.0
         } else {
             let v0 = pole_distance(
@@ -250,7 +269,7 @@ impl LagrangeTopMotion {
             );
             polish_pole_distance(v0, alpha_minus_beta, beta, bma, a)
         };
-        let one_plus_u1 = if through_bottom {
+        let mut one_plus_u1 = if through_bottom {
             0.0
         } else {
             let v0 = pole_distance(
@@ -262,6 +281,20 @@ impl LagrangeTopMotion {
             );
             polish_pole_distance(v0, alpha_plus_beta, -beta, bpa, -a)
         };
+        // A pole passed closer than f64 resolves is passed through, with
+        // steps of φ and ψ (`passes`); not next to an exact passage of the
+        // other pole (its jumps are the through-form's).
+        let width = tp.w2 - tp.w1;
+        let near_top = close_pass(one_minus_u2, bma, through_top, width) && !through_bottom;
+        let near_bottom = close_pass(one_plus_u1, bpa, through_bottom, width) && !through_top;
+        let (mut pass_top, mut pass_bottom) = (0.0, 0.0);
+        if near_top {
+            (through_top, one_minus_u2, tp.w2, pass_top) = (true, 0.0, one_minus_u0, sign(bma));
+        }
+        if near_bottom {
+            (through_bottom, one_plus_u1, tp.w1, pass_bottom) =
+                (true, 0.0, -one_plus_u0, sign(bpa));
+        }
         let delta = tp.w2 - tp.w1;
         // r = b − a u at u₁ = u₀ + w₁ = −1 + (1 + u₁) and u₂ = u₀ + w₂ = 1 − (1 − u₂):
         // whichever way sums the smaller terms (no cancellation of b against a u₀
@@ -334,6 +367,8 @@ impl LagrangeTopMotion {
             one_plus_u1,
             through_top,
             through_bottom,
+            pass_top,
+            pass_bottom,
             kind,
             sigma,
             nu,
@@ -417,7 +452,7 @@ impl LagrangeTopMotion {
         };
         motion.phi_slope = phi_slope;
         motion.psi_slope = psi_slope;
-        motion.phi_mean = motion.mean_precession_rate();
+        motion.phi_mean = motion.through_mean();
         motion
     }
 }
