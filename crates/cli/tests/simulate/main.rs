@@ -8,6 +8,7 @@
 mod divergence;
 mod errors;
 mod ground;
+mod ground_guard;
 mod ground_inputs;
 mod ground_touchdown;
 mod heavy_top;
