@@ -16,7 +16,7 @@ use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
-use kreisel::dynamics::Friction;
+use kreisel::dynamics::{Friction, GroundCheck};
 
 #[allow(dead_code)]
 #[path = "../tests/common/tippe_top.rs"]
@@ -60,6 +60,22 @@ fn step(c: &mut Criterion) {
             b.iter(|| {
                 let mut s = *start;
                 top.try_step(&mut s, 0.0, black_box(1e-4)).unwrap();
+                s
+            })
+        },
+    );
+    // The same sliding top with the guard the World runs after every step
+    // (`GroundCheck`, issue 25): its cost over the bare step.
+    let (top, start) = leine_glocker(Friction::try_sliding(0.3, 1e-3).unwrap());
+    let guard = GroundCheck::new(&top, &start);
+    group.bench_with_input(
+        BenchmarkId::from_parameter("sliding_eps1mm_guarded"),
+        &start,
+        |b, start| {
+            b.iter(|| {
+                let (mut s, mut check) = (*start, guard);
+                top.try_step(&mut s, 0.0, black_box(1e-4)).unwrap();
+                check.check(&top, &s, 1e-4, 1e-4).unwrap();
                 s
             })
         },

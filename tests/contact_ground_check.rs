@@ -10,23 +10,17 @@ mod common;
 use glam::{DMat3, DQuat, DVec3};
 use kreisel::dynamics::{
     Body, BodyId, ContactShape, DynamicsError, EllipsoidContact, Friction, GroundCheck, GroundTop,
-    GroundTopState, GroundViolation, SphereContact, World,
+    GroundTopState, GroundViolation, World,
 };
 
-use common::tippe_top::{A, G, I1, I3, M, OMEGA0, R, THETA0, distance, flat, leine_glocker};
+use common::tippe_top::{G, OMEGA0, distance, flat, leine_glocker, world_builder};
 
 /// The world's gravity.
 const GRAVITY: DVec3 = DVec3::new(0.0, 0.0, -G);
 
 /// Leine & Glocker's tippe top as a world body with `friction`.
 fn tippe_top(friction: Friction) -> Body {
-    let ball = SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap();
-    Body::from_principal_moments(M, DVec3::new(I1, I1, I3))
-        .world_from_body(DQuat::from_rotation_x(THETA0))
-        .omega_body(DVec3::new(0.0, 0.0, OMEGA0))
-        .on_ground(ContactShape::Sphere(ball), friction)
-        .try_build()
-        .unwrap()
+    world_builder(friction).try_build().unwrap()
 }
 
 /// The generator's samples `(t, state)` for `scenario` (`sliding`, `viscous`).

@@ -15,20 +15,14 @@ use kreisel::dynamics::{
     GroundTopState, Inputs, Plan, SphereContact, World,
 };
 
-use common::tippe_top::{A, G, I1, I3, M, MU, OMEGA0, R, THETA0, leine_glocker};
+use common::tippe_top::{A, G, I1, I3, M, MU, R, leine_glocker, world_builder};
 
 /// The world's gravity.
 const GRAVITY: DVec3 = DVec3::new(0.0, 0.0, -G);
 
 /// Leine & Glocker's tippe top as a world body with `friction`.
 fn tippe_top(friction: Friction) -> Body {
-    let ball = SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap();
-    Body::from_principal_moments(M, DVec3::new(I1, I1, I3))
-        .world_from_body(DQuat::from_rotation_x(THETA0))
-        .omega_body(DVec3::new(0.0, 0.0, OMEGA0))
-        .on_ground(ContactShape::Sphere(ball), friction)
-        .try_build()
-        .unwrap()
+    world_builder(friction).try_build().unwrap()
 }
 
 /// The four friction laws (sliding as Leine & Glocker, ε = 1 mm/s).

@@ -18,7 +18,7 @@ use kreisel::dynamics::{
 };
 
 use common::tippe_top::{
-    A, G, I1, I3, M, MU, OMEGA0, R, STEM_C, STEM_R, THETA0, stem, touchdown_reference,
+    A, G, I1, I3, M, MU, R, STEM_C, STEM_R, stem, touchdown_reference, world_builder,
 };
 
 /// The world's gravity.
@@ -27,12 +27,7 @@ const GRAVITY: DVec3 = DVec3::new(0.0, 0.0, -G);
 /// Leine & Glocker's tippe top on the ground with `friction`, watching
 /// its stem ball.
 fn tippe_top(friction: Friction) -> BodyBuilder {
-    let ball = SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap();
-    Body::from_principal_moments(M, DVec3::new(I1, I1, I3))
-        .world_from_body(DQuat::from_rotation_x(THETA0))
-        .omega_body(DVec3::new(0.0, 0.0, OMEGA0))
-        .on_ground(ContactShape::Sphere(ball), friction)
-        .other_contacts(&[stem()])
+    world_builder(friction).other_contacts(&[stem()])
 }
 
 /// The stem ball's gap: the height of its lowest point, m.

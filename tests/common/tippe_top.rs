@@ -2,7 +2,9 @@
 //! shared test problem of `tests/contact_*.rs` and `benches/tippe_top.rs`.
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
-use kreisel::dynamics::{ContactShape, Friction, GroundTop, GroundTopState, SphereContact};
+use kreisel::dynamics::{
+    Body, BodyBuilder, ContactShape, Friction, GroundTop, GroundTopState, SphereContact,
+};
 
 /// Mass, kg.
 pub const M: f64 = 0.006;
@@ -40,6 +42,16 @@ pub fn leine_glocker(friction: Friction) -> (GroundTop, GroundTopState) {
     }
     .unwrap();
     (top, s)
+}
+
+/// The same top as a [`kreisel::dynamics::World`] body on the ground with
+/// `friction` (still a builder: further contacts may be added).
+pub fn world_builder(friction: Friction) -> BodyBuilder {
+    let ball = SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap();
+    Body::from_principal_moments(M, DVec3::new(I1, I1, I3))
+        .world_from_body(DQuat::from_rotation_x(THETA0))
+        .omega_body(DVec3::new(0.0, 0.0, OMEGA0))
+        .on_ground(ContactShape::Sphere(ball), friction)
 }
 
 /// The state as one vector of comparable size: positions over R,

@@ -73,7 +73,8 @@ fn summary_dict<'py>(py: Python<'py>, s: &Summary) -> PyResult<Bound<'py, PyDict
 /// --format json`` as a dict with the same keys: the parameters, ``a``,
 /// ``b``, ``alpha``, ``beta``, ``omega3``, ``roots`` (of f(u), ascending,
 /// numpy), ``theta_min``, ``theta_max``, ``nutation_period`` and
-/// ``mean_precession_rate`` (None for a sleeping top), ``motion``
+/// ``mean_precession_rate`` (None for a sleeping top; the period also for
+/// a steady precession and the axis on the vertical, θ₀ = π), ``motion``
 /// ("no_loops", "loops", "cusps" or None), ``sleeping``,
 /// ``sleeping_stable``.
 ///

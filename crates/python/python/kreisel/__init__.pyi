@@ -177,7 +177,8 @@ class World:
 # --- the heavy symmetric top: the dict of `kreisel top --format json`
 # i1, i3, mgl, theta0, theta_dot0, phi_dot0, psi_dot0, a, b, alpha, beta,
 # omega3, roots (array), theta_min, theta_max, nutation_period (None when
-# sleeping), mean_precession_rate (None when sleeping), motion ("no_loops",
+# sleeping, precessing steadily or on the vertical), mean_precession_rate
+# (None when sleeping or on the vertical), motion ("no_loops",
 # "loops", "cusps" or None), sleeping, sleeping_stable.
 
 def top(
