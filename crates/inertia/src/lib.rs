@@ -22,6 +22,7 @@ mod edge_uses;
 mod error;
 #[cfg(feature = "formats")]
 pub mod io;
+mod kernel_build;
 mod mass_properties;
 mod mesh_check;
 mod mesh_format;
@@ -40,6 +41,7 @@ mod weld;
 
 pub use convex_hull::convex_hull;
 pub use error::InertiaError;
+pub use kernel_build::{KERNEL_ENV, KernelError, SolidKernel};
 pub use mass_properties::MassProperties;
 pub use mesh_check::{CheckedMesh, MeshWarning, prepare_shell, prepare_solid};
 pub use mesh_integration::MeshMoments;

@@ -14,6 +14,7 @@
 
 use glam::DVec3;
 
+use crate::SolidKernel;
 use crate::parallel::{map_ranges, threads_for};
 
 /// Triangles summed into one partial sum before it is added to the total,
@@ -317,20 +318,16 @@ mod avx512 {
 /// The ten sums of a mesh's triangles about `origin` (every index must be
 /// in range for `v`; [`crate::TriMesh`] guarantees it), on the machine's
 /// cores from [`crate::parallel::PARALLEL_MIN`] triangles.
-///
-/// The same bits on any number of threads: each block of [`BLOCK`]
-/// triangles is summed alone (the SIMD builds sum block by block anyway),
-/// and the blocks' sums are added in block order.
-pub(crate) fn solid_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
-    solid_sums_on(v, origin, triangles, threads_for(triangles.len()))
+pub(crate) fn solid_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]], kernel: SolidKernel) -> Sums {
+    solid_sums_on(v, origin, triangles, threads_for(triangles.len()), kernel)
 }
 
 /// [`solid_sums`] on at most `threads` threads.
-fn solid_sums_on(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]], threads: usize) -> Sums {
+fn solid_sums_on(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]], threads: usize, kernel: SolidKernel) -> Sums {
     let partials = map_ranges(triangles.len(), threads, BLOCK, |r| {
         triangles[r]
             .chunks(BLOCK)
-            .map(|block| block_sums(v, origin, block))
+            .map(|block| block_sums(v, origin, block, kernel))
             .collect::<Vec<Sums>>()
     });
     add_in_order(partials.iter().flatten())
@@ -347,24 +344,25 @@ pub(crate) fn add_in_order<'a>(partials: impl Iterator<Item = &'a Sums>) -> Sums
     total
 }
 
-/// The sums of one block (or of several, added block by block) on this
-/// thread, in the fastest build the CPU runs.
+/// The sums of one block on this thread, in the build `kernel`, or in the
+/// portable one if the CPU lacks its features.
 #[allow(unsafe_code)]
-fn block_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
+fn block_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]], kernel: SolidKernel) -> Sums {
     #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::is_x86_feature_detected as has;
-        if has!("avx512f") && has!("avx512vl") && has!("fma") {
+    match kernel {
+        SolidKernel::Avx512 if kernel.is_supported() => {
             // SAFETY: `avx512::sums` needs only AVX-512F/VL and FMA, which
             // the CPU has (checked just above).
             return unsafe { avx512::sums(v, origin, triangles) };
         }
-        if has!("avx2") && has!("fma") {
+        SolidKernel::Avx2 if kernel.is_supported() => {
             // SAFETY: `avx2::sums` needs only AVX2 and FMA, which the CPU
             // has (checked just above).
             return unsafe { avx2::sums(v, origin, triangles) };
         }
+        _ => {}
     }
+    let _ = kernel;
     sums_scalar(v, origin, triangles)
 }
 
@@ -412,7 +410,7 @@ mod tests {
         }
         let mut builds = vec![
             sums_scalar(&v, origin, &tris),
-            solid_sums(&v, origin, &tris),
+            solid_sums(&v, origin, &tris, SolidKernel::active()),
         ];
         #[cfg(target_arch = "x86_64")]
         #[allow(unsafe_code)]
@@ -448,9 +446,9 @@ mod tests {
             .map(|i| [i % 3001, (7 * i + 1) % 3001, (13 * i + 5) % 3001])
             .collect();
         let origin = DVec3::new(0.1, -0.2, 0.3);
-        let one = block_sums(&v, origin, &tris);
+        let one = block_sums(&v, origin, &tris, SolidKernel::fastest());
         for threads in [1, 2, 3, 4, 7, 64] {
-            let many = solid_sums_on(&v, origin, &tris, threads);
+            let many = solid_sums_on(&v, origin, &tris, threads, SolidKernel::fastest());
             assert_eq!(many.map(f64::to_bits), one.map(f64::to_bits), "{threads}");
         }
     }
