@@ -50,7 +50,11 @@ fn main() {
     let builds = SolidKernel::supported();
     let names: Vec<&str> = builds.iter().map(|k| k.name()).collect();
     println!("ns per triangle (median), and portable / build (median of rounds)");
-    println!("| triangles | {} | {} |", names.join(" | "), names.join("× | "));
+    println!(
+        "| triangles | {} | {} |",
+        names.join(" | "),
+        names.join("× | ")
+    );
     for (n, rounds) in [(22, 2000), (70, 200), (224, 30), (707, 6), (1000, 4)] {
         let mesh = torus(n);
         let triangles = mesh.triangles().len() as f64;
@@ -69,8 +73,14 @@ fn main() {
                 ratios[b].push(this[0] / this[b]);
             }
         }
-        let t: Vec<String> = times.iter_mut().map(|v| format!("{:.2}", median(v))).collect();
-        let r: Vec<String> = ratios.iter_mut().map(|v| format!("{:.2}", median(v))).collect();
+        let t: Vec<String> = times
+            .iter_mut()
+            .map(|v| format!("{:.2}", median(v)))
+            .collect();
+        let r: Vec<String> = ratios
+            .iter_mut()
+            .map(|v| format!("{:.2}", median(v)))
+            .collect();
         println!("| {} | {} | {} |", triangles, t.join(" | "), r.join(" | "));
     }
 }

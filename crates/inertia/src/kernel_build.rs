@@ -233,10 +233,7 @@ mod tests {
                 needs: "avx512f, avx512vl and fma"
             })
         );
-        assert_eq!(
-            requested(" AVX2 ", no_avx512),
-            Ok(Some(SolidKernel::Avx2))
-        );
+        assert_eq!(requested(" AVX2 ", no_avx512), Ok(Some(SolidKernel::Avx2)));
         let portable_only = |k: SolidKernel| k == SolidKernel::Portable;
         assert!(matches!(
             requested("avx2", portable_only),
