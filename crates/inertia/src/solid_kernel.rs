@@ -235,14 +235,17 @@ mod avx2 {
         let o = _mm256_set_pd(0.0, origin.z, origin.y, origin.x);
         let mut even = [_mm256_setzero_pd(); 4];
         let mut odd = even;
-        for pair in block.chunks(2) {
+        let mut pairs = block.chunks_exact(2);
+        for pair in pairs.by_ref() {
             // SAFETY: the indices come from a TriMesh, so they are in range.
             unsafe {
                 add_triangle(&mut even, flat, o, pair[0]);
-                if let Some(&t) = pair.get(1) {
-                    add_triangle(&mut odd, flat, o, t);
-                }
+                add_triangle(&mut odd, flat, o, pair[1]);
             }
+        }
+        if let Some(&t) = pairs.remainder().first() {
+            // SAFETY: as above.
+            unsafe { add_triangle(&mut even, flat, o, t) };
         }
         super::Lanes {
             volume: lanes(_mm256_add_pd(even[0], odd[0]))[0],
