@@ -12,9 +12,16 @@
 //!   minus sign inside the tensor).
 //! - Principal frames are right-handed; `principal_orientation` maps
 //!   principal-frame coordinates to body (mesh) coordinates.
+//! - Mesh integrals give the same bits on every machine and thread count:
+//!   the integration kernel's portable, AVX2/FMA and AVX-512 builds (picked
+//!   at run time, [`SolidKernel`]) perform the same operations in the same
+//!   order. The environment variable `KREISEL_KERNEL=portable|avx2|avx512`
+//!   forces a build for tests and benchmarks; a build the CPU lacks is never
+//!   run (the fastest one it has runs instead, and
+//!   [`SolidKernel::from_env`] says why).
 #![deny(missing_docs)]
-// One small module (`solid_kernel`) calls its AVX2/FMA build after a
-// run-time CPU check; everything else is safe code.
+// One small module (`solid_kernel`) calls its AVX2/FMA and AVX-512 builds
+// after a run-time CPU check; everything else is safe code.
 #![deny(unsafe_code)]
 
 mod convex_hull;
