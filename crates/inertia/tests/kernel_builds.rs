@@ -139,9 +139,11 @@ fn child(value: &str) -> String {
         .unwrap();
     assert!(out.status.success(), "{value}: {out:?}");
     let stdout = String::from_utf8(out.stdout).unwrap();
-    stdout
+    // libtest prints the test's name before the report on the same line.
+    let report = stdout
         .lines()
-        .find(|l| l.starts_with("active="))
+        .find_map(|l| l.find("active=").map(|at| &l[at..]));
+    report
         .unwrap_or_else(|| panic!("{value}: no report in {stdout}"))
         .to_owned()
 }
