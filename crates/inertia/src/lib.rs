@@ -12,9 +12,16 @@
 //!   minus sign inside the tensor).
 //! - Principal frames are right-handed; `principal_orientation` maps
 //!   principal-frame coordinates to body (mesh) coordinates.
+//! - Mesh integrals give the same bits on every machine and thread count:
+//!   the integration kernel's portable, AVX2/FMA and AVX-512 builds (picked
+//!   at run time, [`SolidKernel`]) perform the same operations in the same
+//!   order. The environment variable `KREISEL_KERNEL=portable|avx2|avx512`
+//!   forces a build for tests and benchmarks; a build the CPU lacks is never
+//!   run (the fastest one it has runs instead, and
+//!   [`SolidKernel::from_env`] says why).
 #![deny(missing_docs)]
-// One small module (`solid_kernel`) calls its AVX2/FMA build after a
-// run-time CPU check; everything else is safe code.
+// One small module (`solid_kernel`) calls its AVX2/FMA and AVX-512 builds
+// after a run-time CPU check; everything else is safe code.
 #![deny(unsafe_code)]
 
 mod convex_hull;
@@ -22,6 +29,7 @@ mod edge_uses;
 mod error;
 #[cfg(feature = "formats")]
 pub mod io;
+mod kernel_build;
 mod mass_properties;
 mod mesh_check;
 mod mesh_format;
@@ -40,6 +48,7 @@ mod weld;
 
 pub use convex_hull::convex_hull;
 pub use error::InertiaError;
+pub use kernel_build::{KERNEL_ENV, KernelError, SolidKernel};
 pub use mass_properties::MassProperties;
 pub use mesh_check::{CheckedMesh, MeshWarning, prepare_shell, prepare_solid};
 pub use mesh_integration::MeshMoments;

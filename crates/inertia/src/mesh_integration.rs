@@ -6,7 +6,7 @@ use glam::{DMat3, DVec3};
 use crate::mass_properties::check_positive;
 use crate::parallel::{map_ranges, threads_for};
 use crate::solid_kernel::{Sums, add_in_order, solid_sums};
-use crate::{InertiaError, MassProperties, TriMesh};
+use crate::{InertiaError, KernelError, MassProperties, SolidKernel, TriMesh};
 
 /// Triangles summed into one partial sum before it is added to the total,
 /// so rounding errors grow like `n/B + B` instead of `n`.
@@ -139,8 +139,32 @@ impl MeshMoments {
     /// # assert!((c - DVec3::splat(0.25)).length() < 1e-15);
     /// ```
     pub fn solid(mesh: &TriMesh) -> Self {
+        Self::solid_on(mesh, SolidKernel::active())
+    }
+
+    /// [`MeshMoments::solid`] by a chosen build of its kernel (for tests
+    /// and benchmarks: every build gives the same bits).
+    ///
+    /// # Errors
+    /// [`KernelError::Unsupported`] if this CPU cannot run the build.
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_inertia::{MeshMoments, SolidKernel, TriMesh};
+    /// let v = vec![DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::Z];
+    /// let tet = TriMesh::new(v, vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]);
+    /// let portable = MeshMoments::solid_with(&tet, SolidKernel::Portable)?;
+    /// assert_eq!(portable, MeshMoments::solid(&tet));
+    /// # Ok::<(), kreisel_inertia::KernelError>(())
+    /// ```
+    pub fn solid_with(mesh: &TriMesh, kernel: SolidKernel) -> Result<Self, KernelError> {
+        Ok(Self::solid_on(mesh, kernel.check()?))
+    }
+
+    /// [`MeshMoments::solid`] by `kernel`, which this CPU runs.
+    fn solid_on(mesh: &TriMesh, kernel: SolidKernel) -> Self {
         let origin = reference_point(mesh);
-        let sums = solid_sums(mesh.vertices(), origin, mesh.triangles());
+        let sums = solid_sums(mesh.vertices(), origin, mesh.triangles(), kernel);
         moments(origin, &sums, 1.0 / 6.0, 1.0 / 24.0, 1.0 / 120.0)
     }
 

@@ -1,19 +1,55 @@
 //! The hot loop of [`crate::MeshMoments::solid`]: the ten sums of the signed
 //! tetrahedra over all triangles.
 //!
-//! Three builds of the same formulas: a portable scalar loop; an AVX2/FMA
-//! loop vectorised across the coordinates of each triangle (a corner is one
-//! register `(x, y, z, 0)`, cross products are lane permutations, four
-//! registers accumulate the ten sums); and the same on AVX-512 with two
-//! triangles per register. This is the one module with `unsafe`: calling a
-//! SIMD build after checking at run time that the CPU supports it, and the
-//! masked loads of a vertex's three coordinates, whose indices `TriMesh`
-//! checked when it was built. Measured in BENCHMARKS.md (`cargo bench
-//! --bench inertia`): 13.3 ns per triangle scalar, ≈ 6 ns AVX2, ≈ 5 ns
-//! AVX-512.
+//! Three builds of one sequence of floating-point operations, so all three
+//! give the same bits on every machine ([`SolidKernel`] picks one at run
+//! time; `KREISEL_KERNEL=portable|avx2|avx512` forces one): a portable
+//! scalar loop; an AVX2/FMA loop vectorised across the coordinates of each
+//! triangle (a corner is one register `(x, y, z, 0)`, cross products are
+//! lane permutations); and the same on AVX-512 with two triangles per
+//! register.
+//!
+//! The sequence, per triangle with corners `a, b, c` (minus the origin) and
+//! lanes `i = x, y, z` (`i+1`, `i+2` cyclic), where `fma(x, y, z)` is
+//! `x·y + z` rounded once (`f64::mul_add`, `vfmadd`):
+//!
+//! ```text
+//! mᵢ  = fma(bᵢ, cᵢ₊₁, −(bᵢ₊₁·cᵢ))            (b × c)ᵢ₊₂
+//! eᵢ  = aᵢ₊₂ · mᵢ
+//! dᵢ  = (eᵢ + eᵢ₊₁) + eᵢ₊₂                   a · (b × c), summed from lane i
+//! sᵢ  = (aᵢ + bᵢ) + cᵢ
+//! qᵢⱼ = fma(sᵢ, sⱼ, fma(aᵢ, aⱼ, fma(bᵢ, bⱼ, cᵢ·cⱼ)))
+//! volume += d_x;   firstᵢ = fma(dᵢ, sᵢ, firstᵢ)
+//! diagonalᵢ = fma(dᵢ, qᵢᵢ, diagonalᵢ);   offᵢ = fma(dᵢ, qᵢ,ᵢ₊₁, offᵢ)
+//! ```
+//!
+//! Within a block of [`BLOCK`] triangles, the even-numbered triangles
+//! (0, 2, 4, …) go into one set of accumulators and the odd-numbered into
+//! another (the AVX-512 build's two register halves; the other builds keep
+//! two sets too, which also lets the AVX2 build overlap two triangles); a
+//! block's sums are `even + odd`, and the blocks' sums are added in block
+//! order from zero. Only `+ − ×` and fused multiply-adds, each correctly
+//! rounded by IEEE 754, so the bits depend on nothing but this order.
+//!
+//! The portable build's `f64::mul_add` is one instruction where the target
+//! has FMA (aarch64, or x86-64 compiled with `-C target-feature=+fma`);
+//! otherwise (the x86-64 baseline) it calls the C library's `fma`, which C99
+//! requires to be correctly rounded (same bits) but is a function call, and
+//! on a CPU without hardware FMA a software emulation: the portable build
+//! then takes ~90 ns per triangle instead of the unfused loop's ~12 ns
+//! (BENCHMARKS.md, `cargo bench -p kreisel-inertia --bench kernels`; glibc's
+//! software `fma` measured as fast as its FMA one there). x86-64 CPUs
+//! without FMA predate AVX2 (before 2013), and any CPU with AVX2 runs the
+//! AVX2 build instead.
+//!
+//! This is the one module with `unsafe`: calling a SIMD build after
+//! checking at run time that the CPU supports it, and the masked loads of a
+//! vertex's three coordinates, whose indices `TriMesh` checked when it was
+//! built.
 
 use glam::DVec3;
 
+use crate::SolidKernel;
 use crate::parallel::{map_ranges, threads_for};
 
 /// Triangles summed into one partial sum before it is added to the total,
@@ -25,61 +61,92 @@ const BLOCK: usize = 512;
 /// Σd·(sᵢsⱼ + aᵢaⱼ + bᵢbⱼ + cᵢcⱼ) for xx, yy, zz, xy, xz, yz.
 pub(crate) type Sums = [f64; 10];
 
-/// One triangle's ten terms before weighting by `d`, and `d` itself.
-#[inline(always)]
-fn terms(a: DVec3, b: DVec3, c: DVec3) -> (f64, [f64; 9]) {
-    let d = a.dot(b.cross(c));
-    let s = a + b + c;
-    let q = |i: usize, j: usize| s[i] * s[j] + a[i] * a[j] + b[i] * b[j] + c[i] * c[j];
-    (
-        d,
-        [
-            s.x,
-            s.y,
-            s.z,
-            q(0, 0),
-            q(1, 1),
-            q(2, 2),
-            q(0, 1),
-            q(0, 2),
-            q(1, 2),
-        ],
-    )
+/// One set of accumulators in the SIMD builds' lane order: the off-diagonal
+/// sums are (xy, yz, zx).
+#[derive(Clone, Copy, Default)]
+struct Lanes {
+    volume: f64,
+    first: [f64; 3],
+    diagonal: [f64; 3],
+    off: [f64; 3],
 }
 
-/// The portable build: one triangle at a time.
-fn sums_scalar(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
-    let mut total = [0.0; 10];
-    for block in triangles.chunks(BLOCK) {
-        let mut acc = [0.0; 10];
-        for &[i, j, k] in block {
-            let (d, t) = terms(
-                v[i as usize] - origin,
-                v[j as usize] - origin,
-                v[k as usize] - origin,
-            );
-            acc[0] += d;
-            for (a, t) in acc[1..].iter_mut().zip(t) {
-                *a += d * t;
-            }
-        }
-        for (t, a) in total.iter_mut().zip(acc) {
-            *t += a;
+impl Lanes {
+    /// `self + other`, lane by lane.
+    fn add(self, other: Lanes) -> Lanes {
+        let add3 = |x: [f64; 3], y: [f64; 3]| [x[0] + y[0], x[1] + y[1], x[2] + y[2]];
+        Lanes {
+            volume: self.volume + other.volume,
+            first: add3(self.first, other.first),
+            diagonal: add3(self.diagonal, other.diagonal),
+            off: add3(self.off, other.off),
         }
     }
-    total
+
+    /// The sums in [`Sums`] order (xy, xz, yz last).
+    fn sums(self) -> Sums {
+        let (f, d, o) = (self.first, self.diagonal, self.off);
+        [
+            self.volume,
+            f[0],
+            f[1],
+            f[2],
+            d[0],
+            d[1],
+            d[2],
+            o[0],
+            o[2],
+            o[1],
+        ]
+    }
+
+    /// Adds one triangle's terms (corners relative to the origin) in the
+    /// sequence of the module documentation.
+    #[inline(always)]
+    fn add_triangle(&mut self, a: [f64; 3], b: [f64; 3], c: [f64; 3]) {
+        const NEXT: [usize; 3] = [1, 2, 0];
+        const AFTER: [usize; 3] = [2, 0, 1];
+        let lanes = [0, 1, 2];
+        let m = lanes.map(|i| b[i].mul_add(c[NEXT[i]], -(b[NEXT[i]] * c[i])));
+        let e = lanes.map(|i| a[AFTER[i]] * m[i]);
+        let d = lanes.map(|i| (e[i] + e[NEXT[i]]) + e[AFTER[i]]);
+        let s = lanes.map(|i| (a[i] + b[i]) + c[i]);
+        let q = |i: usize, j: usize| {
+            s[i].mul_add(s[j], a[i].mul_add(a[j], b[i].mul_add(b[j], c[i] * c[j])))
+        };
+        self.volume += d[0];
+        for i in lanes {
+            self.first[i] = d[i].mul_add(s[i], self.first[i]);
+            self.diagonal[i] = d[i].mul_add(q(i, i), self.diagonal[i]);
+            self.off[i] = d[i].mul_add(q(i, NEXT[i]), self.off[i]);
+        }
+    }
+}
+
+/// The portable build: the sums of one block (at most [`BLOCK`] triangles).
+fn block_portable(v: &[DVec3], origin: DVec3, block: &[[u32; 3]]) -> Sums {
+    let corner = |i: u32| (v[i as usize] - origin).to_array();
+    let (mut even, mut odd) = (Lanes::default(), Lanes::default());
+    for pair in block.chunks(2) {
+        let [i, j, k] = pair[0];
+        even.add_triangle(corner(i), corner(j), corner(k));
+        if let Some(&[i, j, k]) = pair.get(1) {
+            odd.add_triangle(corner(i), corner(j), corner(k));
+        }
+    }
+    even.add(odd).sums()
 }
 
 #[cfg(target_arch = "x86_64")]
 mod avx2 {
-    //! AVX2 + FMA. The only `unsafe` besides the dispatch: a masked load
-    //! of a vertex's three coordinates, whose index `TriMesh` has checked.
+    //! AVX2 + FMA: one triangle per 256-bit register `(x, y, z, 0)`, the
+    //! even and odd triangles of a block in two sets of four accumulators.
 
     #![allow(unsafe_code)]
 
     use core::arch::x86_64::*;
 
-    use super::{BLOCK, Sums};
+    use super::Sums;
     use glam::DVec3;
 
     /// Vertex `i` minus the origin as `(x, y, z, 0)`: one masked load of
@@ -113,89 +180,97 @@ mod avx2 {
         _mm256_permute4x64_pd::<0b11_01_00_10>(a)
     }
 
-    /// Lane `k` of a register.
+    /// Lanes 0, 1, 2 of a register.
     #[inline]
     #[target_feature(enable = "avx2,fma")]
-    fn lane(a: __m256d, k: usize) -> f64 {
-        let lo = _mm256_castpd256_pd128(a);
-        let hi = _mm256_extractf128_pd::<1>(a);
-        match k {
-            0 => _mm_cvtsd_f64(lo),
-            1 => _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo)),
-            _ => _mm_cvtsd_f64(hi),
-        }
+    fn lanes(a: __m256d) -> [f64; 3] {
+        let mut out = [0.0; 4];
+        // SAFETY: `out` holds four f64 (an unaligned store).
+        unsafe { _mm256_storeu_pd(out.as_mut_ptr(), a) };
+        [out[0], out[1], out[2]]
     }
 
-    /// The AVX2 build of [`super::sums_scalar`].
+    /// Accumulators: volume (lane 0), first, diagonal and off-diagonal
+    /// (xy, yz, zx).
+    type Acc = [__m256d; 4];
+
+    /// Adds triangle `[i, j, k]` to `acc` (the sequence of the module
+    /// documentation of `solid_kernel`).
+    ///
+    /// # Safety
+    /// The indices are in range for `flat` (see [`corner`]).
+    #[inline]
     #[target_feature(enable = "avx2,fma")]
-    pub(super) fn sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
+    unsafe fn add_triangle(acc: &mut Acc, flat: &[f64], o: __m256d, [i, j, k]: [u32; 3]) {
+        // SAFETY: the caller's promise.
+        let (a, b, c) = unsafe { (corner(flat, o, i), corner(flat, o, j), corner(flat, o, k)) };
+        let (a1, b1, c1) = (yzx(a), yzx(b), yzx(c));
+        // m = b ∘ c.yzx − b.yzx ∘ c = (b × c).zxy, so
+        // d = a · (b × c) = Σᵢ (a.zxy ∘ m)ᵢ, summed into every lane
+        // by adding its two rotations (no extract or broadcast).
+        let m = _mm256_fmsub_pd(b, c1, _mm256_mul_pd(b1, c));
+        let e = _mm256_mul_pd(zxy(a), m);
+        let d = _mm256_add_pd(_mm256_add_pd(e, yzx(e)), zxy(e));
+        let s = _mm256_add_pd(_mm256_add_pd(a, b), c);
+        // (sᵢsᵢ + …) and (sᵢsⱼ + …) with j = i + 1 (mod 3)
+        let sq = _mm256_fmadd_pd(
+            s,
+            s,
+            _mm256_fmadd_pd(a, a, _mm256_fmadd_pd(b, b, _mm256_mul_pd(c, c))),
+        );
+        // s.yzx from the rotated corners: additions instead of a permutation.
+        let s1 = _mm256_add_pd(_mm256_add_pd(a1, b1), c1);
+        let cross = _mm256_fmadd_pd(
+            s,
+            s1,
+            _mm256_fmadd_pd(a, a1, _mm256_fmadd_pd(b, b1, _mm256_mul_pd(c, c1))),
+        );
+        acc[0] = _mm256_add_pd(acc[0], d);
+        acc[1] = _mm256_fmadd_pd(d, s, acc[1]);
+        acc[2] = _mm256_fmadd_pd(d, sq, acc[2]);
+        acc[3] = _mm256_fmadd_pd(d, cross, acc[3]);
+    }
+
+    /// The AVX2 build of [`super::block_portable`].
+    #[target_feature(enable = "avx2,fma")]
+    pub(super) fn block(v: &[DVec3], origin: DVec3, block: &[[u32; 3]]) -> Sums {
         let flat: &[f64] = bytemuck::cast_slice(v);
         let o = _mm256_set_pd(0.0, origin.z, origin.y, origin.x);
-        let mut total = [0.0; 10];
-        for block in triangles.chunks(BLOCK) {
-            let zero = _mm256_setzero_pd();
-            let (mut volume, mut first, mut diagonal, mut off) = (zero, zero, zero, zero);
-            for &[i, j, k] in block {
-                // SAFETY: the indices come from a TriMesh, so they are in range.
-                let (a, b, c) =
-                    unsafe { (corner(flat, o, i), corner(flat, o, j), corner(flat, o, k)) };
-                let (a1, b1, c1) = (yzx(a), yzx(b), yzx(c));
-                // m = b ∘ c.yzx − b.yzx ∘ c = (b × c).zxy, so
-                // d = a · (b × c) = Σᵢ (a.zxy ∘ m)ᵢ, summed into every lane
-                // by adding its two rotations (no extract or broadcast).
-                let m = _mm256_fmsub_pd(b, c1, _mm256_mul_pd(b1, c));
-                let am = _mm256_mul_pd(zxy(a), m);
-                let dd = _mm256_add_pd(_mm256_add_pd(am, yzx(am)), zxy(am));
-                let s = _mm256_add_pd(_mm256_add_pd(a, b), c);
-                // (sᵢsᵢ + …) and (sᵢsⱼ + …) with j = i + 1 (mod 3)
-                let sq = _mm256_fmadd_pd(
-                    s,
-                    s,
-                    _mm256_fmadd_pd(a, a, _mm256_fmadd_pd(b, b, _mm256_mul_pd(c, c))),
-                );
-                // s.yzx from the rotated corners: additions instead of a permutation.
-                let s1 = _mm256_add_pd(_mm256_add_pd(a1, b1), c1);
-                let cross = _mm256_fmadd_pd(
-                    s,
-                    s1,
-                    _mm256_fmadd_pd(a, a1, _mm256_fmadd_pd(b, b1, _mm256_mul_pd(c, c1))),
-                );
-                volume = _mm256_add_pd(volume, dd);
-                first = _mm256_fmadd_pd(dd, s, first);
-                diagonal = _mm256_fmadd_pd(dd, sq, diagonal);
-                off = _mm256_fmadd_pd(dd, cross, off);
-            }
-            // `off` holds (xy, yz, zx); Sums wants xy, xz, yz.
-            let part = [
-                lane(volume, 0),
-                lane(first, 0),
-                lane(first, 1),
-                lane(first, 2),
-                lane(diagonal, 0),
-                lane(diagonal, 1),
-                lane(diagonal, 2),
-                lane(off, 0),
-                lane(off, 2),
-                lane(off, 1),
-            ];
-            for (t, p) in total.iter_mut().zip(part) {
-                *t += p;
+        let mut even = [_mm256_setzero_pd(); 4];
+        let mut odd = even;
+        let mut pairs = block.chunks_exact(2);
+        for pair in pairs.by_ref() {
+            // SAFETY: the indices come from a TriMesh, so they are in range.
+            unsafe {
+                add_triangle(&mut even, flat, o, pair[0]);
+                add_triangle(&mut odd, flat, o, pair[1]);
             }
         }
-        total
+        if let Some(&t) = pairs.remainder().first() {
+            // SAFETY: as above.
+            unsafe { add_triangle(&mut even, flat, o, t) };
+        }
+        super::Lanes {
+            volume: lanes(_mm256_add_pd(even[0], odd[0]))[0],
+            first: lanes(_mm256_add_pd(even[1], odd[1])),
+            diagonal: lanes(_mm256_add_pd(even[2], odd[2])),
+            off: lanes(_mm256_add_pd(even[3], odd[3])),
+        }
+        .sums()
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 mod avx512 {
-    //! AVX-512: the AVX2 loop with two triangles per 512-bit register (one
-    //! per 256-bit half; the in-lane permutations work on both halves).
+    //! AVX-512: the AVX2 loop with two triangles per 512-bit register, the
+    //! even one in the low half, the odd one in the high half (the in-lane
+    //! permutations work on both halves).
 
     #![allow(unsafe_code)]
 
     use core::arch::x86_64::*;
 
-    use super::{BLOCK, Sums};
+    use super::Sums;
     use glam::DVec3;
 
     /// Vertices `i` and `j` minus the origin as `(x, y, z, 0 | x, y, z, 0)`.
@@ -235,102 +310,119 @@ mod avx512 {
         _mm512_permutex_pd::<0b11_01_00_10>(a)
     }
 
-    /// Lane `k` (0, 1 or 2) summed over both halves.
+    /// Lanes 0, 1, 2 of the low half plus the high half (even + odd).
     #[inline]
     #[target_feature(enable = "avx512f,avx512vl,fma")]
-    fn lane(a: __m512d, k: usize) -> f64 {
+    fn lanes(a: __m512d) -> [f64; 3] {
         let h = _mm256_add_pd(_mm512_castpd512_pd256(a), _mm512_extractf64x4_pd::<1>(a));
-        let lo = _mm256_castpd256_pd128(h);
-        match k {
-            0 => _mm_cvtsd_f64(lo),
-            1 => _mm_cvtsd_f64(_mm_unpackhi_pd(lo, lo)),
-            _ => _mm_cvtsd_f64(_mm256_extractf128_pd::<1>(h)),
-        }
+        let mut out = [0.0; 4];
+        // SAFETY: `out` holds four f64 (an unaligned store).
+        unsafe { _mm256_storeu_pd(out.as_mut_ptr(), h) };
+        [out[0], out[1], out[2]]
     }
 
-    /// The AVX-512 build of [`super::sums_scalar`].
+    /// Adds triangles `t0` (low half) and `t1` (high half) to the
+    /// accumulators (volume, first, diagonal, off-diagonal), only the
+    /// halves whose lanes are set in `keep` (`0xff` both, `0x0f` the low).
+    ///
+    /// # Safety
+    /// The indices are in range for `flat` (see [`corners`]).
+    #[inline]
     #[target_feature(enable = "avx512f,avx512vl,fma")]
-    pub(super) fn sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
+    unsafe fn add_pair(
+        acc: &mut [__m512d; 4],
+        flat: &[f64],
+        o: __m512d,
+        [t0, t1]: [[u32; 3]; 2],
+        keep: __mmask8,
+    ) {
+        // SAFETY: the caller's promise.
+        let (a, b, c) = unsafe {
+            (
+                corners(flat, o, t0[0], t1[0]),
+                corners(flat, o, t0[1], t1[1]),
+                corners(flat, o, t0[2], t1[2]),
+            )
+        };
+        let (a1, b1, c1) = (yzx(a), yzx(b), yzx(c));
+        let m = _mm512_fmsub_pd(b, c1, _mm512_mul_pd(b1, c));
+        let e = _mm512_mul_pd(zxy(a), m);
+        let d = _mm512_add_pd(_mm512_add_pd(e, yzx(e)), zxy(e));
+        let s = _mm512_add_pd(_mm512_add_pd(a, b), c);
+        let sq = _mm512_fmadd_pd(
+            s,
+            s,
+            _mm512_fmadd_pd(a, a, _mm512_fmadd_pd(b, b, _mm512_mul_pd(c, c))),
+        );
+        let cross = _mm512_fmadd_pd(
+            s,
+            yzx(s),
+            _mm512_fmadd_pd(a, a1, _mm512_fmadd_pd(b, b1, _mm512_mul_pd(c, c1))),
+        );
+        acc[0] = _mm512_mask_add_pd(acc[0], keep, acc[0], d);
+        acc[1] = _mm512_mask3_fmadd_pd(d, s, acc[1], keep);
+        acc[2] = _mm512_mask3_fmadd_pd(d, sq, acc[2], keep);
+        acc[3] = _mm512_mask3_fmadd_pd(d, cross, acc[3], keep);
+    }
+
+    /// The AVX-512 build of [`super::block_portable`].
+    #[target_feature(enable = "avx512f,avx512vl,fma")]
+    pub(super) fn block(v: &[DVec3], origin: DVec3, block: &[[u32; 3]]) -> Sums {
         let flat: &[f64] = bytemuck::cast_slice(v);
         let o = _mm512_set_pd(
             0.0, origin.z, origin.y, origin.x, 0.0, origin.z, origin.y, origin.x,
         );
-        let mut total = [0.0; 10];
-        for block in triangles.chunks(BLOCK) {
-            let zero = _mm512_setzero_pd();
-            let (mut volume, mut first, mut diagonal, mut off) = (zero, zero, zero, zero);
-            let mut pairs = block.chunks_exact(2);
-            let rest = pairs.remainder();
-            // An odd last triangle is paired with [0, 0, 0], whose d is 0.
-            let tail = rest.first().map(|&t| [t, [0; 3]]);
-            for pair in pairs.by_ref().map(|p| [p[0], p[1]]).chain(tail) {
-                let [[i0, j0, k0], [i1, j1, k1]] = pair;
-                // SAFETY: the indices come from a TriMesh, so they are in range.
-                let (a, b, c) = unsafe {
-                    (
-                        corners(flat, o, i0, i1),
-                        corners(flat, o, j0, j1),
-                        corners(flat, o, k0, k1),
-                    )
-                };
-                let (a1, b1, c1) = (yzx(a), yzx(b), yzx(c));
-                let m = _mm512_fmsub_pd(b, c1, _mm512_mul_pd(b1, c));
-                let am = _mm512_mul_pd(zxy(a), m);
-                let dd = _mm512_add_pd(_mm512_add_pd(am, yzx(am)), zxy(am));
-                let s = _mm512_add_pd(_mm512_add_pd(a, b), c);
-                let sq = _mm512_fmadd_pd(
-                    s,
-                    s,
-                    _mm512_fmadd_pd(a, a, _mm512_fmadd_pd(b, b, _mm512_mul_pd(c, c))),
-                );
-                let s1 = yzx(s);
-                let cross = _mm512_fmadd_pd(
-                    s,
-                    s1,
-                    _mm512_fmadd_pd(a, a1, _mm512_fmadd_pd(b, b1, _mm512_mul_pd(c, c1))),
-                );
-                volume = _mm512_add_pd(volume, dd);
-                first = _mm512_fmadd_pd(dd, s, first);
-                diagonal = _mm512_fmadd_pd(dd, sq, diagonal);
-                off = _mm512_fmadd_pd(dd, cross, off);
-            }
-            let part = [
-                lane(volume, 0),
-                lane(first, 0),
-                lane(first, 1),
-                lane(first, 2),
-                lane(diagonal, 0),
-                lane(diagonal, 1),
-                lane(diagonal, 2),
-                lane(off, 0),
-                lane(off, 2),
-                lane(off, 1),
-            ];
-            for (t, p) in total.iter_mut().zip(part) {
-                *t += p;
-            }
+        let mut acc = [_mm512_setzero_pd(); 4];
+        let mut pairs = block.chunks_exact(2);
+        for pair in pairs.by_ref() {
+            // SAFETY: the indices come from a TriMesh, so they are in range.
+            unsafe { add_pair(&mut acc, flat, o, [pair[0], pair[1]], 0xff) };
         }
-        total
+        if let Some(&t) = pairs.remainder().first() {
+            // An odd last triangle: the high half loads it again but keeps
+            // its accumulators unchanged.
+            // SAFETY: as above.
+            unsafe { add_pair(&mut acc, flat, o, [t, t], 0x0f) };
+        }
+        super::Lanes {
+            volume: lanes(acc[0])[0],
+            first: lanes(acc[1]),
+            diagonal: lanes(acc[2]),
+            off: lanes(acc[3]),
+        }
+        .sums()
     }
 }
 
 /// The ten sums of a mesh's triangles about `origin` (every index must be
-/// in range for `v`; [`crate::TriMesh`] guarantees it), on the machine's
+/// in range for `v`; [`crate::TriMesh`] guarantees it) by the build
+/// `kernel` (the portable one if this CPU cannot run it), on the machine's
 /// cores from [`crate::parallel::PARALLEL_MIN`] triangles.
 ///
 /// The same bits on any number of threads: each block of [`BLOCK`]
-/// triangles is summed alone (the SIMD builds sum block by block anyway),
-/// and the blocks' sums are added in block order.
-pub(crate) fn solid_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
-    solid_sums_on(v, origin, triangles, threads_for(triangles.len()))
+/// triangles is summed alone, and the blocks' sums are added in block order.
+pub(crate) fn solid_sums(
+    v: &[DVec3],
+    origin: DVec3,
+    triangles: &[[u32; 3]],
+    kernel: SolidKernel,
+) -> Sums {
+    solid_sums_on(v, origin, triangles, threads_for(triangles.len()), kernel)
 }
 
 /// [`solid_sums`] on at most `threads` threads.
-fn solid_sums_on(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]], threads: usize) -> Sums {
+fn solid_sums_on(
+    v: &[DVec3],
+    origin: DVec3,
+    triangles: &[[u32; 3]],
+    threads: usize,
+    kernel: SolidKernel,
+) -> Sums {
+    let kernel = kernel.check().unwrap_or(SolidKernel::Portable);
     let partials = map_ranges(triangles.len(), threads, BLOCK, |r| {
         triangles[r]
             .chunks(BLOCK)
-            .map(|block| block_sums(v, origin, block))
+            .map(|block| block_sums(v, origin, block, kernel))
             .collect::<Vec<Sums>>()
     });
     add_in_order(partials.iter().flatten())
@@ -347,43 +439,70 @@ pub(crate) fn add_in_order<'a>(partials: impl Iterator<Item = &'a Sums>) -> Sums
     total
 }
 
-/// The sums of one block (or of several, added block by block) on this
-/// thread, in the fastest build the CPU runs.
+/// The sums of one block (at most [`BLOCK`] triangles) by `kernel`, which
+/// this CPU runs ([`solid_sums_on`] checked it).
 #[allow(unsafe_code)]
-fn block_sums(v: &[DVec3], origin: DVec3, triangles: &[[u32; 3]]) -> Sums {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::is_x86_feature_detected as has;
-        if has!("avx512f") && has!("avx512vl") && has!("fma") {
-            // SAFETY: `avx512::sums` needs only AVX-512F/VL and FMA, which
-            // the CPU has (checked just above).
-            return unsafe { avx512::sums(v, origin, triangles) };
-        }
-        if has!("avx2") && has!("fma") {
-            // SAFETY: `avx2::sums` needs only AVX2 and FMA, which the CPU
-            // has (checked just above).
-            return unsafe { avx2::sums(v, origin, triangles) };
-        }
+fn block_sums(v: &[DVec3], origin: DVec3, block: &[[u32; 3]], kernel: SolidKernel) -> Sums {
+    debug_assert!(block.len() <= BLOCK && kernel.is_supported());
+    match kernel {
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: `avx512::block` needs only AVX-512F/VL and FMA, which the
+        // CPU has (`kernel.check()` in `solid_sums_on`).
+        SolidKernel::Avx512 => unsafe { avx512::block(v, origin, block) },
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: `avx2::block` needs only AVX2 and FMA, which the CPU has
+        // (`kernel.check()` in `solid_sums_on`).
+        SolidKernel::Avx2 => unsafe { avx2::block(v, origin, block) },
+        _ => block_portable(v, origin, block),
     }
-    sums_scalar(v, origin, triangles)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// Both builds match a direct per-triangle sum, the last vertex included
-    /// (the padded load).
-    #[test]
-    fn builds_agree_with_direct_sum() {
-        let v: Vec<DVec3> = (0..40)
+    /// Irrational-looking vertices (round-off in every operation), `n`
+    /// triangles over them, and an origin off the vertex mean.
+    fn scattered(n: u32) -> (Vec<DVec3>, Vec<[u32; 3]>, DVec3) {
+        let v: Vec<DVec3> = (0..3001)
             .map(|i| {
-                let t = i as f64;
-                DVec3::new(t.sin(), (1.3 * t).cos(), (0.7 * t).sin() * 2.0)
+                let t = f64::from(i);
+                DVec3::new((0.37 * t).sin(), (1.3 * t).cos(), (0.71 * t).sin() * 2.0)
             })
             .collect();
-        let tris: Vec<[u32; 3]> = (0..37u32).map(|i| [i, (i + 1) % 40, 39 - i % 5]).collect();
-        let origin = DVec3::new(0.1, -0.2, 0.3);
+        let tris = (0..n)
+            .map(|i| [i % 3001, (7 * i + 1) % 3001, (13 * i + 5) % 3001])
+            .collect();
+        (v, tris, DVec3::new(0.1, -0.2, 0.3))
+    }
+
+    /// Every build this CPU runs gives the portable build's bits, for
+    /// triangle counts around the block size and the AVX-512 pairs (odd
+    /// tails), on every thread count.
+    #[test]
+    fn every_build_gives_the_portable_bits() {
+        for n in [0, 1, 2, 3, 37, 511, 512, 513, 1023, 1025, 5000] {
+            let (v, tris, origin) = scattered(n);
+            let portable = solid_sums_on(&v, origin, &tris, 1, SolidKernel::Portable);
+            for kernel in SolidKernel::supported() {
+                for threads in [1, 3] {
+                    let sums = solid_sums_on(&v, origin, &tris, threads, kernel);
+                    assert_eq!(
+                        sums.map(f64::to_bits),
+                        portable.map(f64::to_bits),
+                        "{kernel}, {n} triangles, {threads} threads"
+                    );
+                }
+            }
+        }
+    }
+
+    /// The builds match a direct per-triangle sum (the formulas, unfused,
+    /// one accumulator) to rounding, the last vertex included (the masked
+    /// loads).
+    #[test]
+    fn builds_agree_with_direct_sum() {
+        let (v, tris, origin) = scattered(1037);
         let mut direct = [0.0; 10];
         for &[i, j, k] in &tris {
             let (a, b, c) = (
@@ -410,48 +529,58 @@ mod tests {
                 *acc += d * t;
             }
         }
-        let mut builds = vec![
-            sums_scalar(&v, origin, &tris),
-            solid_sums(&v, origin, &tris),
-        ];
-        #[cfg(target_arch = "x86_64")]
-        #[allow(unsafe_code)]
-        {
-            use std::arch::is_x86_feature_detected as has;
-            if has!("avx2") && has!("fma") {
-                // SAFETY: the features were just checked.
-                builds.push(unsafe { avx2::sums(&v, origin, &tris) });
+        let last = [[3000, 0, 1]];
+        let scale: f64 = direct.iter().map(|x| x.abs()).fold(1.0, f64::max);
+        for kernel in SolidKernel::supported() {
+            let sums = solid_sums_on(&v, origin, &tris, 1, kernel);
+            for (x, y) in sums.iter().zip(&direct) {
+                assert!((x - y).abs() < 1e-13 * scale, "{kernel}: {x} vs {y}");
             }
-            if has!("avx512f") && has!("avx512vl") && has!("fma") {
-                // SAFETY: the features were just checked.
-                builds.push(unsafe { avx512::sums(&v, origin, &tris) });
-            }
-        }
-        for fast in builds {
-            for (x, y) in fast.iter().zip(&direct) {
-                assert!((x - y).abs() < 1e-13 * y.abs().max(1.0), "{x} vs {y}");
-            }
+            let edge = solid_sums_on(&v, origin, &last, 1, kernel);
+            let portable = solid_sums_on(&v, origin, &last, 1, SolidKernel::Portable);
+            assert_eq!(edge.map(f64::to_bits), portable.map(f64::to_bits));
         }
     }
 
-    /// Any number of threads gives the bits of one thread summing every
-    /// block in order (the build of the sums before they were parallel).
+    /// An axis-aligned box with integer corners (no round-off: every
+    /// product and sum is exact) gives the exact sums in every build:
+    /// Σd = 6V, Σd·s = 24 V c, Σd·(sₓ² + …) = 120 ∫x² dV.
     #[test]
-    fn sums_do_not_depend_on_the_thread_count() {
-        let v: Vec<DVec3> = (0..3001)
-            .map(|i| {
-                let t = f64::from(i);
-                DVec3::new((0.37 * t).sin(), (1.3 * t).cos(), (0.71 * t).sin() * 2.0)
+    fn integer_box_is_exact_in_every_build() {
+        // [0, 2] × [0, 4] × [0, 6] about the origin (0, 0, 0).
+        let (x, y, z) = (2.0, 4.0, 6.0);
+        let v: Vec<DVec3> = (0..8)
+            .map(|k| {
+                DVec3::new(
+                    x * f64::from(k & 1),
+                    y * f64::from((k >> 1) & 1),
+                    z * f64::from((k >> 2) & 1),
+                )
             })
             .collect();
-        let tris: Vec<[u32; 3]> = (0..5000u32)
-            .map(|i| [i % 3001, (7 * i + 1) % 3001, (13 * i + 5) % 3001])
-            .collect();
-        let origin = DVec3::new(0.1, -0.2, 0.3);
-        let one = block_sums(&v, origin, &tris);
-        for threads in [1, 2, 3, 4, 7, 64] {
-            let many = solid_sums_on(&v, origin, &tris, threads);
-            assert_eq!(many.map(f64::to_bits), one.map(f64::to_bits), "{threads}");
+        #[rustfmt::skip]
+        let tris = vec![
+            [0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], // z = 0, z = z
+            [0, 1, 4], [1, 5, 4], [2, 6, 3], [3, 6, 7], // y = 0, y = y
+            [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5], // x = 0, x = x
+        ];
+        let volume = x * y * z;
+        // ∫x² = x³yz/3, ∫xy = x²y²z/4
+        let expected = [
+            6.0 * volume,
+            24.0 * volume * x / 2.0,
+            24.0 * volume * y / 2.0,
+            24.0 * volume * z / 2.0,
+            120.0 * x * x * volume / 3.0,
+            120.0 * y * y * volume / 3.0,
+            120.0 * z * z * volume / 3.0,
+            120.0 * x * y * volume / 4.0,
+            120.0 * x * z * volume / 4.0,
+            120.0 * y * z * volume / 4.0,
+        ];
+        for kernel in SolidKernel::supported() {
+            let sums = solid_sums_on(&v, DVec3::ZERO, &tris, 1, kernel);
+            assert_eq!(sums, expected, "{kernel}");
         }
     }
 }
