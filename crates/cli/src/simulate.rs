@@ -294,7 +294,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         Some(plot) => Some(check_plot(plot, scene_path, args.output.as_deref())?),
         None => None,
     };
-    let text = fs::read_to_string(scene_path).map_err(|source| CliError::ReadScene {
+    let text = crate::inertia::read_text_file(scene_path, "a scene file").map_err(|source| CliError::ReadScene {
         path: scene_path.clone(),
         source,
     })?;

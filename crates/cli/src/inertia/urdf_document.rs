@@ -13,6 +13,7 @@ use std::path::Path;
 use glam::{DMat3, DQuat, DVec3};
 use roxmltree::{Document, Node};
 
+use super::urdf_wellformed::{MAX_DEPTH, declaration_problem, line_of, too_deep};
 use crate::error::CliError;
 
 /// A pose `<origin xyz rpy>`: translation, then URDF's fixed-axis roll,
@@ -355,12 +356,30 @@ impl UrdfDocument {
     /// Parses a robot description read from `path` (named in errors).
     ///
     /// # Errors
-    /// [`CliError::Urdf`] for text that is not XML, a root that is not
-    /// `<robot>`, an unnamed link, a link with two `<inertial>` elements,
+    /// [`CliError::Urdf`] for text that is not XML (or nests elements deeper
+    /// than [`MAX_DEPTH`], or declares an XML version other than 1.x), a
+    /// root that is not `<robot>`, an unnamed link, two links of one name,
+    /// a link with two `<inertial>` elements,
     /// and a malformed `<origin>`, `<geometry>`, `<mass>` or `<inertia>`
     /// with the line and the link (an unknown geometry element is
     /// [`Shape::Other`], the link's own problem).
     pub fn parse(path: &Path, text: String) -> Result<Self, CliError> {
+        if let Some(pos) = too_deep(&text, MAX_DEPTH) {
+            return Err(CliError::Urdf {
+                path: path.to_path_buf(),
+                line: Some(line_of(&text, pos)),
+                message: format!(
+                    "elements nested more than {MAX_DEPTH} deep; a URDF nests about 5 (robot, link, collision, geometry, mesh)"
+                ),
+            });
+        }
+        if let Some(message) = declaration_problem(&text) {
+            return Err(CliError::Urdf {
+                path: path.to_path_buf(),
+                line: Some(1),
+                message,
+            });
+        }
         let links = {
             let doc = Document::parse(&text).map_err(|e| CliError::Urdf {
                 path: path.to_path_buf(),
@@ -379,12 +398,25 @@ impl UrdfDocument {
                     ),
                 ));
             }
-            let mut links = Vec::new();
+            let mut links: Vec<Link> = Vec::new();
+            let mut lines = std::collections::HashMap::new();
             for node in root
                 .children()
                 .filter(|c| c.is_element() && c.tag_name().name() == "link")
             {
-                links.push(parse_link(path, &doc, &text, node)?);
+                let link = parse_link(path, &doc, &text, node)?;
+                if let Some(first) = lines.insert(link.name.clone(), link.line) {
+                    return Err(at(
+                        path,
+                        &doc,
+                        node,
+                        format!(
+                            "a second link named '{}' (the first is at line {}); link names must be unique",
+                            link.name, first
+                        ),
+                    ));
+                }
+                links.push(link);
             }
             links
         };

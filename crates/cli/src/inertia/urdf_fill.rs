@@ -68,7 +68,7 @@ pub fn at_mass(
 /// or package), [`CliError::Write`] for the output; after writing the
 /// output, [`CliError::LinksKept`]; for `--check`, [`CliError::CheckFailed`].
 pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
-    let text = std::fs::read_to_string(urdf).map_err(|source| CliError::ReadUrdf {
+    let text = super::read_text_file(urdf, "a URDF file").map_err(|source| CliError::ReadUrdf {
         path: urdf.to_path_buf(),
         source,
     })?;
