@@ -25,7 +25,10 @@ mod urdf_document;
 mod urdf_fill;
 mod urdf_inertial;
 mod urdf_links;
+mod urdf_notes;
 mod urdf_paths;
+mod urdf_relocate;
+mod urdf_report;
 mod urdf_table;
 mod urdf_wellformed;
 

@@ -100,7 +100,7 @@ pub struct UrdfArgs {
     #[arg(
         long,
         value_name = "ROBOT.urdf",
-        conflicts_with_all = ["mesh", "mass", "scale", "units", "shell", "thickness", "merge", "format", "about", "transform"]
+        conflicts_with_all = ["mesh", "mass", "scale", "units", "shell", "thickness", "merge", "about", "transform"]
     )]
     pub urdf: Option<PathBuf>,
 

@@ -91,6 +91,8 @@ pub struct Geometry {
     pub shape: Shape,
     /// 1-based line of the shape element (`<mesh>`, `<box>`, …), for messages.
     pub line: u32,
+    /// The bytes of a `<mesh>`'s `filename="…"` attribute.
+    pub filename_attribute: Option<Range<usize>>,
 }
 
 /// A link's `<inertial>` as written in the file.
@@ -287,6 +289,10 @@ impl<'input> Reader<'_, 'input> {
             origin: self.origin(node)?,
             shape,
             line: self.doc.text_pos_at(shape_node.range().start).row,
+            filename_attribute: shape_node
+                .attributes()
+                .find(|a| a.name() == "filename" && a.namespace().is_none())
+                .map(|a| a.range()),
         })
     }
 
@@ -434,7 +440,18 @@ impl UrdfDocument {
     /// `elements` pairs a link index with the element's text, which starts
     /// at `<inertial>` and ends at `</inertial>` (its inner lines already
     /// indented as the link's children).
+    #[cfg(test)]
     pub fn splice(&self, elements: &[(usize, String)]) -> String {
+        self.splice_with(elements, Vec::new())
+    }
+
+    /// [`UrdfDocument::splice`], and the byte ranges of `more` (which
+    /// overlap no `<inertial>`) replaced by their text.
+    pub fn splice_with(
+        &self,
+        elements: &[(usize, String)],
+        more: Vec<(Range<usize>, String)>,
+    ) -> String {
         let mut edits: Vec<(Range<usize>, String)> = elements
             .iter()
             .map(|(k, element)| {
@@ -447,6 +464,7 @@ impl UrdfDocument {
                     ),
                 }
             })
+            .chain(more)
             .collect();
         edits.sort_by_key(|(r, _)| r.start);
         let mut out = String::with_capacity(self.text.len() + 400 * edits.len());
