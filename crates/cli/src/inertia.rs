@@ -54,7 +54,8 @@ pub use urdf_args::{GeometrySource, PackageDir, UrdfArgs};
 /// The operating system's errors, [`std::io::ErrorKind::FileTooLarge`], and
 /// [`std::io::ErrorKind::InvalidData`] for text that is not UTF-8.
 pub fn read_text_file(path: &std::path::Path, what: &str) -> std::io::Result<String> {
-    let bytes = kreisel_inertia::io::read_limited(path, kreisel_inertia::io::TEXT_FILE_LIMIT, what)?;
+    let bytes =
+        kreisel_inertia::io::read_limited(path, kreisel_inertia::io::TEXT_FILE_LIMIT, what)?;
     String::from_utf8(bytes).map_err(|_| {
         std::io::Error::new(
             std::io::ErrorKind::InvalidData,

@@ -238,10 +238,20 @@ impl Check<'_> {
         outcome: &LinkOutcome,
     ) -> (Verdict, Option<Measures>, Vec<String>) {
         let inertial = match inertial {
-            None => return (Verdict::Listed, None, vec!["no inertial (massless)".to_owned()]),
+            None => {
+                return (
+                    Verdict::Listed,
+                    None,
+                    vec!["no inertial (massless)".to_owned()],
+                );
+            }
             // URDF's (and pybullet's) convention for a static or massless link.
             Some(i) if i.mass == Some(0.0) => {
-                return (Verdict::Listed, None, vec!["mass 0 (massless or static)".to_owned()]);
+                return (
+                    Verdict::Listed,
+                    None,
+                    vec!["mass 0 (massless or static)".to_owned()],
+                );
             }
             Some(i) => i,
         };
@@ -259,11 +269,17 @@ impl Check<'_> {
             }
             LinkOutcome::NoGeometry => (
                 None,
-                Some((Verdict::Listed, format!("no <{}> geometry to compare with", self.source.element()))),
+                Some((
+                    Verdict::Listed,
+                    format!("no <{}> geometry to compare with", self.source.element()),
+                )),
             ),
             LinkOutcome::Failed(reason) => (
                 None,
-                Some((Verdict::NotCompared, format!("not compared, cannot integrate: {reason}"))),
+                Some((
+                    Verdict::NotCompared,
+                    format!("not compared, cannot integrate: {reason}"),
+                )),
             ),
         };
         let verdict = match unchecked {
@@ -303,11 +319,27 @@ impl Check<'_> {
                 ("check", Value::Text(verdict.json().into())),
             ];
             let inertial = link.inertial.as_ref();
-            fields.push(("mass", inertial.and_then(|i| i.mass).map_or(Value::Null, Value::Number)));
-            fields.push(("center_of_mass", inertial.map_or(Value::Null, |i| Value::Vector(i.origin.xyz))));
-            fields.push(("inertia", inertial.and_then(Inertial::tensor_in_link).map_or(Value::Null, Value::Matrix)));
+            fields.push((
+                "mass",
+                inertial
+                    .and_then(|i| i.mass)
+                    .map_or(Value::Null, Value::Number),
+            ));
+            fields.push((
+                "center_of_mass",
+                inertial.map_or(Value::Null, |i| Value::Vector(i.origin.xyz)),
+            ));
+            fields.push((
+                "inertia",
+                inertial
+                    .and_then(Inertial::tensor_in_link)
+                    .map_or(Value::Null, Value::Matrix),
+            ));
             let measured = |f: fn(&Measures) -> Option<f64>| {
-                cells.as_ref().and_then(f).map_or(Value::Null, Value::Number)
+                cells
+                    .as_ref()
+                    .and_then(f)
+                    .map_or(Value::Null, Value::Number)
             };
             fields.push(("mass_ratio", measured(|m| m.ratio)));
             fields.push(("com_offset", measured(|m| Some(m.offset))));
@@ -327,7 +359,10 @@ impl Check<'_> {
         let uncompared_text = if uncompared.is_empty() {
             String::new()
         } else {
-            format!(", {} not compared (geometry not integrable)", uncompared.len())
+            format!(
+                ", {} not compared (geometry not integrable)",
+                uncompared.len()
+            )
         };
         let status = usize::from(!failed.is_empty() || !uncompared.is_empty());
         if json {

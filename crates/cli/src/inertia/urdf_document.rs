@@ -13,7 +13,7 @@ use std::path::Path;
 use glam::{DMat3, DQuat, DVec3};
 use roxmltree::{Document, Node};
 
-use super::urdf_wellformed::{MAX_DEPTH, declaration_problem, line_of, too_deep};
+use super::urdf_wellformed::{LineIndex, MAX_DEPTH, declaration_problem, line_of, too_deep};
 use crate::error::CliError;
 
 /// A pose `<origin xyz rpy>`: translation, then URDF's fixed-axis roll,
@@ -175,6 +175,7 @@ fn numbers(text: &str, n: usize) -> Option<Vec<f64>> {
 struct Reader<'a, 'input> {
     path: &'a Path,
     doc: &'a Document<'input>,
+    lines: &'a LineIndex,
     link: &'a str,
 }
 
@@ -288,7 +289,7 @@ impl<'input> Reader<'_, 'input> {
         Ok(Geometry {
             origin: self.origin(node)?,
             shape,
-            line: self.doc.text_pos_at(shape_node.range().start).row,
+            line: self.lines.line(shape_node.range().start),
             filename_attribute: shape_node
                 .attributes()
                 .find(|a| a.name() == "filename" && a.namespace().is_none())
@@ -350,12 +351,14 @@ fn start_tag_end(text: &str, start: usize) -> usize {
 
 /// The whitespace before `pos` on its line (`None` when other text precedes it).
 fn indent_before(text: &str, pos: usize) -> Option<&str> {
-    let line_start = text[..pos].rfind('\n').map_or(0, |i| i + 1);
-    let before = &text[line_start..pos];
-    before
-        .chars()
-        .all(|c| c == ' ' || c == '\t')
-        .then_some(before)
+    // Only the blanks just before `pos` are looked at (never the whole line).
+    let blanks = text.as_bytes()[..pos]
+        .iter()
+        .rev()
+        .take_while(|&&b| b == b' ' || b == b'\t')
+        .count();
+    let start = pos - blanks;
+    (start == 0 || text.as_bytes()[start - 1] == b'\n').then(|| &text[start..pos])
 }
 
 impl UrdfDocument {
@@ -404,13 +407,14 @@ impl UrdfDocument {
                     ),
                 ));
             }
+            let index = LineIndex::new(&text);
             let mut links: Vec<Link> = Vec::new();
             let mut lines = std::collections::HashMap::new();
             for node in root
                 .children()
                 .filter(|c| c.is_element() && c.tag_name().name() == "link")
             {
-                let link = parse_link(path, &doc, &text, node)?;
+                let link = parse_link(path, &doc, &index, &text, node)?;
                 if let Some(first) = lines.insert(link.name.clone(), link.line) {
                     return Err(at(
                         path,
@@ -480,18 +484,25 @@ impl UrdfDocument {
 }
 
 /// One `<link>` element.
-fn parse_link(path: &Path, doc: &Document, text: &str, node: Node) -> Result<Link, CliError> {
+fn parse_link(
+    path: &Path,
+    doc: &Document,
+    lines: &LineIndex,
+    text: &str,
+    node: Node,
+) -> Result<Link, CliError> {
     let name = node
         .attribute("name")
         .ok_or_else(|| at(path, doc, node, "a <link> has no name attribute".into()))?;
     let reader = Reader {
         path,
         doc,
+        lines,
         link: name,
     };
     let mut link = Link {
         name: name.to_owned(),
-        line: doc.text_pos_at(node.range().start).row,
+        line: lines.line(node.range().start),
         insert_at: start_tag_end(text, node.range().start),
         child_indent: String::new(),
         step: String::new(),

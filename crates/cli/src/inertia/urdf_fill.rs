@@ -168,7 +168,10 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                     }
                     Some(m) if m < 0.0 => notes.insert(
                         0,
-                        format!("was mass {} (negative, unphysical), now density x volume", sig(m)),
+                        format!(
+                            "was mass {} (negative, unphysical), now density x volume",
+                            sig(m)
+                        ),
                     ),
                     _ => {}
                 }
@@ -193,7 +196,10 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                     ),
                     ("center_of_mass", Value::Vector(props.center_of_mass)),
                     ("inertia", Value::Matrix(props.inertia)),
-                    ("principal_moments", Value::Vector(props.principal().moments)),
+                    (
+                        "principal_moments",
+                        Value::Vector(props.principal().moments),
+                    ),
                     ("geometry", Value::Texts(solid.parts.clone())),
                     ("notes", Value::Texts(notes)),
                 ]);
@@ -212,7 +218,14 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                 row.push(note.clone());
                 let action = if failed { "kept" } else { "unchanged" };
                 fields.push(("action", Value::Text(action.into())));
-                for key in ["mass", "density", "mass_source", "center_of_mass", "inertia", "principal_moments"] {
+                for key in [
+                    "mass",
+                    "density",
+                    "mass_source",
+                    "center_of_mass",
+                    "inertia",
+                    "principal_moments",
+                ] {
                     fields.push((key, Value::Null));
                 }
                 fields.push(("geometry", Value::Texts(Vec::new())));

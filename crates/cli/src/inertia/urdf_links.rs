@@ -191,7 +191,11 @@ fn mesh(path: &Path, written: &str, scale: DVec3, how: MeshModel) -> Part {
     let warnings = solid
         .warnings()
         .map(|(body, w)| {
-            let warning = format!("{name} body '{}': {}", one_line(body), one_line(&w.to_string()));
+            let warning = format!(
+                "{name} body '{}': {}",
+                one_line(body),
+                one_line(&w.to_string())
+            );
             tidy(&warning, path, written)
         })
         .collect();

@@ -37,8 +37,8 @@ pub fn shorten_numbers(text: &str) -> String {
     let mut i = 0;
     while i < b.len() {
         let word_before = i > 0 && (b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_');
-        let starts = b[i].is_ascii_digit()
-            || (b[i] == b'-' && i + 1 < b.len() && b[i + 1].is_ascii_digit());
+        let starts =
+            b[i].is_ascii_digit() || (b[i] == b'-' && i + 1 < b.len() && b[i + 1].is_ascii_digit());
         if !starts || word_before {
             let c = text[i..].chars().next().unwrap_or(' ');
             out.push(c);
@@ -83,7 +83,10 @@ mod tests {
             "welded 2 vertices within 3.981e-7 (largest move 3.63e-19)"
         );
         // Names keep their digits.
-        assert_eq!(shorten_numbers("link_1.stl v2.0 x1.25y"), "link_1.stl v2.0 x1.25y");
+        assert_eq!(
+            shorten_numbers("link_1.stl v2.0 x1.25y"),
+            "link_1.stl v2.0 x1.25y"
+        );
     }
 
     #[test]

@@ -31,7 +31,9 @@ fn normalized(path: &Path) -> PathBuf {
     for c in path.components() {
         match c {
             Component::CurDir => {}
-            Component::ParentDir if matches!(out.components().next_back(), Some(Component::Normal(_))) => {
+            Component::ParentDir
+                if matches!(out.components().next_back(), Some(Component::Normal(_))) =>
+            {
                 out.pop();
             }
             c => out.push(c),
@@ -59,7 +61,11 @@ fn relative(from: &Path, to: &Path) -> String {
     let to: Vec<_> = to.components().collect();
     let common = from.iter().zip(&to).take_while(|(a, b)| a == b).count();
     let mut parts: Vec<String> = vec!["..".to_owned(); from.len() - common];
-    parts.extend(to[common..].iter().map(|c| c.as_os_str().to_string_lossy().into_owned()));
+    parts.extend(
+        to[common..]
+            .iter()
+            .map(|c| c.as_os_str().to_string_lossy().into_owned()),
+    );
     parts.join("/")
 }
 
@@ -82,9 +88,8 @@ fn is_relative(filename: &str) -> bool {
 pub fn relocate(doc: &UrdfDocument, urdf: &Path, output: &Path) -> Vec<(Range<usize>, String)> {
     let dir = |file: &Path| {
         let folder = folder(file);
-        std::fs::canonicalize(&folder).unwrap_or_else(|_| {
-            normalized(&std::path::absolute(&folder).unwrap_or(folder))
-        })
+        std::fs::canonicalize(&folder)
+            .unwrap_or_else(|_| normalized(&std::path::absolute(&folder).unwrap_or(folder)))
     };
     let (from_dir, to_dir) = (dir(urdf), dir(output));
     if from_dir == to_dir {
@@ -99,7 +104,10 @@ pub fn relocate(doc: &UrdfDocument, urdf: &Path, output: &Path) -> Vec<(Range<us
             {
                 let target = real(&from_dir.join(filename));
                 let new = relative(&to_dir, &target);
-                edits.push((range.clone(), format!("filename=\"{}\"", attribute_text(&new))));
+                edits.push((
+                    range.clone(),
+                    format!("filename=\"{}\"", attribute_text(&new)),
+                ));
             }
         }
     }
@@ -116,8 +124,14 @@ mod tests {
             relative(Path::new("/a/b/out"), Path::new("/a/b/robot/meshes/x.stl")),
             "../robot/meshes/x.stl"
         );
-        assert_eq!(relative(Path::new("/a"), Path::new("/a/m/x.stl")), "m/x.stl");
-        assert_eq!(relative(Path::new("/a/b/c"), Path::new("/x.stl")), "../../../x.stl");
+        assert_eq!(
+            relative(Path::new("/a"), Path::new("/a/m/x.stl")),
+            "m/x.stl"
+        );
+        assert_eq!(
+            relative(Path::new("/a/b/c"), Path::new("/x.stl")),
+            "../../../x.stl"
+        );
         assert_eq!(normalized(Path::new("/a/./b/../c")), PathBuf::from("/a/c"));
         assert!(is_relative("../meshes/a.stl") && is_relative("meshes/a.stl"));
         assert!(!is_relative("package://p/a.stl") && !is_relative("/abs/a.stl"));

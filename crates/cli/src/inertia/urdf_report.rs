@@ -96,7 +96,11 @@ impl UrdfReport {
             members(&mut out, 3, link);
             out.push_str("\n    }");
         }
-        out.push_str(if self.links.is_empty() { "],\n" } else { "\n  ],\n" });
+        out.push_str(if self.links.is_empty() {
+            "],\n"
+        } else {
+            "\n  ],\n"
+        });
         out.push_str("  \"summary\": {\n");
         members(&mut out, 2, &self.summary);
         out.push_str("\n  }\n}\n");

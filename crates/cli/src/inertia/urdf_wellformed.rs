@@ -52,7 +52,7 @@ pub fn too_deep(text: &str, max: usize) -> Option<usize> {
 /// quoted attribute values (the end of the text if there is none).
 fn tag_end(text: &str, start: usize) -> usize {
     let mut quote = None;
-    for (i, b) in text.bytes().enumerate().skip(start + 1) {
+    for (i, &b) in text.as_bytes().iter().enumerate().skip(start + 1) {
         match (quote, b) {
             (None, b'"' | b'\'') => quote = Some(b),
             (Some(q), _) if q == b => quote = None,
@@ -65,8 +65,37 @@ fn tag_end(text: &str, start: usize) -> usize {
 
 /// The 1-based line of byte offset `pos`.
 pub fn line_of(text: &str, pos: usize) -> u32 {
-    let lines = text.as_bytes()[..pos].iter().filter(|&&b| b == b'\n').count();
+    let lines = text.as_bytes()[..pos]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count();
     u32::try_from(lines + 1).unwrap_or(u32::MAX)
+}
+
+/// The line of any byte offset, found by binary search (asking the parser,
+/// which counts from the start each time, is quadratic on a file of many
+/// elements).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LineIndex {
+    newlines: Vec<usize>,
+}
+
+impl LineIndex {
+    /// The index of `text`'s lines.
+    pub fn new(text: &str) -> Self {
+        let newlines = text
+            .bytes()
+            .enumerate()
+            .filter_map(|(i, b)| (b == b'\n').then_some(i))
+            .collect();
+        Self { newlines }
+    }
+
+    /// The 1-based line of byte offset `pos`.
+    pub fn line(&self, pos: usize) -> u32 {
+        let before = self.newlines.partition_point(|&n| n < pos);
+        u32::try_from(before + 1).unwrap_or(u32::MAX)
+    }
 }
 
 /// A problem with the XML declaration (`<?xml version="1.0"?>`), which the
@@ -81,8 +110,10 @@ pub fn declaration_problem(text: &str) -> Option<String> {
     let after = after.strip_prefix('=')?.trim_start();
     let quote = after.chars().next()?;
     let value = after[1..].split(quote).next()?;
-    let digits = value.strip_prefix("1.")?;
-    if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) {
+    if let Some(digits) = value.strip_prefix("1.")
+        && !digits.is_empty()
+        && digits.bytes().all(|b| b.is_ascii_digit())
+    {
         return None;
     }
     Some(format!(
@@ -95,7 +126,11 @@ mod tests {
     use super::*;
 
     fn nested(n: usize) -> String {
-        format!("<robot>{}{}</robot>", "<a>".repeat(n - 1), "</a>".repeat(n - 1))
+        format!(
+            "<robot>{}{}</robot>",
+            "<a>".repeat(n - 1),
+            "</a>".repeat(n - 1)
+        )
     }
 
     #[test]
@@ -107,15 +142,23 @@ mod tests {
         assert_eq!(too_deep(flat, 2), None);
         assert_eq!(too_deep(flat, 1), Some(flat.find("<c>").unwrap()));
         assert_eq!(line_of("a\nb\nc", 4), 3);
+        let index = LineIndex::new("a\nb\nc");
+        assert_eq!([0, 1, 2, 3, 4].map(|p| index.line(p)), [1, 1, 2, 2, 3]);
     }
 
     #[test]
     fn the_version_must_be_one_point_something() {
         assert_eq!(declaration_problem("<?xml version=\"1.0\"?><robot/>"), None);
-        assert_eq!(declaration_problem("\u{feff}<?xml version='1.1' encoding='UTF-8'?>"), None);
+        assert_eq!(
+            declaration_problem("\u{feff}<?xml version='1.1' encoding='UTF-8'?>"),
+            None
+        );
         assert_eq!(declaration_problem("<robot/>"), None);
         let e = declaration_problem("<?xml version=\"1 2\"?>\n<robot/>").unwrap();
-        assert!(e.starts_with("the XML declaration says version=\"1 2\""), "{e}");
+        assert!(
+            e.starts_with("the XML declaration says version=\"1 2\""),
+            "{e}"
+        );
         assert!(declaration_problem("<?xml version=\"2.0\"?><robot/>").is_some());
         assert!(declaration_problem("<?xml version=\"1.\"?><robot/>").is_some());
     }
