@@ -163,7 +163,7 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                 }
                 match link.inertial.as_ref().and_then(|i| i.mass) {
                     // pybullet (and others) read mass 0 as a static link.
-                    Some(m) if m == 0.0 => {
+                    Some(0.0) => {
                         notes.insert(0, "was mass 0 (static in pybullet), now has mass".into());
                     }
                     Some(m) if m < 0.0 => notes.insert(
