@@ -296,6 +296,20 @@ pub enum CliError {
         /// The links' names.
         links: Vec<String>,
     },
+    /// `inertia --urdf --check`: no link fails, but these links' inertials
+    /// could not be compared with their geometry (it cannot be integrated).
+    #[error(
+        "{} link(s) not compared, their geometry could not be integrated: {}{}",
+        links.len(),
+        links.join(", "),
+        if *hull { "" } else { " (--hull compares open meshes as their convex hulls)" }
+    )]
+    NotCompared {
+        /// The links' names.
+        links: Vec<String>,
+        /// Whether `--hull` was given already.
+        hull: bool,
+    },
 }
 
 /// Why the mass properties of one body of a mesh file cannot be computed.

@@ -25,8 +25,12 @@ mod urdf_document;
 mod urdf_fill;
 mod urdf_inertial;
 mod urdf_links;
+mod urdf_notes;
 mod urdf_paths;
+mod urdf_relocate;
+mod urdf_report;
 mod urdf_table;
+mod urdf_wellformed;
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -41,6 +45,24 @@ pub use inertial_form::{Inertial, InertialForm, MARGIN_ULPS, is_loadable, rpy_se
 pub use json::FRAME;
 pub use rounding::DIGITS;
 pub use urdf_args::{GeometrySource, PackageDir, UrdfArgs};
+
+/// Reads a robot description or scene file whole as UTF-8 text, refusing
+/// more than [`kreisel_inertia::io::TEXT_FILE_LIMIT`] bytes (an endless
+/// device too); `what` names the input in that error (`a URDF file`).
+///
+/// # Errors
+/// The operating system's errors, [`std::io::ErrorKind::FileTooLarge`], and
+/// [`std::io::ErrorKind::InvalidData`] for text that is not UTF-8.
+pub fn read_text_file(path: &std::path::Path, what: &str) -> std::io::Result<String> {
+    let bytes =
+        kreisel_inertia::io::read_limited(path, kreisel_inertia::io::TEXT_FILE_LIMIT, what)?;
+    String::from_utf8(bytes).map_err(|_| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        )
+    })
+}
 
 /// What `--weld` chooses.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -294,9 +294,11 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         Some(plot) => Some(check_plot(plot, scene_path, args.output.as_deref())?),
         None => None,
     };
-    let text = fs::read_to_string(scene_path).map_err(|source| CliError::ReadScene {
-        path: scene_path.clone(),
-        source,
+    let text = crate::inertia::read_text_file(scene_path, "a scene file").map_err(|source| {
+        CliError::ReadScene {
+            path: scene_path.clone(),
+            source,
+        }
     })?;
     let (mut scene, name) = prepare(scene_path, &text, args.method.as_deref())?;
     if args.explain {

@@ -114,8 +114,8 @@ fn fields(obj: &mut Object<'_>, setup: &Setup, s: &Summary, view: &View) {
 }
 
 /// Writes the members of an object, one per line, with commas between.
-struct Object<'a> {
-    out: &'a mut String,
+pub(super) struct Object<'a> {
+    pub(super) out: &'a mut String,
     depth: usize,
     first: bool,
 }
@@ -123,7 +123,7 @@ struct Object<'a> {
 impl<'a> Object<'a> {
     /// An object whose members are indented by `depth` levels; the caller
     /// writes the braces.
-    fn new(out: &'a mut String, depth: usize) -> Self {
+    pub(super) fn new(out: &'a mut String, depth: usize) -> Self {
         Self {
             out,
             depth,
@@ -132,7 +132,7 @@ impl<'a> Object<'a> {
     }
 
     /// Starts a member: separator, indentation, `"key": `.
-    fn key(&mut self, key: &str) {
+    pub(super) fn key(&mut self, key: &str) {
         if !self.first {
             self.out.push_str(",\n");
         }
@@ -143,14 +143,14 @@ impl<'a> Object<'a> {
     }
 
     /// A member whose value is a number.
-    fn number(&mut self, key: &str, value: f64) {
+    pub(super) fn number(&mut self, key: &str, value: f64) {
         self.key(key);
         number(self.out, value);
     }
 }
 
 /// A JSON number, or `null` for NaN and infinities.
-fn number(out: &mut String, value: f64) {
+pub(super) fn number(out: &mut String, value: f64) {
     if value.is_finite() {
         let _ = write!(out, "{}", Shortest(value));
     } else {
@@ -171,12 +171,12 @@ fn list(out: &mut String, values: &[f64]) {
 }
 
 /// `[x, y, z]`.
-fn vector(out: &mut String, v: DVec3) {
+pub(super) fn vector(out: &mut String, v: DVec3) {
     list(out, &v.to_array());
 }
 
 /// `[[row 0], [row 1], [row 2]]`.
-fn matrix_rows(out: &mut String, m: DMat3) {
+pub(super) fn matrix_rows(out: &mut String, m: DMat3) {
     out.push('[');
     for r in 0..3 {
         if r > 0 {
@@ -188,7 +188,7 @@ fn matrix_rows(out: &mut String, m: DMat3) {
 }
 
 /// A JSON string: quotes, backslashes and control characters escaped.
-fn string(out: &mut String, text: &str) {
+pub(super) fn string(out: &mut String, text: &str) {
     out.push('"');
     for c in text.chars() {
         match c {

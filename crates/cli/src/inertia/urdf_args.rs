@@ -22,6 +22,15 @@ Whole robots (--urdf):
   relative paths are relative to the URDF. Only the <inertial> elements
   change: the rest of the file is copied byte for byte, to --output (written
   whole or not at all) or standard output; a table goes to standard error.
+  With --output in another folder, relative mesh paths are rewritten to lead
+  from there to the same files (package:// and absolute ones are kept). A
+  link's <mass> that is not positive is replaced by density x volume, said
+  in the notes. Elements nested deeper than 1000, an XML version other than
+  1.x and two links of one name are errors; a URDF or scene file larger
+  than 64 MiB and a mesh file larger than 1 GiB are refused.
+  --format json writes the report (per link: name, action or check, mass,
+  centre of mass, inertia, notes; a summary with the exit status) to
+  standard output instead of the table; filling then needs --output.
   With --hull every mesh is the solid convex hull of its vertices (for open
   meshes, common in published robots); --weld applies as for one mesh.
   Geometry: box, cylinder, sphere, capsule (radius, length of the cylinder
@@ -42,15 +51,17 @@ Whole robots (--urdf):
     or it is unphysical: mass not positive, a principal moment not positive,
       I1 + I2 < I3 (beyond 1e-6 relative), or the centre of mass outside the
       convex hull of the geometry (beyond 1e-6 of its diagonal).
-  The exit status is 1 when a link fails, naming it; a link without an
-  inertial or with mass 0 (massless or static), and one whose geometry
-  cannot be integrated (its physics still checked), is listed but does not
-  fail.
+  The exit status is 1 when a link fails, naming it, and when a link's
+  geometry cannot be integrated, so it was not compared (its physics still
+  checked; --hull compares open meshes as their convex hulls). A link
+  without an inertial, with mass 0 (massless or static) or without geometry
+  is listed but does not fail.
 
 Examples (robots):
   kreisel inertia --urdf robot.urdf --output robot_filled.urdf
   kreisel inertia --urdf robot.urdf --package my_robot=src/my_robot --from visual
-  kreisel inertia --urdf robot.urdf --check --density 2700";
+  kreisel inertia --urdf robot.urdf --check --density 2700
+  kreisel inertia --urdf robot.urdf --check --hull --format json";
 
 /// Which geometry of a link is integrated (`--from`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -100,7 +111,7 @@ pub struct UrdfArgs {
     #[arg(
         long,
         value_name = "ROBOT.urdf",
-        conflicts_with_all = ["mesh", "mass", "scale", "units", "shell", "thickness", "merge", "format", "about", "transform"]
+        conflicts_with_all = ["mesh", "mass", "scale", "units", "shell", "thickness", "merge", "about", "transform"]
     )]
     pub urdf: Option<PathBuf>,
 
@@ -116,7 +127,7 @@ pub struct UrdfArgs {
     #[arg(long, value_name = "NAME=DIR", value_parser = parse_package, requires = "urdf")]
     pub package: Vec<PackageDir>,
 
-    /// With --urdf: compare every link's inertial with its geometry; exit status 1 when one fails
+    /// With --urdf: compare every link's inertial with its geometry; exit status 1 when one fails or cannot be compared
     #[arg(long, requires = "urdf", conflicts_with_all = ["principal", "digits"])]
     pub check: bool,
 }

@@ -24,6 +24,7 @@ use kreisel_inertia::{PrincipalAxes, TriMesh, convex_hull};
 use super::urdf_args::GeometrySource;
 use super::urdf_document::{Inertial, UrdfDocument};
 use super::urdf_links::{LinkOutcome, LinkSolid};
+use super::urdf_report::{Fields, UrdfReport, Value};
 use super::urdf_table::{render, sig};
 use crate::error::CliError;
 
@@ -92,13 +93,37 @@ fn outside_hull(points: &[DVec3], point: DVec3) -> Option<f64> {
     Some(distance)
 }
 
-/// One link's comparison: the table cells and the reasons it fails.
+/// The measures of one link's comparison.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Measures {
+    /// `m_file / (ρ V)`, with an explicit density.
+    ratio: Option<f64>,
+    /// `|c_file − c_mesh|`, m.
+    offset: f64,
+    /// The offset over the geometry's bounding-box diagonal.
+    fraction: f64,
+    /// `‖I_file − I_mesh‖_F / ‖I_mesh‖_F`.
+    diff: f64,
+}
+
+impl Measures {
+    /// The three table cells: mass ratio, COM offset (% size), tensor diff.
+    fn cells(&self) -> [String; 3] {
+        [
+            self.ratio.map_or_else(|| "-".into(), sig),
+            format!("{} ({}%)", sig(self.offset), sig(100.0 * self.fraction)),
+            format!("{}%", sig(100.0 * self.diff)),
+        ]
+    }
+}
+
+/// One link's comparison: its measures and the reasons it fails.
 fn compare(
     inertial: &Inertial,
     tensor: DMat3,
     solid: &LinkSolid,
     density: Option<f64>,
-) -> (Vec<String>, Vec<String>) {
+) -> (Measures, Vec<String>) {
     let mut fails = Vec::new();
     let volume = solid.unit.mass;
     let m_file = inertial.mass.unwrap_or(f64::NAN);
@@ -112,9 +137,9 @@ fn compare(
                     sig(r)
                 ));
             }
-            sig(r)
+            Some(r)
         }
-        None => "-".into(),
+        None => None,
     };
     let mesh_mass = if m_file.is_finite() && m_file > 0.0 {
         m_file
@@ -146,119 +171,247 @@ fn compare(
             sig(out)
         ));
     }
-    let cells = vec![
+    let measures = Measures {
         ratio,
-        format!("{} ({}%)", sig(offset), sig(100.0 * offset / size)),
-        format!("{}%", sig(100.0 * diff)),
-    ];
-    (cells, fails)
+        offset,
+        fraction: offset / size,
+        diff,
+    };
+    (measures, fails)
 }
 
-/// Runs `--check` on the parsed description and its integrated links.
-///
-/// # Errors
-/// [`CliError::CheckFailed`] naming the links that fail.
-pub fn run(
-    urdf: &Path,
-    doc: &UrdfDocument,
-    outcomes: &[LinkOutcome],
-    source: GeometrySource,
-    density: Option<f64>,
-) -> Result<(), CliError> {
-    let mut rows = Vec::new();
-    let mut failed = Vec::new();
-    for (link, outcome) in doc.links.iter().zip(outcomes) {
-        let mut row = vec![link.name.clone()];
-        let (cells, verdict, notes) = match &link.inertial {
-            None => (vec![], "-", vec!["no inertial (massless)".to_owned()]),
+/// `--check` on a parsed description and its integrated links.
+pub struct Check<'a> {
+    /// The URDF as given.
+    pub urdf: &'a Path,
+    /// Its links.
+    pub doc: &'a UrdfDocument,
+    /// What became of each link's geometry.
+    pub outcomes: &'a [LinkOutcome],
+    /// `--from`.
+    pub source: GeometrySource,
+    /// `--density`, when given.
+    pub density: Option<f64>,
+    /// `--hull`, to say whether it would help.
+    pub hull: bool,
+}
+
+/// One link's verdict.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Verdict {
+    Ok,
+    Fail,
+    /// The geometry cannot be integrated (its physics passed).
+    NotCompared,
+    /// No inertial, mass 0, or no geometry: nothing to compare.
+    Listed,
+}
+
+impl Verdict {
+    /// The word of the JSON report.
+    fn json(self) -> &'static str {
+        match self {
+            Verdict::Ok => "ok",
+            Verdict::Fail => "fail",
+            Verdict::NotCompared => "not compared",
+            Verdict::Listed => "not checked",
+        }
+    }
+
+    /// The table cell.
+    fn text(self) -> &'static str {
+        match self {
+            Verdict::Ok => "ok",
+            Verdict::Fail => "FAIL",
+            Verdict::NotCompared => "not compared",
+            Verdict::Listed => "-",
+        }
+    }
+}
+
+impl Check<'_> {
+    /// One link: its verdict, the measures of [`compare`] (empty when not
+    /// compared) and the notes.
+    fn link(
+        &self,
+        inertial: Option<&Inertial>,
+        outcome: &LinkOutcome,
+    ) -> (Verdict, Option<Measures>, Vec<String>) {
+        let inertial = match inertial {
+            None => {
+                return (
+                    Verdict::Listed,
+                    None,
+                    vec!["no inertial (massless)".to_owned()],
+                );
+            }
             // URDF's (and pybullet's) convention for a static or massless link.
             Some(i) if i.mass == Some(0.0) => {
-                (vec![], "-", vec!["mass 0 (massless or static)".to_owned()])
+                return (
+                    Verdict::Listed,
+                    None,
+                    vec!["mass 0 (massless or static)".to_owned()],
+                );
             }
-            Some(inertial) => {
-                let tensor = inertial.tensor_in_link().unwrap_or(DMat3::ZERO);
-                let mut fails = physics(inertial, tensor);
-                if inertial.tensor.is_none() {
-                    fails.push("no <inertia>".into());
-                }
-                let cells = match outcome {
-                    LinkOutcome::Solid(solid) => {
-                        let (cells, more) = compare(inertial, tensor, solid, density);
-                        fails.extend(more);
-                        cells
-                    }
-                    LinkOutcome::NoGeometry => {
-                        fails.push(format!(
-                            "no <{}> geometry to compare with",
-                            source.element()
-                        ));
-                        vec![]
-                    }
-                    LinkOutcome::Failed(reason) => {
-                        fails.push(format!("not compared, cannot integrate: {reason}"));
-                        vec![]
-                    }
-                };
-                let unchecked = !matches!(outcome, LinkOutcome::Solid(_));
-                let physical = physics(inertial, tensor).is_empty() && inertial.tensor.is_some();
-                let verdict = if fails.is_empty() {
-                    "ok"
-                } else if unchecked && physical {
-                    "-"
-                } else {
-                    "FAIL"
-                };
-                (cells, verdict, fails)
-            }
+            Some(i) => i,
         };
-        if verdict == "FAIL" {
-            failed.push(link.name.clone());
+        let tensor = inertial.tensor_in_link().unwrap_or(DMat3::ZERO);
+        let mut fails = physics(inertial, tensor);
+        if inertial.tensor.is_none() {
+            fails.push("no <inertia>".into());
         }
-        let mut notes = notes;
-        if let LinkOutcome::Solid(solid) = outcome {
-            notes.extend(solid.size_warning());
-        }
-        let mut cells = cells;
-        cells.resize(3, "-".into());
-        row.extend(cells);
-        row.push(verdict.into());
-        row.push(notes.join("; "));
-        rows.push(row);
+        let physical = fails.is_empty();
+        let (cells, unchecked) = match outcome {
+            LinkOutcome::Solid(solid) => {
+                let (measures, more) = compare(inertial, tensor, solid, self.density);
+                fails.extend(more);
+                (Some(measures), None)
+            }
+            LinkOutcome::NoGeometry => (
+                None,
+                Some((
+                    Verdict::Listed,
+                    format!("no <{}> geometry to compare with", self.source.element()),
+                )),
+            ),
+            LinkOutcome::Failed(reason) => (
+                None,
+                Some((
+                    Verdict::NotCompared,
+                    format!("not compared, cannot integrate: {reason}"),
+                )),
+            ),
+        };
+        let verdict = match unchecked {
+            Some((verdict, why)) => {
+                fails.push(why);
+                if physical { verdict } else { Verdict::Fail }
+            }
+            None if fails.is_empty() => Verdict::Ok,
+            None => Verdict::Fail,
+        };
+        (verdict, cells, fails)
     }
-    let header = [
-        "link",
-        "mass ratio",
-        "COM offset m (% size)",
-        "tensor diff",
-        "check",
-        "why",
-    ];
-    let mut out = render(&header, &rows);
-    let uncompared = outcomes
-        .iter()
-        .filter(|o| matches!(o, LinkOutcome::Failed(_)))
-        .count();
-    let uncompared = if uncompared > 0 {
-        format!(", {uncompared} not compared (geometry not integrable)")
-    } else {
-        String::new()
-    };
-    out.push_str(&format!(
-        "{}: {} links, {} fail{uncompared}{}\n",
-        urdf.display(),
-        doc.links.len(),
-        failed.len(),
-        if density.is_none() {
-            " (no --density: meshes at each link's own mass, no mass ratio)"
-        } else {
-            ""
+
+    /// Runs the check: the table on standard error, or with `json` the
+    /// report on standard output.
+    ///
+    /// # Errors
+    /// [`CliError::CheckFailed`] naming the links that fail; otherwise
+    /// [`CliError::NotCompared`] naming those that could not be compared.
+    pub fn run(&self, json: bool) -> Result<(), CliError> {
+        let mut rows = Vec::new();
+        let mut report_rows = Vec::new();
+        let mut failed = Vec::new();
+        let mut uncompared = Vec::new();
+        for (link, outcome) in self.doc.links.iter().zip(self.outcomes) {
+            let (verdict, cells, mut notes) = self.link(link.inertial.as_ref(), outcome);
+            match verdict {
+                Verdict::Fail => failed.push(link.name.clone()),
+                Verdict::NotCompared => uncompared.push(link.name.clone()),
+                Verdict::Ok | Verdict::Listed => {}
+            }
+            if let LinkOutcome::Solid(solid) = outcome {
+                notes.extend(solid.size_warning());
+            }
+            let mut fields: Fields = vec![
+                ("name", Value::Text(link.name.clone())),
+                ("check", Value::Text(verdict.json().into())),
+            ];
+            let inertial = link.inertial.as_ref();
+            fields.push((
+                "mass",
+                inertial
+                    .and_then(|i| i.mass)
+                    .map_or(Value::Null, Value::Number),
+            ));
+            fields.push((
+                "center_of_mass",
+                inertial.map_or(Value::Null, |i| Value::Vector(i.origin.xyz)),
+            ));
+            fields.push((
+                "inertia",
+                inertial
+                    .and_then(Inertial::tensor_in_link)
+                    .map_or(Value::Null, Value::Matrix),
+            ));
+            let measured = |f: fn(&Measures) -> Option<f64>| {
+                cells
+                    .as_ref()
+                    .and_then(f)
+                    .map_or(Value::Null, Value::Number)
+            };
+            fields.push(("mass_ratio", measured(|m| m.ratio)));
+            fields.push(("com_offset", measured(|m| Some(m.offset))));
+            fields.push(("com_offset_fraction", measured(|m| Some(m.fraction))));
+            fields.push(("tensor_diff", measured(|m| Some(m.diff))));
+            fields.push(("notes", Value::Texts(notes.clone())));
+            report_rows.push(fields);
+            let mut row = vec![link.name.clone()];
+            match &cells {
+                Some(m) => row.extend(m.cells()),
+                None => row.extend(["-", "-", "-"].map(String::from)),
+            }
+            row.push(verdict.text().into());
+            row.push(notes.join("; "));
+            rows.push(row);
         }
-    ));
-    let _ = std::io::stderr().write_all(out.as_bytes());
-    if failed.is_empty() {
-        Ok(())
-    } else {
-        Err(CliError::CheckFailed { links: failed })
+        let uncompared_text = if uncompared.is_empty() {
+            String::new()
+        } else {
+            format!(
+                ", {} not compared (geometry not integrable)",
+                uncompared.len()
+            )
+        };
+        let status = usize::from(!failed.is_empty() || !uncompared.is_empty());
+        if json {
+            let report = UrdfReport {
+                urdf: self.urdf.display().to_string(),
+                mode: "check",
+                links: report_rows,
+                summary: vec![
+                    ("links", Value::Count(self.doc.links.len())),
+                    ("fail", Value::Count(failed.len())),
+                    ("not_compared", Value::Count(uncompared.len())),
+                    ("density", self.density.map_or(Value::Null, Value::Number)),
+                    ("exit_status", Value::Count(status)),
+                ],
+            };
+            crate::convert::print_stdout(&report.json())?;
+        } else {
+            let header = [
+                "link",
+                "mass ratio",
+                "COM offset m (% size)",
+                "tensor diff",
+                "check",
+                "why",
+            ];
+            let mut out = render(&header, &rows);
+            out.push_str(&format!(
+                "{}: {} links, {} fail{uncompared_text}{}\n",
+                self.urdf.display(),
+                self.doc.links.len(),
+                failed.len(),
+                if self.density.is_none() {
+                    " (no --density: meshes at each link's own mass, no mass ratio)"
+                } else {
+                    ""
+                }
+            ));
+            let _ = std::io::stderr().write_all(out.as_bytes());
+        }
+        if !failed.is_empty() {
+            Err(CliError::CheckFailed { links: failed })
+        } else if !uncompared.is_empty() {
+            Err(CliError::NotCompared {
+                links: uncompared,
+                hull: self.hull,
+            })
+        } else {
+            Ok(())
+        }
     }
 }
 

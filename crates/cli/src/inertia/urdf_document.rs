@@ -13,6 +13,7 @@ use std::path::Path;
 use glam::{DMat3, DQuat, DVec3};
 use roxmltree::{Document, Node};
 
+use super::urdf_wellformed::{LineIndex, MAX_DEPTH, declaration_problem, line_of, too_deep};
 use crate::error::CliError;
 
 /// A pose `<origin xyz rpy>`: translation, then URDF's fixed-axis roll,
@@ -90,6 +91,8 @@ pub struct Geometry {
     pub shape: Shape,
     /// 1-based line of the shape element (`<mesh>`, `<box>`, …), for messages.
     pub line: u32,
+    /// The bytes of a `<mesh>`'s `filename="…"` attribute.
+    pub filename_attribute: Option<Range<usize>>,
 }
 
 /// A link's `<inertial>` as written in the file.
@@ -172,6 +175,7 @@ fn numbers(text: &str, n: usize) -> Option<Vec<f64>> {
 struct Reader<'a, 'input> {
     path: &'a Path,
     doc: &'a Document<'input>,
+    lines: &'a LineIndex,
     link: &'a str,
 }
 
@@ -285,7 +289,11 @@ impl<'input> Reader<'_, 'input> {
         Ok(Geometry {
             origin: self.origin(node)?,
             shape,
-            line: self.doc.text_pos_at(shape_node.range().start).row,
+            line: self.lines.line(shape_node.range().start),
+            filename_attribute: shape_node
+                .attributes()
+                .find(|a| a.name() == "filename" && a.namespace().is_none())
+                .map(|a| a.range()),
         })
     }
 
@@ -343,24 +351,44 @@ fn start_tag_end(text: &str, start: usize) -> usize {
 
 /// The whitespace before `pos` on its line (`None` when other text precedes it).
 fn indent_before(text: &str, pos: usize) -> Option<&str> {
-    let line_start = text[..pos].rfind('\n').map_or(0, |i| i + 1);
-    let before = &text[line_start..pos];
-    before
-        .chars()
-        .all(|c| c == ' ' || c == '\t')
-        .then_some(before)
+    // Only the blanks just before `pos` are looked at (never the whole line).
+    let blanks = text.as_bytes()[..pos]
+        .iter()
+        .rev()
+        .take_while(|&&b| b == b' ' || b == b'\t')
+        .count();
+    let start = pos - blanks;
+    (start == 0 || text.as_bytes()[start - 1] == b'\n').then(|| &text[start..pos])
 }
 
 impl UrdfDocument {
     /// Parses a robot description read from `path` (named in errors).
     ///
     /// # Errors
-    /// [`CliError::Urdf`] for text that is not XML, a root that is not
-    /// `<robot>`, an unnamed link, a link with two `<inertial>` elements,
+    /// [`CliError::Urdf`] for text that is not XML (or nests elements deeper
+    /// than [`MAX_DEPTH`], or declares an XML version other than 1.x), a
+    /// root that is not `<robot>`, an unnamed link, two links of one name,
+    /// a link with two `<inertial>` elements,
     /// and a malformed `<origin>`, `<geometry>`, `<mass>` or `<inertia>`
     /// with the line and the link (an unknown geometry element is
     /// [`Shape::Other`], the link's own problem).
     pub fn parse(path: &Path, text: String) -> Result<Self, CliError> {
+        if let Some(pos) = too_deep(&text, MAX_DEPTH) {
+            return Err(CliError::Urdf {
+                path: path.to_path_buf(),
+                line: Some(line_of(&text, pos)),
+                message: format!(
+                    "elements nested more than {MAX_DEPTH} deep; a URDF nests about 5 (robot, link, collision, geometry, mesh)"
+                ),
+            });
+        }
+        if let Some(message) = declaration_problem(&text) {
+            return Err(CliError::Urdf {
+                path: path.to_path_buf(),
+                line: Some(1),
+                message,
+            });
+        }
         let links = {
             let doc = Document::parse(&text).map_err(|e| CliError::Urdf {
                 path: path.to_path_buf(),
@@ -379,12 +407,26 @@ impl UrdfDocument {
                     ),
                 ));
             }
-            let mut links = Vec::new();
+            let index = LineIndex::new(&text);
+            let mut links: Vec<Link> = Vec::new();
+            let mut lines = std::collections::HashMap::new();
             for node in root
                 .children()
                 .filter(|c| c.is_element() && c.tag_name().name() == "link")
             {
-                links.push(parse_link(path, &doc, &text, node)?);
+                let link = parse_link(path, &doc, &index, &text, node)?;
+                if let Some(first) = lines.insert(link.name.clone(), link.line) {
+                    return Err(at(
+                        path,
+                        &doc,
+                        node,
+                        format!(
+                            "a second link named '{}' (the first is at line {}); link names must be unique",
+                            link.name, first
+                        ),
+                    ));
+                }
+                links.push(link);
             }
             links
         };
@@ -402,7 +444,18 @@ impl UrdfDocument {
     /// `elements` pairs a link index with the element's text, which starts
     /// at `<inertial>` and ends at `</inertial>` (its inner lines already
     /// indented as the link's children).
+    #[cfg(test)]
     pub fn splice(&self, elements: &[(usize, String)]) -> String {
+        self.splice_with(elements, Vec::new())
+    }
+
+    /// [`UrdfDocument::splice`], and the byte ranges of `more` (which
+    /// overlap no `<inertial>`) replaced by their text.
+    pub fn splice_with(
+        &self,
+        elements: &[(usize, String)],
+        more: Vec<(Range<usize>, String)>,
+    ) -> String {
         let mut edits: Vec<(Range<usize>, String)> = elements
             .iter()
             .map(|(k, element)| {
@@ -415,6 +468,7 @@ impl UrdfDocument {
                     ),
                 }
             })
+            .chain(more)
             .collect();
         edits.sort_by_key(|(r, _)| r.start);
         let mut out = String::with_capacity(self.text.len() + 400 * edits.len());
@@ -430,18 +484,25 @@ impl UrdfDocument {
 }
 
 /// One `<link>` element.
-fn parse_link(path: &Path, doc: &Document, text: &str, node: Node) -> Result<Link, CliError> {
+fn parse_link(
+    path: &Path,
+    doc: &Document,
+    lines: &LineIndex,
+    text: &str,
+    node: Node,
+) -> Result<Link, CliError> {
     let name = node
         .attribute("name")
         .ok_or_else(|| at(path, doc, node, "a <link> has no name attribute".into()))?;
     let reader = Reader {
         path,
         doc,
+        lines,
         link: name,
     };
     let mut link = Link {
         name: name.to_owned(),
-        line: doc.text_pos_at(node.range().start).row,
+        line: lines.line(node.range().start),
         insert_at: start_tag_end(text, node.range().start),
         child_indent: String::new(),
         step: String::new(),

@@ -22,8 +22,10 @@ use super::urdf_document::{Link, UrdfDocument};
 use super::urdf_inertial::{Layout, inertial_element};
 use super::urdf_links::{LinkOutcome, LinkSolid, MeshModel, integrate};
 use super::urdf_paths::MeshPaths;
+use super::urdf_relocate::relocate;
+use super::urdf_report::{Fields, UrdfReport, Value};
 use super::urdf_table::{render, sig, sig3};
-use super::{DEFAULT_DENSITY, InertiaArgs, InertialForm, WeldChoice};
+use super::{DEFAULT_DENSITY, Format, InertiaArgs, InertialForm, WeldChoice};
 use crate::error::{CliError, Stream, one_line};
 
 /// Where a filled link's mass comes from.
@@ -61,14 +63,42 @@ pub fn at_mass(
     Ok((props, mass / volume, source))
 }
 
+/// Whether the report is the table on standard error or JSON on standard
+/// output (`--format text|json`; the others are refused with `--urdf`).
+///
+/// # Errors
+/// [`CliError::Argument`] for `--format urdf|sdf|mjcf`, and for
+/// `--format json` when filling without `--output` (the URDF and the report
+/// cannot share standard output).
+fn json_report(args: &InertiaArgs) -> Result<bool, CliError> {
+    let refuse = |message: &str| {
+        Err(CliError::Argument {
+            argument: "--format".into(),
+            message: message.into(),
+        })
+    };
+    match args.format {
+        Format::Text => Ok(false),
+        Format::Json if args.robot.check || args.robot.output.is_some() => Ok(true),
+        Format::Json => refuse(
+            "json with --urdf needs --output FILE (or --check): the filled URDF and the report cannot share standard output",
+        ),
+        _ => refuse(
+            "with --urdf only text (the table on standard error) or json (the report on standard output); the URDF itself is the output",
+        ),
+    }
+}
+
 /// Runs `inertia --urdf` (filling, or `--check`).
 ///
 /// # Errors
 /// [`CliError::ReadUrdf`], [`CliError::Urdf`] (malformed file, missing mesh
 /// or package), [`CliError::Write`] for the output; after writing the
-/// output, [`CliError::LinksKept`]; for `--check`, [`CliError::CheckFailed`].
+/// output, [`CliError::LinksKept`]; for `--check`, [`CliError::CheckFailed`]
+/// and [`CliError::NotCompared`].
 pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
-    let text = std::fs::read_to_string(urdf).map_err(|source| CliError::ReadUrdf {
+    let json = json_report(args)?;
+    let text = super::read_text_file(urdf, "a URDF file").map_err(|source| CliError::ReadUrdf {
         path: urdf.to_path_buf(),
         source,
     })?;
@@ -89,7 +119,15 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
         .map(|link| integrate(urdf, link, source, &paths, how))
         .collect::<Result<Vec<_>, _>>()?;
     if args.robot.check {
-        return super::urdf_check::run(urdf, &doc, &outcomes, source, args.density);
+        let check = super::urdf_check::Check {
+            urdf,
+            doc: &doc,
+            outcomes: &outcomes,
+            source,
+            density: args.density,
+            hull: args.hull,
+        };
+        return check.run(json);
     }
     let density = args.density.unwrap_or(DEFAULT_DENSITY);
     let form = InertialForm {
@@ -98,9 +136,11 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
     };
     let mut elements = Vec::new();
     let mut rows = Vec::new();
+    let mut report_rows = Vec::new();
     let mut kept = Vec::new();
     for (k, (link, outcome)) in doc.links.iter().zip(&outcomes).enumerate() {
         let mut row = vec![link.name.clone()];
+        let mut fields: Fields = vec![("name", Value::Text(link.name.clone()))];
         let result = match outcome {
             LinkOutcome::NoGeometry => Err(format!(
                 "no <{}> geometry: inertial unchanged",
@@ -121,9 +161,19 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                 if mass_source == MassSource::Kept {
                     notes.insert(0, "mass kept, density derived".into());
                 }
-                if link.inertial.as_ref().and_then(|i| i.mass) == Some(0.0) {
+                match link.inertial.as_ref().and_then(|i| i.mass) {
                     // pybullet (and others) read mass 0 as a static link.
-                    notes.insert(0, "was mass 0 (static in pybullet), now has mass".into());
+                    Some(0.0) => {
+                        notes.insert(0, "was mass 0 (static in pybullet), now has mass".into());
+                    }
+                    Some(m) if m < 0.0 => notes.insert(
+                        0,
+                        format!(
+                            "was mass {} (negative, unphysical), now density x volume",
+                            sig(m)
+                        ),
+                    ),
+                    _ => {}
                 }
                 row.extend([
                     sig(props.mass),
@@ -132,6 +182,26 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                     sig3(props.principal().moments),
                     solid.parts.join(" + "),
                     notes.join("; "),
+                ]);
+                fields.extend([
+                    ("action", Value::Text("filled".into())),
+                    ("mass", Value::Number(props.mass)),
+                    ("density", Value::Number(rho)),
+                    (
+                        "mass_source",
+                        Value::Text(match mass_source {
+                            MassSource::Kept => "kept".into(),
+                            MassSource::Density => "density".into(),
+                        }),
+                    ),
+                    ("center_of_mass", Value::Vector(props.center_of_mass)),
+                    ("inertia", Value::Matrix(props.inertia)),
+                    (
+                        "principal_moments",
+                        Value::Vector(props.principal().moments),
+                    ),
+                    ("geometry", Value::Texts(solid.parts.clone())),
+                    ("notes", Value::Texts(notes)),
                 ]);
             }
             Err(note) => {
@@ -145,23 +215,57 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
                     note
                 };
                 row.extend(["-", "-", "-", "-", "-"].map(String::from));
-                row.push(note);
+                row.push(note.clone());
+                let action = if failed { "kept" } else { "unchanged" };
+                fields.push(("action", Value::Text(action.into())));
+                for key in [
+                    "mass",
+                    "density",
+                    "mass_source",
+                    "center_of_mass",
+                    "inertia",
+                    "principal_moments",
+                ] {
+                    fields.push((key, Value::Null));
+                }
+                fields.push(("geometry", Value::Texts(Vec::new())));
+                fields.push(("notes", Value::Texts(vec![note])));
             }
         }
         rows.push(row);
+        report_rows.push(fields);
     }
-    let header = [
-        "link",
-        "mass kg",
-        "density kg/m^3",
-        "COM m (link frame)",
-        "principal moments kg m^2",
-        source.element(),
-        "notes",
+    let moved = match &args.robot.output {
+        Some(output) => relocate(&doc, urdf, output),
+        None => Vec::new(),
+    };
+    let summary: Fields = vec![
+        ("links", Value::Count(doc.links.len())),
+        ("filled", Value::Count(elements.len())),
+        ("kept", Value::Count(kept.len())),
+        ("mesh_paths_rewritten", Value::Count(moved.len())),
+        ("exit_status", Value::Count(usize::from(!kept.is_empty()))),
     ];
-    let table = render(&header, &rows);
-    let _ = std::io::stderr().write_all(table.as_bytes());
-    let out = doc.splice(&elements);
+    let out = doc.splice_with(&elements, moved.clone());
+    if !json {
+        let header = [
+            "link",
+            "mass kg",
+            "density kg/m^3",
+            "COM m (link frame)",
+            "principal moments kg m^2",
+            source.element(),
+            "notes",
+        ];
+        let mut table = render(&header, &rows);
+        if !moved.is_empty() {
+            table.push_str(&format!(
+                "{} relative mesh path(s) rewritten to load from the output's folder\n",
+                moved.len()
+            ));
+        }
+        let _ = std::io::stderr().write_all(table.as_bytes());
+    }
     match &args.robot.output {
         Some(path) => {
             crate::atomic_file::write_file(path, out.as_bytes()).map_err(|source| {
@@ -172,6 +276,15 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
             })?;
         }
         None => crate::convert::print_stdout(&out)?,
+    }
+    if json {
+        let report = UrdfReport {
+            urdf: urdf.display().to_string(),
+            mode: "fill",
+            links: report_rows,
+            summary,
+        };
+        crate::convert::print_stdout(&report.json())?;
     }
     if kept.is_empty() {
         Ok(())

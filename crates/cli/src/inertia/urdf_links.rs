@@ -20,6 +20,7 @@ use kreisel_inertia::{MassModel, MassProperties, Material, TriMesh};
 use super::WeldChoice;
 use super::urdf_args::GeometrySource;
 use super::urdf_document::{Geometry, Link, Shape};
+use super::urdf_notes::tidy;
 use super::urdf_paths::MeshPaths;
 use super::urdf_table::sig;
 use crate::error::{CliError, one_line};
@@ -138,14 +139,15 @@ pub struct MeshModel {
     pub model: MassModel,
 }
 
-/// A mesh file's bodies, scaled per axis, at unit density.
-fn mesh(path: &Path, scale: DVec3, how: MeshModel) -> Part {
+/// A mesh file's bodies, scaled per axis, at unit density; `written` is
+/// its filename as the URDF writes it (named in messages).
+fn mesh(path: &Path, written: &str, scale: DVec3, how: MeshModel) -> Part {
     let name = path.file_name().map_or_else(
         || path.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
-    // The library's messages name the file.
-    let fail = |e: &dyn std::fmt::Display| one_line(&e.to_string());
+    // The library's messages name the file: as the URDF writes it.
+    let fail = |e: &dyn std::fmt::Display| tidy(&one_line(&e.to_string()), path, written);
     if !(scale.is_finite() && scale.x * scale.y * scale.z != 0.0) {
         return Err(format!(
             "{name}: scale {scale} has a zero or non-finite component"
@@ -189,11 +191,12 @@ fn mesh(path: &Path, scale: DVec3, how: MeshModel) -> Part {
     let warnings = solid
         .warnings()
         .map(|(body, w)| {
-            format!(
+            let warning = format!(
                 "{name} body '{}': {}",
                 one_line(body),
                 one_line(&w.to_string())
-            )
+            );
+            tidy(&warning, path, written)
         })
         .collect();
     Ok((solid.properties, points, name, warnings))
@@ -213,7 +216,7 @@ fn part(
                 line: Some(geometry.line),
                 message,
             })?;
-            mesh(&file, *scale, how)
+            mesh(&file, filename, *scale, how)
         }
         shape => primitive(shape),
     };

@@ -69,7 +69,9 @@ impl MeshPaths {
         } else {
             self.urdf_dir.join(filename)
         };
-        if path.is_file() {
+        // Anything that exists is handed to the loader, which reads at most
+        // its size limit (a device such as /dev/zero included).
+        if path.exists() {
             Ok(path)
         } else {
             Err(format!(

@@ -12,4 +12,6 @@ mod options;
 mod reference;
 mod support;
 mod urdf;
+mod urdf_campaign;
 mod urdf_errors;
+mod urdf_robots;

@@ -202,11 +202,37 @@ fn an_open_mesh_keeps_the_old_inertial_and_the_file_is_written() {
 fn single_mesh_options_conflict_with_urdf() {
     let input = robot_copy("conflict");
     for extra in [
-        &["--format", "json"][..],
+        &["--mass", "1"][..],
         &["--units", "mm"],
         &["--check", "--output", "x.urdf"],
     ] {
         let run = urdf(&input, extra);
         assert_eq!(run.code, Some(2), "{extra:?}: {}", run.stderr);
     }
+}
+
+#[test]
+fn an_xml_version_other_than_one_is_refused() {
+    let line = broken(
+        "version",
+        "<?xml version=\"1.0\"?>",
+        "<?xml version=\"1 2\"?>",
+    );
+    assert!(
+        line.contains("toy.urdf:1: the XML declaration says version=\"1 2\""),
+        "{line}"
+    );
+}
+
+#[test]
+fn two_links_of_one_name_are_refused() {
+    let line = broken(
+        "duplicate",
+        "<link name=\"tool_tip\"/>",
+        "<link name=\"hand\"/>",
+    );
+    assert!(
+        line.contains("a second link named 'hand' (the first is at line 74)"),
+        "{line}"
+    );
 }

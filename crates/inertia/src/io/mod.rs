@@ -49,12 +49,16 @@ use glam::DVec3;
 
 use crate::{InertiaError, TriMesh, Weld};
 
+pub use read_limit::{
+    MESH_FILE_LIMIT, TEXT_FILE_LIMIT, read_limited, read_limited_from, too_large,
+};
 pub use solid::{Solid, SolidBody, SolidOptions, SolidWarning, load_solid};
 
 mod exact_repeats;
 mod gltf;
 mod obj;
 mod ply;
+mod read_limit;
 mod solid;
 mod stl;
 mod text_scan;
@@ -140,7 +144,9 @@ impl LoadOptions {
     /// [`InertiaError::Io`], [`InertiaError::UnknownFormat`],
     /// [`InertiaError::Parse`], [`InertiaError::InFile`] (for meshes that
     /// [`TriMesh::try_new`] rejects, with its reason), and
-    /// [`InertiaError::NotFinite`] for a bad weld tolerance.
+    /// [`InertiaError::NotFinite`] for a bad weld tolerance; a file read
+    /// whole that is larger than [`MESH_FILE_LIMIT`] (an endless device
+    /// too) is [`InertiaError::Io`] of kind [`std::io::ErrorKind::FileTooLarge`].
     pub fn load(&self, path: &Path) -> Result<Vec<Body>, InertiaError> {
         let format = MeshFormat::from_path(path).ok_or_else(|| InertiaError::UnknownFormat {
             path: path.to_path_buf(),
@@ -154,9 +160,11 @@ impl LoadOptions {
             // Binary STL streams from the file instead of holding it whole.
             return src.finish(stl::load_file(&src)?);
         }
-        let bytes = std::fs::read(path).map_err(|source| InertiaError::Io {
-            path: path.to_path_buf(),
-            source,
+        let bytes = read_limited(path, MESH_FILE_LIMIT, "a mesh file").map_err(|source| {
+            InertiaError::Io {
+                path: path.to_path_buf(),
+                source,
+            }
         })?;
         load(&bytes, &src)
     }

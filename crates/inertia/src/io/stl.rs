@@ -147,7 +147,7 @@ pub(super) fn load_file(src: &Source<'_>) -> Result<Vec<Body>, InertiaError> {
             Err(ReadError::Bad(reason)) => Err(src.error(reason)),
         };
     }
-    let bytes = std::fs::read(src.path).map_err(io)?;
+    let bytes = super::read_limited(src.path, super::MESH_FILE_LIMIT, "a mesh file").map_err(io)?;
     load(&bytes, src)
 }
 

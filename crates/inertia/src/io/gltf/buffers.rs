@@ -121,7 +121,8 @@ pub(super) fn load<'a>(
     Ok(buffers)
 }
 
-/// Reads at most `declared` bytes of the file a relative URI names.
+/// Reads at most `declared` bytes (at most [`crate::io::MESH_FILE_LIMIT`])
+/// of the file a relative URI names.
 fn read_file(uri: &str, declared: usize, src: &Source<'_>) -> Result<Vec<u8>, InertiaError> {
     let path = relative_path(uri).map_err(|r| src.error(r))?;
     let base = src.base_dir().ok_or_else(|| {
@@ -134,6 +135,10 @@ fn read_file(uri: &str, declared: usize, src: &Source<'_>) -> Result<Vec<u8>, In
         path: path.clone(),
         source,
     };
+    let limit = crate::io::MESH_FILE_LIMIT;
+    if declared as u64 > limit {
+        return Err(io(crate::io::too_large("a glTF buffer", limit)));
+    }
     let file = std::fs::File::open(&path).map_err(io)?;
     let mut data = Vec::new();
     file.take(declared as u64)
