@@ -44,7 +44,9 @@ static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 /// The list of pending temporary files (a panic elsewhere does not keep
 /// them from being removed).
 fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
-    PENDING.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+    PENDING
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
 /// Forgets `temp` (committed or removed).
@@ -276,7 +278,10 @@ mod tests {
         let expected = if Path::new("/proc/self").exists() {
             vec![".other.csv.kreisel-4194305-0.tmp".to_owned()]
         } else {
-            vec![".other.csv.kreisel-4194305-0.tmp".to_owned(), ".out.csv.kreisel-4194305-0.tmp".to_owned()]
+            vec![
+                ".other.csv.kreisel-4194305-0.tmp".to_owned(),
+                ".out.csv.kreisel-4194305-0.tmp".to_owned(),
+            ]
         };
         let mut left = entries(&dir);
         left.retain(|f| f != "out.csv" && !f.contains(&format!("-{}-", std::process::id())));
