@@ -83,8 +83,12 @@ impl FreeBodyMethod {
     /// let x = FreeBodyMethod::step_ratio(DVec3::new(1.0, 2.0, 3.0), DVec3::new(1.0, 60.0, 1.5), 0.5);
     /// assert!((x - 30.0146).abs() < 1e-4, "{x}");
     /// assert!(x > FreeBodyMethod::Strang.step_limit().unwrap());
+    /// // The same body at any unit scale.
+    /// let huge = FreeBodyMethod::step_ratio(DVec3::new(1.0, 2.0, 3.0) * 1e200, DVec3::new(1.0, 60.0, 1.5) * 1e200, 0.5);
+    /// assert!((huge - x).abs() < 1e-12 * x, "{huge}");
     /// ```
     pub fn step_ratio(moments: DVec3, l: DVec3, h: f64) -> f64 {
-        h * l.length() / moments.min_element()
+        // Divided first: |L| of a body of 1e200 kg m² overflows, |L|/I₁ not.
+        h * (l / moments.min_element()).length()
     }
 }
