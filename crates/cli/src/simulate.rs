@@ -156,8 +156,8 @@ Motion:
   under gravity, the normal force and friction at the contact point; the
   run stops with an error at a lift-off (normal force zero), a disk lying
   flat, an indeterminate contact, or a watched [[body.contact]] touching
-  down (its time located within the step; the impact is not modelled),
-  the rows before it valid.
+  down (its time located within the step; the impact is not modelled):
+  an event, see Errors.
   With tolerance, a driven body or heavy top takes the cheapest splitting
   and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
   or pdmv6 every dt where that is predicted to meet it for less work than
@@ -207,13 +207,30 @@ Plot (--plot FILE.png or FILE.svg, besides the CSV):
   (the great circles L1/L3 = +-sqrt(I1 (I3 - I2) / (I3 (I2 - I1))), where
   the energy ellipsoid of 2E = L^2/I2 meets the sphere). Long runs are
   thinned to at most 4000 evenly spaced rows per body (the last row kept).
-  The image is written whole or not at all, after the CSV succeeded.
+  The image is written whole or not at all, with the --output file: when
+  the run ends or stops at an event (then up to the event).
 
 Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
   A body whose state becomes non-finite, or whose energy, |L| or |q| drifts
   by more than a factor of 10 (a step far beyond the method's stability),
   stops the run: SCENE: body `NAME`: method M diverged at t = T s (...),
-  with a hint; exit status 1. The rows written before it are valid.
+  with a hint; exit status 1. So does a row that would hold a number that
+  is not finite (e.g. an energy beyond 1.8e308 J). Such a run writes
+  nothing: an existing --output or --plot file stays as it was (on
+  standard output the rows before it have been written).
+  Events end what the model describes: a lift-off, a disk lying flat, an
+  indeterminate contact, a watched contact touching down. The run stops
+  there with one line naming it, exit status 1; the --output file and the
+  --plot image hold the motion up to the event (its last row the last
+  output time before it).
+  A free body stepped by a method beyond that method's step limit, dt
+  times the fastest angular speed |L|/I1 the body can reach (--explain
+  prints both), gets one warning line on standard error, and the run goes
+  on: its energy error may pass 10 % (or a step fails).
+  Ctrl-C (SIGINT) or SIGTERM removes the unfinished --output and --plot
+  files and exits with status 130 or 143; the temporary files a killed
+  run leaves (.NAME.kreisel-PID-N.tmp) are removed by the next run
+  writing NAME (Linux: when process PID no longer exists).
 
 Examples:
   kreisel simulate spin.toml --output spin.csv
@@ -233,7 +250,7 @@ pub struct SimulateArgs {
     #[arg(value_name = "SCENE", required_unless_present = "list_methods")]
     pub scene: Option<PathBuf>,
 
-    /// Write the CSV to FILE (replaced only when the whole run succeeds) instead of standard output
+    /// Write the CSV to FILE instead of standard output (replaced when the run ends, or stops at an event: then up to it; see Errors)
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
