@@ -88,7 +88,10 @@ fn each_limit_holds_and_is_nearly_the_largest() {
 #[test]
 #[ignore = "a scan of a few minutes in release mode; prints the table"]
 fn scan() {
-    for method in FreeBodyMethod::ALL.into_iter().filter(|m| m.order().is_some()) {
+    for method in FreeBodyMethod::ALL
+        .into_iter()
+        .filter(|m| m.order().is_some())
+    {
         let mut last_ok = 0.0;
         let mut first_bad = None;
         for i in 1..=120 {

@@ -76,9 +76,9 @@ impl StepLimit {
         })
     }
 
-    /// Whether `dt ω_max` is beyond the limit.
+    /// Whether `dt ω_max` is beyond the limit (or not a number).
     pub fn exceeded(&self) -> bool {
-        !(self.ratio <= self.limit)
+        self.ratio.is_nan() || self.ratio > self.limit
     }
 
     /// What `--explain` adds to the plan: `dt·ω_max = X (METHOD's step
