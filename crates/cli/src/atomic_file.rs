@@ -9,11 +9,20 @@
 //! same file system). Targets that are not regular files (`/dev/null`,
 //! `/dev/stdout`, a named pipe) are written directly: they cannot be
 //! replaced, and renaming onto a device node would destroy it.
+//!
+//! The temporary file is `.NAME.kreisel-PID-N.tmp` beside `NAME`. It is
+//! removed when the run fails, and on SIGINT or SIGTERM
+//! ([`remove_on_signals`]: the process then exits with status 130 or 143).
+//! A SIGKILL cannot be caught: the next run writing the same output
+//! removes the temporary files of processes that no longer exist. A
+//! process is known to exist when `/proc/PID` does (Linux); where there
+//! is no `/proc`, no such file is removed (delete them by hand).
 
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::{Mutex, MutexGuard};
 
 /// A temporary file that becomes `target` on [`PendingFile::commit`] and is
 /// removed if dropped before that.
@@ -27,6 +36,98 @@ pub struct PendingFile {
 
 /// Distinguishes the temporary files of one process.
 static COUNTER: AtomicU32 = AtomicU32::new(0);
+
+/// The temporary files of this process not yet committed or removed: what
+/// a SIGINT or SIGTERM removes.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// The list of pending temporary files (a panic elsewhere does not keep
+/// them from being removed).
+fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
+    PENDING
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// Forgets `temp` (committed or removed).
+fn forget(list: &mut Vec<PathBuf>, temp: &Path) {
+    list.retain(|p| p != temp);
+}
+
+/// From now on, a SIGINT or SIGTERM removes every pending temporary file
+/// and ends the process with the shell's status for the signal (130,
+/// 143); a file being renamed onto its target at that moment is put in
+/// place first. A thread waits for the signals. Call once, from `main`.
+///
+/// # Errors
+/// The operating system's reason if the handlers cannot be installed
+/// (the run then goes on without them).
+#[cfg(unix)]
+pub fn remove_on_signals() -> io::Result<()> {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM])?;
+    std::thread::Builder::new()
+        .name("kreisel-signals".to_owned())
+        .spawn(move || {
+            if let Some(signal) = signals.forever().next() {
+                // Held until the process ends: no new file, no rename.
+                let list = pending();
+                for temp in list.iter() {
+                    let _ = fs::remove_file(temp);
+                }
+                std::process::exit(128 + signal);
+            }
+        })?;
+    Ok(())
+}
+
+/// Without Unix signals: nothing to install.
+///
+/// # Errors
+/// None.
+#[cfg(not(unix))]
+pub fn remove_on_signals() -> io::Result<()> {
+    Ok(())
+}
+
+/// The process id in a temporary file name of target file name `name`
+/// (`.NAME.kreisel-PID-N.tmp`), if `file` is one.
+fn temp_pid(file: &str, name: &str) -> Option<u32> {
+    let rest = file
+        .strip_prefix('.')?
+        .strip_prefix(name)?
+        .strip_prefix(".kreisel-")?
+        .strip_suffix(".tmp")?;
+    let (pid, n) = rest.split_once('-')?;
+    n.parse::<u32>().ok()?;
+    pid.parse().ok()
+}
+
+/// Whether process `pid` exists: `/proc/PID` exists. `true` (keep its
+/// files) where there is no `/proc` to ask.
+fn alive(pid: u32) -> bool {
+    let proc = Path::new("/proc");
+    !proc.join("self").exists() || proc.join(pid.to_string()).exists()
+}
+
+/// Removes the temporary files for `name` in `dir` left by processes that
+/// no longer exist (killed by SIGKILL, a power cut); a file that cannot be
+/// removed stays.
+fn remove_stale(dir: &Path, name: &str) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    let own = std::process::id();
+    for entry in entries.flatten() {
+        let file = entry.file_name();
+        if let Some(pid) = file.to_str().and_then(|f| temp_pid(f, name))
+            && pid != own
+            && !alive(pid)
+        {
+            let _ = fs::remove_file(entry.path());
+        }
+    }
+}
 
 /// Opens a temporary file beside `target` for writing; the returned
 /// [`PendingFile`] renames it onto `target` when committed.
@@ -53,19 +154,28 @@ pub fn create(target: &Path) -> io::Result<(File, PendingFile)> {
     let name = target
         .file_name()
         .map_or_else(|| "output".into(), |n| n.to_string_lossy().into_owned());
+    remove_stale(&dir, &name);
     loop {
         let n = COUNTER.fetch_add(1, Ordering::Relaxed);
         let temp = dir.join(format!(".{name}.kreisel-{}-{n}.tmp", std::process::id()));
+        // Registered before it exists: a signal never misses it.
+        let mut list = pending();
+        list.push(temp.clone());
         match OpenOptions::new().write(true).create_new(true).open(&temp) {
             Ok(file) => {
+                drop(list);
                 let pending = PendingFile {
                     temp: Some(temp),
                     target,
                 };
                 return Ok((file, pending));
             }
-            Err(e) if e.kind() == io::ErrorKind::AlreadyExists => {}
-            Err(e) => return Err(e),
+            Err(e) => {
+                forget(&mut list, &temp);
+                if e.kind() != io::ErrorKind::AlreadyExists {
+                    return Err(e);
+                }
+            }
         }
     }
 }
@@ -80,9 +190,13 @@ impl PendingFile {
     pub fn commit(mut self) -> io::Result<()> {
         match self.temp.take() {
             None => Ok(()),
-            Some(temp) => fs::rename(&temp, &self.target).inspect_err(|_| {
-                let _ = fs::remove_file(&temp);
-            }),
+            Some(temp) => {
+                let mut list = pending();
+                forget(&mut list, &temp);
+                fs::rename(&temp, &self.target).inspect_err(|_| {
+                    let _ = fs::remove_file(&temp);
+                })
+            }
         }
     }
 }
@@ -90,6 +204,8 @@ impl PendingFile {
 impl Drop for PendingFile {
     fn drop(&mut self) {
         if let Some(temp) = self.temp.take() {
+            let mut list = pending();
+            forget(&mut list, &temp);
             let _ = fs::remove_file(temp);
         }
     }
@@ -145,6 +261,38 @@ mod tests {
         write_file(&target, b"new\n").unwrap();
         assert_eq!(fs::read_to_string(&target).unwrap(), "new\n");
         assert_eq!(entries(&dir), ["out.csv"]);
+    }
+
+    #[test]
+    fn stale_temporaries_of_dead_processes_are_removed() {
+        let dir = scratch("stale");
+        let target = dir.join("out.csv");
+        // A pid above Linux's largest (2^22): no such process.
+        let dead = dir.join(".out.csv.kreisel-4194305-0.tmp");
+        let live = dir.join(format!(".out.csv.kreisel-{}-99.tmp", std::process::id()));
+        let other = dir.join(".other.csv.kreisel-4194305-0.tmp");
+        for f in [&dead, &live, &other] {
+            fs::write(f, "x").unwrap();
+        }
+        write_file(&target, b"new\n").unwrap();
+        let expected = if Path::new("/proc/self").exists() {
+            vec![".other.csv.kreisel-4194305-0.tmp".to_owned()]
+        } else {
+            vec![
+                ".other.csv.kreisel-4194305-0.tmp".to_owned(),
+                ".out.csv.kreisel-4194305-0.tmp".to_owned(),
+            ]
+        };
+        let mut left = entries(&dir);
+        left.retain(|f| f != "out.csv" && !f.contains(&format!("-{}-", std::process::id())));
+        assert_eq!(left, expected);
+        // This process's own file (alive) is kept; nothing is pending.
+        assert!(live.exists());
+        assert!(pending().iter().all(|p| !p.starts_with(&dir)));
+        assert_eq!(temp_pid(".out.csv.kreisel-12-3.tmp", "out.csv"), Some(12));
+        assert_eq!(temp_pid(".out.csv.kreisel-12.tmp", "out.csv"), None);
+        assert_eq!(temp_pid(".out.csv.kreisel-x-3.tmp", "out.csv"), None);
+        assert_eq!(temp_pid(".out.csvx.kreisel-12-3.tmp", "out.csv"), None);
     }
 
     #[test]

@@ -21,18 +21,20 @@ mod progress;
 mod record;
 pub mod scene;
 pub(crate) mod schedule;
+mod stop;
 
 use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
-use kreisel_dynamics::{BodyId, DynamicsError, World};
+use kreisel_dynamics::{BodyId, World};
 
 pub use self::output::Column;
 use self::output::CsvWriter;
 use self::progress::Progress;
 use self::scene::Scene;
+use self::stop::Stop;
 use crate::error::{CliError, Stream};
 
 use self::methods::AUTO;
@@ -154,8 +156,8 @@ Motion:
   under gravity, the normal force and friction at the contact point; the
   run stops with an error at a lift-off (normal force zero), a disk lying
   flat, an indeterminate contact, or a watched [[body.contact]] touching
-  down (its time located within the step; the impact is not modelled),
-  the rows before it valid.
+  down (its time located within the step; the impact is not modelled):
+  an event, see Errors.
   With tolerance, a driven body or heavy top takes the cheapest splitting
   and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
   or pdmv6 every dt where that is predicted to meet it for less work than
@@ -205,13 +207,30 @@ Plot (--plot FILE.png or FILE.svg, besides the CSV):
   (the great circles L1/L3 = +-sqrt(I1 (I3 - I2) / (I3 (I2 - I1))), where
   the energy ellipsoid of 2E = L^2/I2 meets the sphere). Long runs are
   thinned to at most 4000 evenly spaced rows per body (the last row kept).
-  The image is written whole or not at all, after the CSV succeeded.
+  The image is written whole or not at all, with the --output file: when
+  the run ends or stops at an event (then up to the event).
 
 Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
   A body whose state becomes non-finite, or whose energy, |L| or |q| drifts
   by more than a factor of 10 (a step far beyond the method's stability),
   stops the run: SCENE: body `NAME`: method M diverged at t = T s (...),
-  with a hint; exit status 1. The rows written before it are valid.
+  with a hint; exit status 1. So does a row that would hold a number that
+  is not finite (e.g. an energy beyond 1.8e308 J). Such a run writes
+  nothing: an existing --output or --plot file stays as it was (on
+  standard output the rows before it have been written).
+  Events end what the model describes: a lift-off, a disk lying flat, an
+  indeterminate contact, a watched contact touching down. The run stops
+  there with one line naming it, exit status 1; the --output file and the
+  --plot image hold the motion up to the event (its last row the last
+  output time before it).
+  A free body stepped by a method beyond that method's step limit, dt
+  times the fastest angular speed |L|/I1 the body can reach (--explain
+  prints both), gets one warning line on standard error, and the run goes
+  on: its energy error may pass 10 % (or a step fails).
+  Ctrl-C (SIGINT) or SIGTERM removes the unfinished --output and --plot
+  files and exits with status 130 or 143; the temporary files a killed
+  run leaves (.NAME.kreisel-PID-N.tmp) are removed by the next run
+  writing NAME (Linux: when process PID no longer exists).
 
 Examples:
   kreisel simulate spin.toml --output spin.csv
@@ -231,7 +250,7 @@ pub struct SimulateArgs {
     #[arg(value_name = "SCENE", required_unless_present = "list_methods")]
     pub scene: Option<PathBuf>,
 
-    /// Write the CSV to FILE (replaced only when the whole run succeeds) instead of standard output
+    /// Write the CSV to FILE instead of standard output (replaced when the run ends, or stops at an event: then up to it; see Errors)
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 
@@ -304,6 +323,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     if args.explain {
         return explain(&scene);
     }
+    warn_step_limits(&scene, scene_path);
     scene.world.set_threads(threads);
     let (writer, output, pending) =
         crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
@@ -342,55 +362,56 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     // The rows written before a divergence are valid: flushed either way.
     let flushed = csv.flush();
     drop(csv);
-    match simulated {
-        // A failed write leaves no --output file (the pending one is dropped).
-        Err(Stop::Write(source)) => Err(write_error(&output, source)),
-        Err(Stop::Diverged { body, time, error }) => {
-            // The rows before the divergence are valid: the file keeps them.
-            flushed.map_err(|source| write_error(&output, source))?;
-            crate::convert::commit_output(pending, output)?;
-            let failed = Failed::of(&scene, body, time);
-            Err(diverged(scene_path, &failed, &error, &name))
-        }
-        Ok(()) => {
-            flushed.map_err(|source| write_error(&output, source))?;
-            // The image is drawn before the CSV is put in place: a figure
-            // that cannot be written leaves neither.
-            let image = match (plot, recorder) {
-                (Some((path, format, file, pending)), Some(recorder)) => {
-                    let scene_name = scene_path.file_name().unwrap_or(scene_path.as_os_str());
-                    let title = format!(
-                        "kreisel simulate {} (method {name})",
-                        std::path::Path::new(scene_name).display()
-                    );
-                    let (tracks, recorded) = recorder.finish();
-                    let bytes = format
-                        .render(&figure::figure(&title, &tracks, recorded))
-                        .map_err(|e| CliError::Plot {
-                            path: path.clone(),
-                            message: e.to_string(),
-                        })?;
-                    let mut file = file;
-                    file.write_all(&bytes)
-                        .and_then(|()| file.flush())
-                        .map_err(|source| CliError::Plot {
-                            path: path.clone(),
-                            message: format!("cannot write the file: {source}"),
-                        })?;
-                    Some((path, pending))
-                }
-                _ => None,
-            };
-            // Whole or not at all: the --output file appears only now.
-            crate::convert::commit_output(pending, output)?;
-            if let Some((path, pending)) = image {
-                pending.commit().map_err(|source| CliError::Plot {
+    // A run that stops at a physical event keeps its rows and its figure
+    // up to the event; any other failure writes nothing (the pending files
+    // are dropped: an existing --output or --plot file stays as it was).
+    let stopped = match simulated {
+        Ok(()) => None,
+        Err(stop) if stop.is_event() => Some(stop),
+        Err(stop) => return Err(stop.into_error(&scene, scene_path, &name, &output)),
+    };
+    flushed.map_err(|source| write_error(&output, source))?;
+    // The image is drawn before the CSV is put in place: a figure that
+    // cannot be written leaves neither.
+    let image = match (plot, recorder) {
+        (Some((path, format, file, pending)), Some(recorder)) => {
+            let scene_name = scene_path.file_name().unwrap_or(scene_path.as_os_str());
+            let mut title = format!(
+                "kreisel simulate {} (method {name})",
+                std::path::Path::new(scene_name).display()
+            );
+            if stopped.is_some() {
+                title.push_str(", stopped at an event");
+            }
+            let (tracks, recorded) = recorder.finish();
+            let bytes = format
+                .render(&figure::figure(&title, &tracks, recorded))
+                .map_err(|e| CliError::Plot {
+                    path: path.clone(),
+                    message: e.to_string(),
+                })?;
+            let mut file = file;
+            file.write_all(&bytes)
+                .and_then(|()| file.flush())
+                .map_err(|source| CliError::Plot {
                     path: path.clone(),
                     message: format!("cannot write the file: {source}"),
                 })?;
-            }
-            Ok(())
+            Some((path, pending))
         }
+        _ => None,
+    };
+    // Whole or not at all: the --output file appears only now.
+    crate::convert::commit_output(pending, output.clone())?;
+    if let Some((path, pending)) = image {
+        pending.commit().map_err(|source| CliError::Plot {
+            path: path.clone(),
+            message: format!("cannot write the file: {source}"),
+        })?;
+    }
+    match stopped {
+        None => Ok(()),
+        Some(stop) => Err(stop.into_error(&scene, scene_path, &name, &output)),
     }
 }
 
@@ -446,14 +467,7 @@ pub fn run_rows(
         },
         &mut progress,
     );
-    match simulated {
-        Ok(()) => Ok(()),
-        Err(Stop::Write(source)) => Err(write_error(&Stream::Standard, source)),
-        Err(Stop::Diverged { body, time, error }) => {
-            let failed = Failed::of(scene, body, time);
-            Err(diverged(path, &failed, &error, method))
-        }
-    }
+    simulated.map_err(|stop| stop.into_error(scene, path, method, &Stream::Standard))
 }
 
 /// Writes each body's plan, `NAME: plan`, to standard output.
@@ -471,139 +485,35 @@ fn explain(scene: &Scene) -> Result<(), CliError> {
 fn write_plans<W: Write + ?Sized>(scene: &Scene, out: &mut W) -> io::Result<()> {
     for (name, id) in &scene.bodies {
         if let Some(plan) = scene.world.plan(*id) {
-            match scene.world.choice(*id) {
-                Some(choice) => writeln!(out, "{name}: {plan}; {choice}")?,
-                None => writeln!(out, "{name}: {plan}")?,
+            write!(out, "{name}: {plan}")?;
+            if let Some(choice) = scene.world.choice(*id) {
+                write!(out, "; {choice}")?;
             }
+            if let Some(limit) = methods::StepLimit::of(&scene.world, *id) {
+                write!(out, "; {}", limit.explain())?;
+            }
+            writeln!(out)?;
         }
     }
     Ok(())
 }
 
-/// Why a run stopped early.
-enum Stop {
-    /// Writing a row failed.
-    Write(io::Error),
-    /// Body number `body` (0-based) diverged or its method refused a step.
-    Diverged {
-        body: usize,
-        /// The end of the step that failed, s.
-        time: f64,
-        error: kreisel_dynamics::DynamicsError,
-    },
-}
-
-impl Stop {
-    /// The world's error: which body failed, when, and why.
-    fn from_world(error: DynamicsError) -> Self {
-        match error {
-            DynamicsError::BodyFailed { body, time, source } => Stop::Diverged {
-                body,
-                time,
-                error: *source,
-            },
-            other => Stop::Diverged {
-                body: 0,
-                time: f64::NAN,
-                error: other,
-            },
+/// One warning line on standard error per body whose stepping method runs
+/// beyond its step limit (`dt ω_max`, [`methods::StepLimit`]): its rows
+/// are then no longer the body's motion, though the run goes on.
+fn warn_step_limits(scene: &Scene, path: &std::path::Path) {
+    let mut err = io::stderr().lock();
+    for (name, id) in &scene.bodies {
+        if let Some(limit) = methods::StepLimit::of(&scene.world, *id)
+            && limit.exceeded()
+        {
+            let _ = writeln!(
+                err,
+                "kreisel: warning: {}: body `{name}`: {}",
+                path.display(),
+                limit.warning(scene.world.dt())
+            );
         }
-    }
-}
-
-impl From<io::Error> for Stop {
-    fn from(source: io::Error) -> Self {
-        Stop::Write(source)
-    }
-}
-
-/// The body whose step failed: its name, the lines of its contact
-/// tables, and the end of the step that failed, s.
-struct Failed<'a> {
-    body: &'a str,
-    contact_lines: &'a [u64],
-    time: f64,
-}
-
-impl<'a> Failed<'a> {
-    /// Body number `body` (0-based, scene order) of `scene`, failed at `time`.
-    fn of(scene: &'a Scene, body: usize, time: f64) -> Self {
-        Self {
-            body: scene
-                .bodies
-                .get(body)
-                .map_or("?", |(name, _)| name.as_str()),
-            contact_lines: scene.contact_lines.get(body).map_or(&[], Vec::as_slice),
-            time,
-        }
-    }
-}
-
-/// The one line for a body whose run diverged: the scene, the body, the
-/// time, the method, and what to try instead; for a watched contact that
-/// touches down, its table's line, its time and approach speed.
-fn diverged(
-    scene_path: &std::path::Path,
-    failed: &Failed<'_>,
-    error: &kreisel_dynamics::DynamicsError,
-    method: &str,
-) -> CliError {
-    use kreisel_dynamics::DynamicsError;
-    let Failed {
-        body,
-        contact_lines,
-        time,
-    } = *failed;
-    if let DynamicsError::ContactTouchdown {
-        time,
-        contact,
-        approach_speed,
-    } = error
-    {
-        // The watched shapes are the tables after the first.
-        return CliError::Scene {
-            path: scene_path.to_owned(),
-            line: contact_lines.get(contact + 1).copied(),
-            message: format!(
-                "body `{body}`: [[body.contact]] #{} touches down at t = {} s (approach speed \
-                 {} m/s): the impact is not modelled; the run stops there",
-                contact + 2,
-                crate::numbers::Shortest(*time),
-                crate::numbers::Shortest(*approach_speed)
-            ),
-        };
-    }
-    let hint = if method == AUTO {
-        "use a smaller dt".to_owned()
-    } else {
-        format!("use a smaller dt or the default method ({AUTO})")
-    };
-    let message = match error {
-        DynamicsError::Diverged {
-            method: used,
-            time,
-            reason,
-        } => format!(
-            "body `{body}`: method {used} diverged at t = {} s ({reason}); {hint}",
-            crate::numbers::Shortest(*time)
-        ),
-        // Its message says when, what drifted and what to change.
-        DynamicsError::GroundCheckFailed { .. } => format!("body `{body}`: {error}"),
-        DynamicsError::ContactLost { .. }
-        | DynamicsError::DiskFlat { .. }
-        | DynamicsError::ContactIndeterminate { .. } => format!(
-            "body `{body}`: {error}: the run stops there (a body on the ground keeps one \
-             contact with the plane; what follows is not modelled)"
-        ),
-        other => format!(
-            "body `{body}`: the step to t = {} s failed: {other}; {hint}",
-            crate::numbers::Shortest(time)
-        ),
-    };
-    CliError::Scene {
-        path: scene_path.to_owned(),
-        line: None,
-        message,
     }
 }
 
@@ -677,6 +587,13 @@ fn simulate(
 ) -> Result<(), Stop> {
     let schedule = scene.schedule;
     let (world, bodies) = (&mut scene.world, &scene.bodies);
+    // The last guard: no row holds a number that is not finite.
+    let mut rows = |world: &World, bodies: &Names| -> Result<(), Stop> {
+        if let Some((body, time, column)) = output::first_non_finite(world, bodies) {
+            return Err(Stop::NonFinite { body, time, column });
+        }
+        Ok(rows(world, bodies)?)
+    };
     rows(world, bodies)?;
     let steps = schedule.steps();
     // Without a bar, the world goes from row to row in one call.

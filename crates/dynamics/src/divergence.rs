@@ -23,6 +23,12 @@ use crate::{DynamicsError, HeavyTop, PrincipalState};
 /// energy is compared against its own scale, the initial kinetic energy
 /// `T₀` plus the largest potential `|W||c|`, since `E` itself may be zero.
 /// Nothing is corrected: the check only reports.
+///
+/// A body under applied inputs has no conserved energy or `|L|` to hold
+/// to this band (both change by the work and impulse done): its steps are
+/// checked for a finite state and finite reported quantities (ω, `L_world`,
+/// the mechanical energy) and `|q|` in the band
+/// ([`crate::ForcedPropagator`] says why that suffices).
 pub const DIVERGENCE_FACTOR: f64 = 10.0;
 
 /// The checks of one run from its initial state (see [`DIVERGENCE_FACTOR`]).

@@ -309,6 +309,12 @@ pub enum DynamicsError {
 pub enum Divergence {
     /// The attitude or the angular momentum is NaN or infinite.
     NonFinite,
+    /// The state is finite but a quantity computed from it overflowed
+    /// (e.g. the energy `½ L·I⁻¹L` of a finite but huge `L`).
+    Overflow {
+        /// Which quantity (`"energy"`, `"angular velocity"`, ...).
+        quantity: &'static str,
+    },
     /// A conserved quantity left its band: its value now and at the start.
     Drift {
         /// Which quantity (`"energy"`, `"|L|"`, `"|q|"`).
@@ -324,6 +330,7 @@ impl std::fmt::Display for Divergence {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Divergence::NonFinite => write!(f, "the state is no longer finite"),
+            Divergence::Overflow { quantity } => write!(f, "its {quantity} is no longer finite"),
             Divergence::Drift {
                 quantity,
                 initial,

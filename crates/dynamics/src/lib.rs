@@ -105,7 +105,7 @@ pub use lagrange_top::{
     EulerAnglesAndRates, HeavyTopClosedForm, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion,
     SteadyPrecession, TopMotionKind,
 };
-pub use method::{FreeBodyMethod, HeavyTopMethod};
+pub use method::{FreeBodyMethod, HeavyTopMethod, STEP_LIMIT_ENERGY_ERROR};
 pub use moser_veselov::MoserVeselov;
 pub use moser_veselov_preprocessed::PreprocessedMoserVeselov;
 pub use rigid_body::{MIN_MOMENT_RATIO, RigidBody};

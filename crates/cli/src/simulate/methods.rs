@@ -8,7 +8,9 @@
 
 use std::io::{self, Write};
 
-use kreisel_dynamics::{FreeBodyIntegrator, FreeBodyMethod, HeavyTopIntegrator, HeavyTopMethod};
+use kreisel_dynamics::{
+    BodyId, FreeBodyIntegrator, FreeBodyMethod, HeavyTopIntegrator, HeavyTopMethod, Plan, World,
+};
 
 /// The name that stands for the recommended method (the default).
 pub const AUTO: &str = FreeBodyMethod::Auto.name();
@@ -42,6 +44,67 @@ pub fn heavy_top_integrator(name: &str) -> Result<Box<dyn HeavyTopIntegrator>, S
                 HeavyTopMethod::ALL.map(HeavyTopMethod::name).join(", ")
             )
         })
+}
+
+/// A free body stepped by a method with a step limit
+/// ([`FreeBodyMethod::step_limit`]): the method, `dt ω_max` and the limit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepLimit {
+    /// The method stepping the body.
+    pub method: FreeBodyMethod,
+    /// `dt ω_max` of the body ([`FreeBodyMethod::step_ratio`]).
+    pub ratio: f64,
+    /// The method's limit of it.
+    pub limit: f64,
+}
+
+impl StepLimit {
+    /// Body `id` of `world` when a stepping method with a limit moves it
+    /// torque-free (`None` otherwise: exact plans, driven bodies, heavy
+    /// tops, bodies on the ground).
+    pub fn of(world: &World, id: BodyId) -> Option<Self> {
+        let Some(Plan::Stepping(method)) = world.plan(id) else {
+            return None;
+        };
+        let limit = method.step_limit()?;
+        let moments = world.body(id)?.mass_properties().principal().moments;
+        let l = world.state(id)?.l_world;
+        Some(Self {
+            method: *method,
+            ratio: FreeBodyMethod::step_ratio(moments, l, world.dt()),
+            limit,
+        })
+    }
+
+    /// Whether `dt ω_max` is beyond the limit (or not a number).
+    pub fn exceeded(&self) -> bool {
+        self.ratio.is_nan() || self.ratio > self.limit
+    }
+
+    /// What `--explain` adds to the plan: `dt·ω_max = X (METHOD's step
+    /// limit L)`.
+    pub fn explain(&self) -> String {
+        format!(
+            "dt·ω_max = {:.3} ({}'s step limit {}{})",
+            self.ratio,
+            self.method,
+            self.limit,
+            if self.exceeded() { ": beyond it" } else { "" }
+        )
+    }
+
+    /// The warning for a body beyond the limit, after `body `NAME`: `.
+    pub fn warning(&self, dt: f64) -> String {
+        format!(
+            "dt·ω_max = {:.3} is beyond {}'s step limit {} (energy errors above {} % or \
+             failed steps); use dt <= {:.2e} s or the default method ({AUTO})",
+            self.ratio,
+            self.method,
+            self.limit,
+            100.0 * kreisel_dynamics::STEP_LIMIT_ENERGY_ERROR,
+            dt * self.limit / self.ratio
+        )
+    }
 }
 
 /// The order column: the order, or `exact` for no truncation error.

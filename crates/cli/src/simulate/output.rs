@@ -7,7 +7,7 @@
 use std::io::{self, Write};
 
 use glam::{DQuat, DVec3};
-use kreisel_dynamics::{BodyId, World};
+use kreisel_dynamics::{BodyId, BodyState, World};
 
 use crate::numbers::{Shortest, write_numbers};
 
@@ -145,6 +145,41 @@ impl Row {
     }
 }
 
+impl From<&BodyState> for Row {
+    fn from(s: &BodyState) -> Self {
+        Row {
+            world_from_body: s.world_from_body,
+            omega_body: s.omega_body,
+            energy: s.energy,
+            l_world: s.l_world,
+            position: s.position,
+            velocity: s.velocity,
+        }
+    }
+}
+
+/// The first body of `bodies` (index in scene order, its time and the
+/// column) whose row at the world's current time would hold a number that
+/// is not finite, in any column (whichever `--columns` writes).
+pub fn first_non_finite(
+    world: &World,
+    bodies: &[(String, BodyId)],
+) -> Option<(usize, f64, &'static str)> {
+    bodies.iter().enumerate().find_map(|(index, (_, id))| {
+        let s = world.state(*id)?;
+        let row = Row::from(&s);
+        let bad = Column::ALL
+            .into_iter()
+            .find(|c| row.number(*c).is_some_and(|x| !x.is_finite()))
+            .map(Column::name);
+        match (s.time.is_finite(), bad) {
+            (false, _) => Some((index, s.time, "t")),
+            (true, Some(column)) => Some((index, s.time, column)),
+            (true, None) => None,
+        }
+    })
+}
+
 /// Writes the header and the rows to `out` (which should be buffered).
 #[derive(Debug)]
 pub struct CsvWriter<W: Write> {
@@ -211,15 +246,7 @@ impl<W: Write> CsvWriter<W> {
         for (name, id) in bodies {
             // Every id comes from this world.
             let Some(s) = world.state(*id) else { continue };
-            let row = Row {
-                world_from_body: s.world_from_body,
-                omega_body: s.omega_body,
-                energy: s.energy,
-                l_world: s.l_world,
-                position: s.position,
-                velocity: s.velocity,
-            };
-            self.row(s.time, name, &row)?;
+            self.row(s.time, name, &Row::from(&s))?;
         }
         Ok(())
     }

@@ -13,6 +13,7 @@ mod ground_inputs;
 mod ground_touchdown;
 mod heavy_top;
 mod inputs;
+mod outcomes;
 mod output;
 mod physics;
 mod plot;

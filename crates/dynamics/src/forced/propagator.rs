@@ -8,10 +8,18 @@ use crate::{DIVERGENCE_FACTOR, DynamicsError, PrincipalState, Propagator};
 /// One forced body advanced step after step from a time and a state.
 ///
 /// With applied inputs the energy is not conserved, so the checks are the
-/// ones that hold whatever is applied: every number finite and `|q|` within
-/// a factor [`DIVERGENCE_FACTOR`] of its start (every stage is a rotation,
-/// so `|q|` moves by rounding only). The mechanical energy minus the work
-/// done ([`ForcedBody::power`]) is a diagnostic of accuracy, not a check.
+/// ones that hold whatever is applied: every number finite — the state and
+/// what a row reports from it, ω, `L_world` and the mechanical energy —
+/// and `|q|` within a factor [`DIVERGENCE_FACTOR`] of its start (every
+/// stage is a rotation, so `|q|` moves by rounding only).
+///
+/// No energy or `|L|` drift check as a free body has: with inputs both
+/// change by the work and the impulse done, and every stage of the
+/// splitting is an exact flow (the free flow, the kicks, damping's exact
+/// decay), so no step amplifies an error the way an unstable method does —
+/// a large error is inaccuracy of the composition, not instability. The
+/// mechanical energy minus the work done ([`ForcedBody::power`]) is a
+/// diagnostic of that accuracy (`tests/forced_reference.rs`), not a check.
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
@@ -111,9 +119,27 @@ impl<'a> ForcedPropagator<'a> {
     }
 }
 
+/// The first quantity a row reports that is not finite although `state`
+/// is: `ω = I⁻¹L`, `L_world` or the mechanical energy (`½ L·I⁻¹L` or
+/// `½ m|v|²` overflow long before `L` or `v` do).
+fn overflowed(body: &ForcedBody, state: &ForcedState) -> Option<&'static str> {
+    let rotation = &state.rotation;
+    if !(rotation.l_principal / body.body().principal_moments()).is_finite() {
+        Some("angular velocity")
+    } else if !(rotation.world_from_principal.normalize() * rotation.l_principal).is_finite() {
+        Some("angular momentum")
+    } else if !body.mechanical_energy(state).is_finite() {
+        Some("energy")
+    } else {
+        None
+    }
+}
+
 /// One step of `method` from `(t, state)` by `h`, checked: every number
-/// finite and `|q|` within a factor [`DIVERGENCE_FACTOR`] of `q_norm` (the
-/// checks of [`ForcedPropagator::try_advance`], shared with the world).
+/// finite, and every quantity a row reports from it (ω, `L_world`, the
+/// energy), and `|q|` within a factor [`DIVERGENCE_FACTOR`] of `q_norm`
+/// (the checks of [`ForcedPropagator::try_advance`], shared with the
+/// world).
 ///
 /// # Errors
 /// [`DynamicsError::Diverged`] (at `t + h`) for a state that fails them.
@@ -134,6 +160,9 @@ pub(crate) fn checked_step(
     };
     if !next.is_finite() {
         return Err(fail(Divergence::NonFinite));
+    }
+    if let Some(quantity) = overflowed(body, &next) {
+        return Err(fail(Divergence::Overflow { quantity }));
     }
     let norm = next.rotation.world_from_principal.length();
     if !(norm <= q_norm * DIVERGENCE_FACTOR && norm >= q_norm / DIVERGENCE_FACTOR) {

@@ -11,9 +11,11 @@
 
 mod free_body;
 mod heavy_top;
+mod step_limit;
 
 pub use self::free_body::FreeBodyMethod;
 pub use self::heavy_top::HeavyTopMethod;
+pub use self::step_limit::STEP_LIMIT_ENERGY_ERROR;
 
 use crate::DynamicsError;
 

@@ -1,0 +1,205 @@
+//! Why `kreisel simulate` stopped before the end, and the one line it
+//! prints: a failed write, a body that diverged or whose row would not be
+//! finite, or a physical event that ends what the model describes.
+
+use std::io;
+use std::path::Path;
+
+use kreisel_dynamics::DynamicsError;
+
+use super::methods::AUTO;
+use super::scene::Scene;
+use crate::error::{CliError, Stream};
+use crate::numbers::Shortest;
+
+/// Why a run stopped early.
+pub(super) enum Stop {
+    /// Writing a row failed.
+    Write(io::Error),
+    /// A row of body number `body` (0-based) at `time` would hold a
+    /// number that is not finite in `column` (the last guard before a
+    /// row is written; the library's checks should have stopped it).
+    NonFinite {
+        body: usize,
+        time: f64,
+        column: &'static str,
+    },
+    /// Body number `body` (0-based) diverged or its method refused a step.
+    Diverged {
+        body: usize,
+        /// The end of the step that failed, s.
+        time: f64,
+        error: kreisel_dynamics::DynamicsError,
+    },
+}
+
+impl Stop {
+    /// Whether the run stopped at a physical event that ends what the
+    /// model describes (a watched contact touching down, lift-off, a disk
+    /// lying flat, an indeterminate contact): the rows before it are the
+    /// motion up to the event. A divergence, a refused step or a number
+    /// that is not finite is no event: the run failed.
+    pub(super) fn is_event(&self) -> bool {
+        matches!(
+            self,
+            Stop::Diverged {
+                error: DynamicsError::ContactTouchdown { .. }
+                    | DynamicsError::ContactLost { .. }
+                    | DynamicsError::DiskFlat { .. }
+                    | DynamicsError::ContactIndeterminate { .. },
+                ..
+            }
+        )
+    }
+
+    /// The one-line error of a run of `scene` (at `path`, moved by
+    /// `method`) that stopped, writing to `output`.
+    pub(super) fn into_error(
+        self,
+        scene: &Scene,
+        path: &Path,
+        method: &str,
+        output: &Stream,
+    ) -> CliError {
+        match self {
+            Stop::Write(source) => CliError::Write {
+                output: output.clone(),
+                source,
+            },
+            Stop::Diverged { body, time, error } => {
+                diverged(path, &Failed::of(scene, body, time), &error, method)
+            }
+            Stop::NonFinite { body, time, column } => CliError::Scene {
+                path: path.to_owned(),
+                line: None,
+                message: format!(
+                    "body `{}`: its {column} is no longer finite at t = {} s; \
+                     no row holds it",
+                    Failed::of(scene, body, time).body,
+                    Shortest(time)
+                ),
+            },
+        }
+    }
+
+    /// The world's error: which body failed, when, and why.
+    pub(super) fn from_world(error: DynamicsError) -> Self {
+        match error {
+            DynamicsError::BodyFailed { body, time, source } => Stop::Diverged {
+                body,
+                time,
+                error: *source,
+            },
+            other => Stop::Diverged {
+                body: 0,
+                time: f64::NAN,
+                error: other,
+            },
+        }
+    }
+}
+
+impl From<io::Error> for Stop {
+    fn from(source: io::Error) -> Self {
+        Stop::Write(source)
+    }
+}
+
+/// The body whose step failed: its name, the lines of its contact
+/// tables, and the end of the step that failed, s.
+struct Failed<'a> {
+    body: &'a str,
+    contact_lines: &'a [u64],
+    time: f64,
+}
+
+impl<'a> Failed<'a> {
+    /// Body number `body` (0-based, scene order) of `scene`, failed at `time`.
+    fn of(scene: &'a Scene, body: usize, time: f64) -> Self {
+        Self {
+            body: scene
+                .bodies
+                .get(body)
+                .map_or("?", |(name, _)| name.as_str()),
+            contact_lines: scene.contact_lines.get(body).map_or(&[], Vec::as_slice),
+            time,
+        }
+    }
+}
+
+/// The one line for a body whose run diverged: the scene, the body, the
+/// time, the method, and what to try instead; for a watched contact that
+/// touches down, its table's line, its time and approach speed.
+fn diverged(
+    scene_path: &std::path::Path,
+    failed: &Failed<'_>,
+    error: &kreisel_dynamics::DynamicsError,
+    method: &str,
+) -> CliError {
+    let Failed {
+        body,
+        contact_lines,
+        time,
+    } = *failed;
+    if let DynamicsError::ContactTouchdown {
+        time,
+        contact,
+        approach_speed,
+    } = error
+    {
+        // The watched shapes are the tables after the first.
+        return CliError::Scene {
+            path: scene_path.to_owned(),
+            line: contact_lines.get(contact + 1).copied(),
+            message: format!(
+                "body `{body}`: [[body.contact]] #{} touches down at t = {} s (approach speed \
+                 {} m/s): the impact is not modelled; the run stops there",
+                contact + 2,
+                Shortest(*time),
+                Shortest(*approach_speed)
+            ),
+        };
+    }
+    let overflow = matches!(
+        error,
+        DynamicsError::Diverged {
+            reason: kreisel_dynamics::Divergence::Overflow { .. },
+            ..
+        }
+    );
+    let hint = if overflow {
+        // No step size helps: the numbers outgrow f64.
+        "the scene's torques, forces or speeds are too large for f64".to_owned()
+    } else if method == AUTO {
+        "use a smaller dt".to_owned()
+    } else {
+        format!("use a smaller dt or the default method ({AUTO})")
+    };
+    let message = match error {
+        DynamicsError::Diverged {
+            method: used,
+            time,
+            reason,
+        } => format!(
+            "body `{body}`: method {used} diverged at t = {} s ({reason}); {hint}",
+            Shortest(*time)
+        ),
+        // Its message says when, what drifted and what to change.
+        DynamicsError::GroundCheckFailed { .. } => format!("body `{body}`: {error}"),
+        DynamicsError::ContactLost { .. }
+        | DynamicsError::DiskFlat { .. }
+        | DynamicsError::ContactIndeterminate { .. } => format!(
+            "body `{body}`: {error}: the run stops there (a body on the ground keeps one \
+             contact with the plane; what follows is not modelled)"
+        ),
+        other => format!(
+            "body `{body}`: the step to t = {} s failed: {other}; {hint}",
+            Shortest(time)
+        ),
+    };
+    CliError::Scene {
+        path: scene_path.to_owned(),
+        line: None,
+        message,
+    }
+}
