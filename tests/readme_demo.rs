@@ -97,7 +97,11 @@ fn readme_demo_commands_print_what_the_readme_shows() {
     let readme = readme();
     let examples = readme_examples(&readme);
     // The main command and the GIF command of the demo's section.
-    assert!(examples.len() >= 2, "{} headless demo commands", examples.len());
+    assert!(
+        examples.len() >= 2,
+        "{} headless demo commands",
+        examples.len()
+    );
     let mut failures = Vec::new();
     for (k, example) in examples.iter().enumerate() {
         let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("readme_demo_{k}"));

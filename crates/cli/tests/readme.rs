@@ -72,31 +72,28 @@ fn examples(readme: &str) -> Vec<Example> {
             .unwrap_or_else(|| panic!("README.md:{}: unclosed code block", i + 1));
         block += 1;
         let body = &lines[start..end];
-        match lang.as_str() {
-            "console" => {
-                for (k, text) in body.iter().enumerate() {
-                    if let Some(command) = text.strip_prefix("$ ") {
-                        found.push(Example {
-                            line: start + k + 1,
-                            command: command.to_owned(),
-                            expected: Vec::new(),
-                            block,
+        if lang == "console" {
+            for (k, text) in body.iter().enumerate() {
+                if let Some(command) = text.strip_prefix("$ ") {
+                    found.push(Example {
+                        line: start + k + 1,
+                        command: command.to_owned(),
+                        expected: Vec::new(),
+                        block,
+                    });
+                } else {
+                    let last = found
+                        .last_mut()
+                        .filter(|e| e.block == block)
+                        .unwrap_or_else(|| {
+                            panic!(
+                                "README.md:{}: console block output before any `$ ` command",
+                                start + k + 1
+                            )
                         });
-                    } else {
-                        let last = found
-                            .last_mut()
-                            .filter(|e| e.block == block)
-                            .unwrap_or_else(|| {
-                                panic!(
-                                    "README.md:{}: console block output before any `$ ` command",
-                                    start + k + 1
-                                )
-                            });
-                        last.expected.push((*text).to_owned());
-                    }
+                    last.expected.push((*text).to_owned());
                 }
             }
-            _ => {}
         }
         i = end + 1;
     }
@@ -377,7 +374,10 @@ fn readme_commands_write_only_files_git_ignores() {
     for command in &commands {
         for file in written_files(&command.text) {
             written += 1;
-            let at = format!("README.md:{}: `{}` writes {file}", command.line, command.text);
+            let at = format!(
+                "README.md:{}: `{}` writes {file}",
+                command.line, command.text
+            );
             if command.remakes_images {
                 // `git ls-files --error-unmatch`: 0 when the file is committed.
                 if !file.starts_with("docs/")
@@ -465,7 +465,10 @@ fn table_of_contents_links_every_section() {
     for line in readme.lines() {
         in_code ^= line.starts_with("```");
         if !in_code && (line.starts_with("## ") || line.starts_with("### ")) {
-            headings.push((line.starts_with("## "), anchor(line.trim_start_matches('#'))));
+            headings.push((
+                line.starts_with("## "),
+                anchor(line.trim_start_matches('#')),
+            ));
         }
     }
     let contents = readme

@@ -649,7 +649,9 @@ mod tests {
         let handle = Body::from_principal_moments(0.2, DVec3::new(1.0, 2.0, 3.0))
             .world_from_body(DQuat::from_rotation_x(0.4))
             .omega_body(DVec3::new(0.01, 1.0, 0.0));
-        let top = handle.clone().pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO);
+        let top = handle
+            .clone()
+            .pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO);
         for builder in [handle, top] {
             let mut worlds = Vec::new();
             for way in 0..3 {
