@@ -7,7 +7,8 @@
 //!   vectors, all 24 Euler conventions, Euler rates ⇄ angular velocity.
 //! - [`inertia`]: mass, centre of mass, inertia tensor and principal axes of
 //!   primitives, point masses, compounds and closed triangle meshes.
-//! - [`dynamics`]: the torque-free rigid body: integrators, invariants.
+//! - [`dynamics`]: free bodies, heavy tops and tops on a table, solved
+//!   exactly or integrated, and the [`dynamics::World`] a game steps.
 //!
 //! ```
 //! use kreisel::kinematics::{EulerSequence, glam::DVec3};

@@ -365,6 +365,7 @@ fn what_a_ground_body_cannot_do_is_a_typed_error() {
     let ball = ContactShape::Sphere(SphereContact::try_new(R, DVec3::ZERO).unwrap());
     let builder = Body::from_principal_moments(M, DVec3::new(I1, I1, I3));
     let e = builder
+        .clone()
         .on_ground(ball, Friction::Viscous { mu: -0.3 })
         .try_build()
         .unwrap_err();
@@ -380,6 +381,7 @@ fn what_a_ground_body_cannot_do_is_a_typed_error() {
     );
     // Rolling with a velocity that slips.
     let rolling = builder
+        .clone()
         .omega_body(DVec3::new(10.0, 0.0, 0.0))
         .on_ground_at(ball, Friction::Rolling, DVec2::ZERO, DVec2::new(0.0, 1.0))
         .try_build()

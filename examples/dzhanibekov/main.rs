@@ -11,7 +11,7 @@
 //! ```text
 //! cargo run --release --example dzhanibekov                 # window (or headless without a display)
 //! cargo run --release --example dzhanibekov -- --headless \
-//!     --gif docs/dzhanibekov.gif --plot docs/dzhanibekov_omega.png
+//!     --gif target/dzhanibekov.gif --plot target/dzhanibekov_omega.png
 //! cargo run --release --example dzhanibekov -- --help       # every option
 //! ```
 //!

@@ -11,7 +11,7 @@
 //! ```text
 //! cargo run --release --example tippe_top                  # window (or headless without a display)
 //! cargo run --release --example tippe_top -- --headless \
-//!     --gif tippe_top.gif --plot docs/tippe_top.png
+//!     --gif target/tippe_top.gif --plot target/tippe_top.png
 //! cargo run --release --example tippe_top -- --help        # every option
 //! ```
 //!

@@ -268,7 +268,7 @@ fn a_diverging_body_stops_the_world_with_its_name_and_time() {
     let mut world = World::try_new(DVec3::ZERO, 0.1).unwrap();
     world.set_free_body_method(FreeBodyMethod::Rk4).unwrap();
     let calm = Body::from_principal_moments(1.0, MOMENTS).omega_body(DVec3::Y);
-    world.add(calm.try_build().unwrap()).unwrap();
+    world.add(calm.clone().try_build().unwrap()).unwrap();
     let wild = calm.omega_body(DVec3::new(100.0, 3.0, 0.0));
     world.add(wild.try_build().unwrap()).unwrap();
     let e = world.advance_to(5.0).unwrap_err();

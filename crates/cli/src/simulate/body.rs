@@ -374,6 +374,7 @@ fn inertia(
     };
     // At rest, identity attitude, free: only the inertia can be refused.
     builder
+        .clone()
         .try_build()
         .map_err(|e| keys.fail_at(span.clone(), &format!("`{key}`: {e}")))?;
     Ok(CheckedInertia { builder, key, span })

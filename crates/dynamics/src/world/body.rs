@@ -138,10 +138,8 @@ enum Inertia {
 
 /// The settings of a [`Body`] before they are checked
 /// ([`BodyBuilder::try_build`]). Defaults: identity attitude, at rest,
-/// free at the origin. It is `Copy` (one builder, several bodies); the
-/// inputs, which are not, are given to the built body
-/// ([`Body::with_inputs`]).
-#[derive(Debug, Clone, Copy)]
+/// free at the origin, nothing applied. Clone it for several bodies alike.
+#[derive(Debug, Clone)]
 #[must_use = "a builder does nothing until try_build"]
 pub struct BodyBuilder {
     inertia: Inertia,
@@ -149,6 +147,7 @@ pub struct BodyBuilder {
     omega_body: DVec3,
     support: Support,
     others: Option<OtherContacts>,
+    inputs: Inputs,
 }
 
 impl Body {
@@ -302,7 +301,7 @@ impl Body {
     /// use kreisel_dynamics::{Body, DynamicsError, Inputs};
     /// let spun = Inputs::default().with_torque_body(DVec3::Z).with_angular_damping(0.1);
     /// let b = Body::from_principal_moments(1.0, DVec3::ONE);
-    /// assert_eq!(b.try_build()?.with_inputs(spun.clone())?.inputs().torque_body, DVec3::Z);
+    /// assert_eq!(b.clone().try_build()?.with_inputs(spun.clone())?.inputs().torque_body, DVec3::Z);
     /// let top = b.pivot(-DVec3::Z, DVec3::ZERO).try_build()?.with_inputs(spun.clone())?;
     /// assert_eq!(top.inputs().torque_body, DVec3::Z);
     /// let bad = Inputs::default().with_angular_damping(-1.0);
@@ -331,6 +330,7 @@ impl BodyBuilder {
                 velocity: DVec3::ZERO,
             },
             others: None,
+            inputs: Inputs::default(),
         }
     }
 
@@ -483,7 +483,7 @@ impl BodyBuilder {
     ///     .on_ground(ball, Friction::None)
     ///     .other_contacts(&[stem]);
     /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1e-4)?;
-    /// assert_eq!(world.add(top.try_build()?)?.index(), 0);
+    /// assert_eq!(world.add(top.clone().try_build()?)?.index(), 0);
     /// // Upside down the stem's ball would be in the table: refused.
     /// let upside_down = top.world_from_body(DQuat::from_rotation_x(3.0)).try_build()?;
     /// assert!(matches!(world.add(upside_down), Err(DynamicsError::OtherContactTouching { contact: 0, .. })));
@@ -502,6 +502,29 @@ impl BodyBuilder {
         Self { others, ..self }
     }
 
+    /// What is applied to the body ([`Inputs`]: torques, forces, damping,
+    /// a law; none by default), checked by [`BodyBuilder::try_build`]. The
+    /// same as giving them to the built body ([`Body::with_inputs`]) or, once
+    /// it is in a world, to [`crate::World::set_inputs`].
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, Inputs, World};
+    /// // A motor's torque of 0.5 N m about world z on a resting brick.
+    /// let motor = Inputs::default().with_torque_world(DVec3::new(0.0, 0.0, 0.5));
+    /// let brick = Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0)).with_inputs(motor);
+    /// let mut world = World::try_new(DVec3::ZERO, 0.01)?;
+    /// let id = world.add(brick.try_build()?)?;
+    /// world.advance_to(2.0)?;
+    /// // L = τ t: 1 kg m²/s about z after 2 s.
+    /// let l = world.state(id).unwrap().l_world;
+    /// assert!((l - DVec3::Z).length() < 1e-13, "{l}");
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn with_inputs(self, inputs: Inputs) -> Self {
+        Self { inputs, ..self }
+    }
+
     /// Checks the settings and builds the body.
     ///
     /// # Errors
@@ -515,14 +538,17 @@ impl BodyBuilder {
     /// ([`BodyBuilder::other_contacts`]) on a body not on the ground;
     /// [`DynamicsError::InvalidContact`] for more than
     /// [`MAX_OTHER_CONTACTS`] of them; for a body on the ground the errors
-    /// of [`Friction::validate`].
+    /// of [`Friction::validate`]; [`DynamicsError::InvalidInput`] for
+    /// inputs ([`BodyBuilder::with_inputs`]) as [`Inputs::validate`].
     ///
     /// ```
     /// use glam::{DQuat, DVec3};
-    /// use kreisel_dynamics::{Body, DynamicsError};
+    /// use kreisel_dynamics::{Body, DynamicsError, Inputs};
     /// let b = Body::from_principal_moments(1.0, DVec3::ONE);
-    /// assert!(matches!(b.world_from_body(DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0)).try_build(), Err(DynamicsError::InvalidState { .. })));
-    /// assert!(matches!(b.free(DVec3::NAN, DVec3::ZERO).try_build(), Err(DynamicsError::InvalidBody { field: "position", .. })));
+    /// assert!(matches!(b.clone().world_from_body(DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0)).try_build(), Err(DynamicsError::InvalidState { .. })));
+    /// assert!(matches!(b.clone().free(DVec3::NAN, DVec3::ZERO).try_build(), Err(DynamicsError::InvalidBody { field: "position", .. })));
+    /// let brake = Inputs::default().with_angular_damping(-1.0);
+    /// assert!(matches!(b.with_inputs(brake).try_build(), Err(DynamicsError::InvalidInput { .. })));
     /// assert!(matches!(Body::from_principal_moments(-1.0, DVec3::ONE).try_build(), Err(DynamicsError::InertiaTensor { .. })));
     /// ```
     pub fn try_build(self) -> Result<Body, DynamicsError> {
@@ -591,6 +617,7 @@ impl BodyBuilder {
             }
         }
         PrincipalState::try_from_omega_body(&rigid, self.world_from_body, self.omega_body)?;
+        self.inputs.validate()?;
         Ok(Body {
             mass_properties,
             rigid,
@@ -598,7 +625,74 @@ impl BodyBuilder {
             omega_body: self.omega_body,
             support: self.support,
             others: self.others,
-            inputs: Inputs::default(),
+            inputs: self.inputs,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::{DQuat, DVec3};
+
+    use crate::{Body, DynamicsError, Inputs, World};
+
+    /// Inputs given to the builder move the body exactly as the same
+    /// inputs given to the world once the body is in it
+    /// ([`World::set_inputs`]) or to the built body ([`Body::with_inputs`]):
+    /// the same plan and the same states, bit for bit, free and on a pivot.
+    #[test]
+    fn builder_inputs_equal_set_inputs_after_adding() -> Result<(), DynamicsError> {
+        let inputs = Inputs::default()
+            .with_torque_world(DVec3::new(0.0, 0.0, 0.3))
+            .with_torque_body(DVec3::new(0.1, 0.0, 0.0))
+            .with_angular_damping(0.05);
+        let handle = Body::from_principal_moments(0.2, DVec3::new(1.0, 2.0, 3.0))
+            .world_from_body(DQuat::from_rotation_x(0.4))
+            .omega_body(DVec3::new(0.01, 1.0, 0.0));
+        let top = handle
+            .clone()
+            .pivot(DVec3::new(0.0, 0.0, -0.1), DVec3::ZERO);
+        for builder in [handle, top] {
+            let mut worlds = Vec::new();
+            for way in 0..3 {
+                let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 0.01)?;
+                let id = match way {
+                    0 => world.add(builder.clone().with_inputs(inputs.clone()).try_build()?)?,
+                    1 => world.add(builder.clone().try_build()?.with_inputs(inputs.clone())?)?,
+                    _ => {
+                        let id = world.add(builder.clone().try_build()?)?;
+                        world.set_inputs(id, inputs.clone())?;
+                        id
+                    }
+                };
+                for _ in 0..90 {
+                    world.step(1.0 / 60.0)?;
+                }
+                worlds.push((world.plan(id).copied(), world.state(id)));
+            }
+            assert!(worlds[0].1.is_some());
+            assert_eq!(worlds[0], worlds[1]);
+            assert_eq!(worlds[0], worlds[2]);
+        }
+        Ok(())
+    }
+
+    /// A torque given to the builder acts: a world-axes torque τ on a body
+    /// at rest gives L = τ t (no damping, no gravity torque on a free body).
+    #[test]
+    fn builder_torque_changes_the_momentum_by_torque_times_time() -> Result<(), DynamicsError> {
+        let torque = DVec3::new(0.2, -0.1, 0.4);
+        let body = Body::from_principal_moments(1.0, DVec3::new(1.0, 2.0, 3.0))
+            .with_inputs(Inputs::default().with_torque_world(torque))
+            .try_build()?;
+        let mut world = World::try_new(DVec3::ZERO, 1.0 / 60.0)?;
+        let id = world.add(body)?;
+        for _ in 0..120 {
+            world.step(1.0 / 60.0)?;
+        }
+        let state = world.state(id).expect("the body");
+        let error = (state.l_world - 2.0 * torque).length();
+        assert!(error < 1e-13, "{error:e}");
+        Ok(())
     }
 }

@@ -178,6 +178,16 @@ impl World {
     /// the methods are `auto` (the exact solution for free bodies, the
     /// sub-stepped order-8 splitting for heavy tops).
     ///
+    /// **`dt` here, `h` in [`World::step`].** `dt` is the world's own step:
+    /// the grid that [`World::advance_steps`] and [`World::advance_to`]
+    /// walk (the steps a heavy top or a driven body takes, the rows of
+    /// `kreisel simulate`), the longest step the contact model of a body on
+    /// the ground takes, and the step a [`crate::Tolerance`] plans for.
+    /// [`World::step`]`(h)` moves every body forward by `h` now, whatever
+    /// `dt` is. A game loop sets `dt` to its frame time and calls
+    /// `step(dt)` each frame: then every step is a whole step of the grid
+    /// and the world's time stays `n · dt` to the last bit.
+    ///
     /// # Errors
     /// [`DynamicsError::InvalidStep`] for a `dt` that is not positive and
     /// finite; [`DynamicsError::InvalidBody`] for a non-finite gravity.

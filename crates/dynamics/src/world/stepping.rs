@@ -22,7 +22,13 @@ impl World {
     /// One step of `h` seconds for every body (a game loop's frame): a
     /// stepping method takes one step of `h`, an exact solution is
     /// evaluated at the new time (accumulated in double-double, exactly as
-    /// [`crate::ExactPropagator`] does), a resting body costs nothing.
+    /// [`crate::ExactPropagator`] does), a resting body costs nothing, a
+    /// body on the ground takes sub-steps of at most `dt`.
+    ///
+    /// `h` is how far to go now; `dt` ([`World::try_new`]) is the world's
+    /// grid. With `h == dt` (a game loop whose frame time is the world's
+    /// `dt`) the step is a whole step of the grid; any other `h` is taken
+    /// as it is and the grid restarts from the new time.
     ///
     /// # Errors
     /// [`DynamicsError::InvalidStep`] for an `h` that is not positive and
