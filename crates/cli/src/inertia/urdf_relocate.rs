@@ -45,14 +45,14 @@ fn normalized(path: &Path) -> PathBuf {
 /// The real location of `path`: its folder with links resolved when it
 /// exists (the file's own name kept, so a linked mesh keeps its name).
 fn real(path: &Path) -> PathBuf {
-    let absolute = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
-    let absolute = normalized(&absolute);
-    match (absolute.parent(), absolute.file_name()) {
-        (Some(dir), Some(name)) => std::fs::canonicalize(dir)
-            .map(|d| d.join(name))
-            .unwrap_or(absolute.clone()),
-        _ => absolute,
+    // The folder as the system resolves it (`..` after a link included);
+    // without one, lexically.
+    if let (Some(dir), Some(name)) = (path.parent(), path.file_name())
+        && let Ok(dir) = std::fs::canonicalize(dir)
+    {
+        return dir.join(name);
     }
+    normalized(&std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf()))
 }
 
 /// The relative path from folder `from` to `to` (both absolute), with `/`.
