@@ -165,6 +165,11 @@ pub struct GroundCheck {
     energy: EnergyCheck,
 }
 
+/// `value ≤ limit`; false where either is NaN, so a NaN fails a check.
+fn within(value: f64, limit: f64) -> bool {
+    value <= limit
+}
+
 impl GroundCheck {
     /// The checks of a run of `top` that starts at `initial`.
     pub fn new(top: &GroundTop, initial: &GroundTopState) -> Self {
@@ -211,22 +216,21 @@ impl GroundCheck {
             })
         };
         let q_norm = state.world_from_body.length();
-        // Negated comparisons: a NaN fails them.
-        if !((q_norm - self.q_norm).abs() <= tol * self.q_norm) {
+        if !within((q_norm - self.q_norm).abs(), tol * self.q_norm) {
             return fail(GroundViolation::AttitudeNorm {
                 initial: self.q_norm,
                 current: q_norm,
             });
         }
         let gap = top.gap(state);
-        if !(gap.abs() <= tol * self.size) {
+        if !within(gap.abs(), tol * self.size) {
             return fail(GroundViolation::ContactOffPlane {
                 gap,
                 size: self.size,
             });
         }
         let height = state.com_world.z;
-        if !(height >= -tol * self.size) {
+        if !within(-height, tol * self.size) {
             return fail(GroundViolation::CentreBelowPlane { height });
         }
         let band = tol * self.energy_scale;
@@ -234,7 +238,7 @@ impl GroundCheck {
             EnergyCheck::None => {}
             EnergyCheck::NoRise { lowest } => {
                 let current = top.energy(state);
-                if !(current - *lowest <= band) {
+                if !within(current - *lowest, band) {
                     return fail(GroundViolation::EnergyRose {
                         lowest: *lowest,
                         current,
@@ -244,7 +248,7 @@ impl GroundCheck {
             }
             EnergyCheck::Conserved => {
                 let current = top.energy(state);
-                if !((current - self.energy0).abs() <= band) {
+                if !within((current - self.energy0).abs(), band) {
                     return fail(GroundViolation::EnergyDrifted {
                         initial: self.energy0,
                         current,
