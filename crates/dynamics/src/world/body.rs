@@ -11,8 +11,9 @@ use crate::{
 /// How a body is held.
 ///
 /// Applied torques and forces are not part of the support: they are the
-/// body's [`Inputs`] ([`Body::with_inputs`]), for every support (on the
-/// ground they enter the contact model, [`crate::GroundTop::try_with_inputs`]).
+/// body's [`Inputs`] ([`BodyBuilder::with_inputs`], [`Body::with_inputs`]),
+/// for every support (on the ground they enter the contact model,
+/// [`crate::GroundTop::try_with_inputs`]).
 ///
 /// ```
 /// use glam::DVec3;
@@ -25,7 +26,8 @@ use crate::{
 pub enum Support {
     /// Nothing holds it: the centre of mass flies ballistically under the
     /// world's gravity and the rotation is torque-free — unless the body
-    /// has [`Inputs`] ([`Body::with_inputs`]), which then push and turn it.
+    /// has [`Inputs`] ([`BodyBuilder::with_inputs`]), which then push and
+    /// turn it.
     ///
     /// ```text
     /// x(t) = x₀ + v₀ t + ½ g t²,   v(t) = v₀ + g t
