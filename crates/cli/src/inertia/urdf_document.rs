@@ -336,7 +336,7 @@ fn child<'a, 'input>(node: Node<'a, 'input>, name: &str) -> Option<Node<'a, 'inp
 
 /// The end of the start tag that begins at `start` (just after its `>`),
 /// skipping `>` inside quoted attribute values.
-fn start_tag_end(text: &str, start: usize) -> usize {
+pub(super) fn start_tag_end(text: &str, start: usize) -> usize {
     let mut quote = None;
     for (i, b) in text.bytes().enumerate().skip(start) {
         match (quote, b) {

@@ -35,7 +35,7 @@ pub fn too_deep(text: &str, max: usize) -> Option<usize> {
             depth = depth.saturating_sub(1);
             skip_to(">")
         } else {
-            let end = tag_end(text, start);
+            let end = super::urdf_document::start_tag_end(text, start);
             if !text[..end].ends_with("/>") {
                 depth += 1;
                 if depth > max {
@@ -46,21 +46,6 @@ pub fn too_deep(text: &str, max: usize) -> Option<usize> {
         };
     }
     None
-}
-
-/// Just after the `>` that ends the tag starting at `start`, skipping
-/// quoted attribute values (the end of the text if there is none).
-fn tag_end(text: &str, start: usize) -> usize {
-    let mut quote = None;
-    for (i, &b) in text.as_bytes().iter().enumerate().skip(start + 1) {
-        match (quote, b) {
-            (None, b'"' | b'\'') => quote = Some(b),
-            (Some(q), _) if q == b => quote = None,
-            (None, b'>') => return i + 1,
-            _ => {}
-        }
-    }
-    text.len()
 }
 
 /// The 1-based line of byte offset `pos`.

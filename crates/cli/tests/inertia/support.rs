@@ -252,3 +252,17 @@ pub fn cube_obj(name: &str, dx: f64, first: usize, inside_out: bool, open: bool)
     }
     text
 }
+
+/// The mass a URDF `text` gives link `name`.
+pub fn mass_of(text: &str, name: &str) -> f64 {
+    let doc = roxmltree::Document::parse(text).expect("XML");
+    let link = doc
+        .descendants()
+        .find(|n| n.has_tag_name("link") && n.attribute("name") == Some(name))
+        .expect("the link");
+    let mass = link
+        .descendants()
+        .find(|n| n.has_tag_name("mass"))
+        .expect("a mass");
+    mass.attribute("value").unwrap().parse().unwrap()
+}

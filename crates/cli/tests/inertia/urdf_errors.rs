@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use super::support::mass_of;
 use super::urdf::{robot_copy, table_row, urdf};
 
 /// The toy robot with `from` replaced by `to` in its URDF, run with
@@ -68,20 +69,6 @@ fn filled_with(name: &str, from: &str, to: &str) -> super::support::Run {
     assert_eq!(text.matches(from).count(), 1, "{from}");
     std::fs::write(&input, text.replacen(from, to, 1)).unwrap();
     urdf(&input, &[])
-}
-
-/// The mass written for link `name`.
-fn mass_of(text: &str, name: &str) -> f64 {
-    let doc = roxmltree::Document::parse(text).expect("XML");
-    let link = doc
-        .descendants()
-        .find(|n| n.has_tag_name("link") && n.attribute("name") == Some(name))
-        .expect("the link");
-    let mass = link
-        .descendants()
-        .find(|n| n.has_tag_name("mass"))
-        .expect("a mass");
-    mass.attribute("value").unwrap().parse().unwrap()
 }
 
 #[test]

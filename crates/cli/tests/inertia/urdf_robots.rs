@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
-use super::support::num;
+use super::support::{mass_of, num};
 use super::urdf::{robot_copy, table_row, urdf};
 
 /// A tetrahedron with one face missing (mm): open, its hull closed.
@@ -144,20 +144,6 @@ fn relative_mesh_paths_load_from_the_output_folder() {
         mesh_names(&std::fs::read_to_string(&beside).unwrap()),
         before
     );
-}
-
-/// The mass written for link `name`.
-fn mass_of(text: &str, name: &str) -> f64 {
-    let doc = roxmltree::Document::parse(text).expect("XML");
-    let link = doc
-        .descendants()
-        .find(|n| n.has_tag_name("link") && n.attribute("name") == Some(name))
-        .expect("the link");
-    let mass = link
-        .descendants()
-        .find(|n| n.has_tag_name("mass"))
-        .expect("a mass");
-    mass.attribute("value").unwrap().parse().unwrap()
 }
 
 #[test]
