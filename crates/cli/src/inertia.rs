@@ -46,24 +46,6 @@ pub use json::FRAME;
 pub use rounding::DIGITS;
 pub use urdf_args::{GeometrySource, PackageDir, UrdfArgs};
 
-/// Reads a robot description or scene file whole as UTF-8 text, refusing
-/// more than [`kreisel_inertia::io::TEXT_FILE_LIMIT`] bytes (an endless
-/// device too); `what` names the input in that error (`a URDF file`).
-///
-/// # Errors
-/// The operating system's errors, [`std::io::ErrorKind::FileTooLarge`], and
-/// [`std::io::ErrorKind::InvalidData`] for text that is not UTF-8.
-pub fn read_text_file(path: &std::path::Path, what: &str) -> std::io::Result<String> {
-    let bytes =
-        kreisel_inertia::io::read_limited(path, kreisel_inertia::io::TEXT_FILE_LIMIT, what)?;
-    String::from_utf8(bytes).map_err(|_| {
-        std::io::Error::new(
-            std::io::ErrorKind::InvalidData,
-            "stream did not contain valid UTF-8",
-        )
-    })
-}
-
 /// What `--weld` chooses.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum WeldChoice {

@@ -30,8 +30,8 @@ use std::path::PathBuf;
 
 use kreisel_dynamics::{BodyId, World};
 
-pub use self::output::Column;
 use self::output::CsvWriter;
+pub use self::output::{Column, States};
 use self::progress::Progress;
 use self::scene::Scene;
 use self::stop::Stop;
@@ -313,12 +313,13 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         Some(plot) => Some(check_plot(plot, scene_path, args.output.as_deref())?),
         None => None,
     };
-    let text = crate::inertia::read_text_file(scene_path, "a scene file").map_err(|source| {
-        CliError::ReadScene {
-            path: scene_path.clone(),
-            source,
-        }
-    })?;
+    let text =
+        kreisel_inertia::io::read_limited_text(scene_path, "a scene file").map_err(|source| {
+            CliError::ReadScene {
+                path: scene_path.clone(),
+                source,
+            }
+        })?;
     let (mut scene, name) = prepare(scene_path, &text, args.method.as_deref())?;
     if args.explain {
         return explain(&scene);
@@ -350,11 +351,11 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         .map_err(|source| write_error(&output, source))?;
     let simulated = simulate(
         &mut scene,
-        &mut |w, b| {
+        &mut |states, bodies| {
             if let Some(recorder) = recorder.as_mut() {
-                recorder.record(w);
+                recorder.record(states);
             }
-            csv.rows(w, b)
+            csv.rows(states, bodies)
         },
         &mut progress,
     );
@@ -445,8 +446,9 @@ pub fn prepare(
 }
 
 /// Moves a [`prepare`]d scene through its schedule as `kreisel simulate`
-/// does, handing `rows` the world at every time the CSV has rows for (the
-/// bodies' names and ids in scene order), instead of writing them.
+/// does, handing `rows` the bodies' states at every time the CSV has rows
+/// for (with the bodies' names and ids in scene order), instead of writing
+/// them.
 ///
 /// # Errors
 /// The one-line error of `kreisel simulate` for a body that diverged
@@ -456,13 +458,13 @@ pub fn run_rows(
     scene: &mut Scene,
     path: &std::path::Path,
     method: &str,
-    rows: &mut dyn FnMut(&World, &Names),
+    rows: &mut dyn FnMut(&States, &Names),
 ) -> Result<(), CliError> {
     let mut progress = Progress::new(scene.schedule.steps(), false);
     let simulated = simulate(
         scene,
-        &mut |w, b| {
-            rows(w, b);
+        &mut |states, bodies| {
+            rows(states, bodies);
             Ok(())
         },
         &mut progress,
@@ -572,7 +574,7 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
     }
 }
 
-/// Moves the world through the schedule, handing `rows` the world at the rows it asks for:
+/// Moves the world through the schedule, handing `rows` the bodies' states at the rows it asks for:
 /// whole steps of `dt` up to each row before the last, then the world is
 /// advanced to `duration`. The world checks every state it reaches; a body
 /// whose state becomes non-finite or whose invariants blow up stops the run
@@ -582,17 +584,20 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
 /// The writer's errors; the first divergence, with the body's index.
 fn simulate(
     scene: &mut Scene,
-    rows: &mut dyn FnMut(&World, &Names) -> io::Result<()>,
+    rows: &mut dyn FnMut(&States, &Names) -> io::Result<()>,
     progress: &mut Progress,
 ) -> Result<(), Stop> {
     let schedule = scene.schedule;
     let (world, bodies) = (&mut scene.world, &scene.bodies);
-    // The last guard: no row holds a number that is not finite.
+    // Each row's states are read once; the last guard: no row holds a
+    // number that is not finite.
+    let mut states = Vec::with_capacity(bodies.len());
     let mut rows = |world: &World, bodies: &Names| -> Result<(), Stop> {
-        if let Some((body, time, column)) = output::first_non_finite(world, bodies) {
+        output::read_states(world, bodies, &mut states);
+        if let Some((body, time, column)) = output::first_non_finite(&states) {
             return Err(Stop::NonFinite { body, time, column });
         }
-        Ok(rows(world, bodies)?)
+        Ok(rows(&states, bodies)?)
     };
     rows(world, bodies)?;
     let steps = schedule.steps();

@@ -14,8 +14,8 @@ use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 
 use kreisel_cli::error::CliError;
-use kreisel_cli::simulate::{Column, prepare, run_rows};
-use kreisel_dynamics::{BodyId, World};
+use kreisel_cli::simulate::{Column, States, prepare, run_rows};
+use kreisel_dynamics::BodyId;
 use numpy::PyArray1;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -48,10 +48,10 @@ impl Columns {
         }
     }
 
-    /// One row per body of `world` at its current time, in scene order.
-    fn push(&mut self, world: &World, bodies: &[(String, BodyId)]) {
-        for (name, id) in bodies {
-            let Some(s) = world.state(*id) else { continue };
+    /// One row per body state of one time, in scene order (names from `bodies`).
+    fn push(&mut self, states: &States, bodies: &[(String, BodyId)]) {
+        for (index, s) in states {
+            let name = &bodies[*index].0;
             let q = s.world_from_body;
             let row = [
                 s.time,
@@ -114,9 +114,11 @@ fn run(
 ) -> Result<Columns, CliError> {
     let text = match text {
         Some(text) => text,
-        None => std::fs::read_to_string(path).map_err(|source| CliError::ReadScene {
-            path: path.to_owned(),
-            source,
+        None => kreisel_inertia::io::read_limited_text(path, "a scene file").map_err(|source| {
+            CliError::ReadScene {
+                path: path.to_owned(),
+                source,
+            }
         })?,
     };
     let (mut scene, name) = prepare(path, &text, method)?;
@@ -124,8 +126,8 @@ fn run(
         .unwrap_or_else(|| std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN));
     scene.world.set_threads(threads);
     let mut columns = Columns::new();
-    run_rows(&mut scene, path, &name, &mut |world, bodies| {
-        columns.push(world, bodies);
+    run_rows(&mut scene, path, &name, &mut |states, bodies| {
+        columns.push(states, bodies);
     })?;
     Ok(columns)
 }

@@ -5,6 +5,7 @@ the CLI's pipeline; every error path."""
 import csv
 import io
 import math
+import os
 
 import numpy as np
 import pytest
@@ -448,3 +449,15 @@ def test_the_world_moves_on_another_thread():
     assert there.time == here.time
     for key, value in here.state(0).items():
         assert np.array_equal(there.state(0)[key], value), key
+
+
+@pytest.mark.skipif(not hasattr(os, "symlink") or not os.path.exists("/dev/zero"), reason="no /dev/zero")
+def test_an_endless_scene_file_is_refused_at_its_size_limit(tmp_path):
+    # Regression: kreisel.simulate read the scene with no limit, so a link
+    # to /dev/zero took memory until the process was killed.
+    link = tmp_path / "zero.toml"
+    os.symlink("/dev/zero", link)
+    with pytest.raises(kreisel.KreiselError) as e:
+        kreisel.simulate(link)
+    assert "larger than 64 MiB" in str(e.value)
+    assert str(e.value) == cli.error_line("simulate", link)

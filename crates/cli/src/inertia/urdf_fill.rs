@@ -98,9 +98,11 @@ fn json_report(args: &InertiaArgs) -> Result<bool, CliError> {
 /// and [`CliError::NotCompared`].
 pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
     let json = json_report(args)?;
-    let text = super::read_text_file(urdf, "a URDF file").map_err(|source| CliError::ReadUrdf {
-        path: urdf.to_path_buf(),
-        source,
+    let text = kreisel_inertia::io::read_limited_text(urdf, "a URDF file").map_err(|source| {
+        CliError::ReadUrdf {
+            path: urdf.to_path_buf(),
+            source,
+        }
     })?;
     let doc = UrdfDocument::parse(urdf, text)?;
     let paths = MeshPaths::new(urdf, &args.robot.package);

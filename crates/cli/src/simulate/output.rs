@@ -158,23 +158,41 @@ impl From<&BodyState> for Row {
     }
 }
 
-/// The first body of `bodies` (index in scene order, its time and the
-/// column) whose row at the world's current time would hold a number that
-/// is not finite, in any column (whichever `--columns` writes).
-pub fn first_non_finite(
+/// The bodies' states at one time: each body's index in scene order (in
+/// the scene's [`super::Names`]) and its state.
+pub type States = [(usize, BodyState)];
+
+/// The state of each of `bodies` at the world's current time, in scene
+/// order, into `states` (emptied first): read once per row, then checked
+/// and written.
+pub fn read_states(
     world: &World,
     bodies: &[(String, BodyId)],
-) -> Option<(usize, f64, &'static str)> {
-    bodies.iter().enumerate().find_map(|(index, (_, id))| {
-        let s = world.state(*id)?;
-        let row = Row::from(&s);
+    states: &mut Vec<(usize, BodyState)>,
+) {
+    states.clear();
+    // Every id comes from this world, so every body has a state.
+    states.extend(
+        bodies
+            .iter()
+            .enumerate()
+            .filter_map(|(index, (_, id))| Some((index, world.state(*id)?))),
+    );
+}
+
+/// The first of `states` (index in scene order, its time and the column)
+/// whose row would hold a number that is not finite, in any column
+/// (whichever `--columns` writes).
+pub fn first_non_finite(states: &States) -> Option<(usize, f64, &'static str)> {
+    states.iter().find_map(|(index, s)| {
+        let row = Row::from(s);
         let bad = Column::ALL
             .into_iter()
             .find(|c| row.number(*c).is_some_and(|x| !x.is_finite()))
             .map(Column::name);
         match (s.time.is_finite(), bad) {
-            (false, _) => Some((index, s.time, "t")),
-            (true, Some(column)) => Some((index, s.time, column)),
+            (false, _) => Some((*index, s.time, "t")),
+            (true, Some(column)) => Some((*index, s.time, column)),
             (true, None) => None,
         }
     })
@@ -237,16 +255,14 @@ impl<W: Write> CsvWriter<W> {
         )
     }
 
-    /// One row per body of `world` at its current time, `bodies` (names
-    /// and ids) in scene order.
+    /// One row per state of `states` ([`read_states`]), named from
+    /// `bodies` (names and ids in scene order).
     ///
     /// # Errors
     /// The writer's errors.
-    pub fn rows(&mut self, world: &World, bodies: &[(String, BodyId)]) -> io::Result<()> {
-        for (name, id) in bodies {
-            // Every id comes from this world.
-            let Some(s) = world.state(*id) else { continue };
-            self.row(s.time, name, &Row::from(&s))?;
+    pub fn rows(&mut self, states: &States, bodies: &[(String, BodyId)]) -> io::Result<()> {
+        for (index, s) in states {
+            self.row(s.time, &bodies[*index].0, &Row::from(s))?;
         }
         Ok(())
     }

@@ -52,7 +52,8 @@ pub struct Track {
 /// Collects the rows of a run for the figure.
 #[derive(Debug)]
 pub struct Recorder {
-    ids: Vec<BodyId>,
+    /// The recorded bodies are the scene's first `recorded`.
+    recorded: usize,
     /// The tracks, one per recorded body.
     pub tracks: Vec<Track>,
     /// The number of bodies in the scene.
@@ -85,7 +86,7 @@ impl Recorder {
             })
             .collect();
         Self {
-            ids: chosen.iter().map(|(_, id)| *id).collect(),
+            recorded: chosen.len(),
             tracks,
             scene_bodies: bodies.len(),
             rows: 0,
@@ -94,13 +95,13 @@ impl Recorder {
         }
     }
 
-    /// Notes the rows of `world` at its current time.
-    pub fn record(&mut self, world: &World) {
-        let samples: Vec<Sample> = self
-            .ids
+    /// Notes the rows of one time (the states [`super::output::read_states`]
+    /// read).
+    pub fn record(&mut self, states: &super::output::States) {
+        let samples: Vec<Sample> = states
             .iter()
-            .filter_map(|id| world.state(*id))
-            .map(|s| Sample {
+            .filter(|(index, _)| *index < self.recorded)
+            .map(|(_, s)| Sample {
                 t: s.time,
                 omega_body: s.omega_body,
                 energy: s.energy,
@@ -160,8 +161,6 @@ pub struct Recorded {
     pub stride: u64,
 }
 
-impl Recorder {}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -178,8 +177,10 @@ mod tests {
         let bodies = vec![("b".to_owned(), id)];
         let mut recorder = Recorder::new(&world, &bodies);
         let rows = 3 * MAX_POINTS + 7;
+        let mut states = Vec::new();
         for _ in 0..rows {
-            recorder.record(&world);
+            super::super::output::read_states(&world, &bodies, &mut states);
+            recorder.record(&states);
             world.advance_steps(1).unwrap();
         }
         let (tracks, recorded) = recorder.finish();

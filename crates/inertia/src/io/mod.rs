@@ -50,7 +50,7 @@ use glam::DVec3;
 use crate::{InertiaError, TriMesh, Weld};
 
 pub use read_limit::{
-    MESH_FILE_LIMIT, TEXT_FILE_LIMIT, read_limited, read_limited_from, too_large,
+    MESH_FILE_LIMIT, TEXT_FILE_LIMIT, read_limited, read_limited_from, read_limited_text, too_large,
 };
 pub use solid::{Solid, SolidBody, SolidOptions, SolidWarning, load_solid};
 

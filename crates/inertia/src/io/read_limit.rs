@@ -92,6 +92,35 @@ pub fn read_limited(path: &Path, limit: u64, what: &str) -> io::Result<Vec<u8>> 
     read_limited_from(std::fs::File::open(path)?, limit, what)
 }
 
+/// Reads a text file (a robot description, a scene) whole as UTF-8, at
+/// most [`TEXT_FILE_LIMIT`] bytes; `what` names the input in that error
+/// (`a URDF file`).
+///
+/// ```
+/// use kreisel_inertia::io::read_limited_text;
+/// let path = std::env::temp_dir().join(format!("kreisel-read-text-{}", std::process::id()));
+/// std::fs::write(&path, "<robot/>")?;
+/// assert_eq!(read_limited_text(&path, "a URDF file")?, "<robot/>");
+/// std::fs::write(&path, [0xff, 0xfe])?;
+/// let e = read_limited_text(&path, "a URDF file").unwrap_err();
+/// assert_eq!(e.kind(), std::io::ErrorKind::InvalidData);
+/// std::fs::remove_file(&path)?;
+/// # Ok::<(), std::io::Error>(())
+/// ```
+///
+/// # Errors
+/// As [`read_limited`], and [`io::ErrorKind::InvalidData`] for text that
+/// is not UTF-8.
+pub fn read_limited_text(path: &Path, what: &str) -> io::Result<String> {
+    let bytes = read_limited(path, TEXT_FILE_LIMIT, what)?;
+    String::from_utf8(bytes).map_err(|_| {
+        io::Error::new(
+            io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        )
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
