@@ -246,6 +246,36 @@ pub enum DynamicsError {
         /// The coefficient of `N`, 1/kg.
         compliance: f64,
     },
+    /// A body on the table placed with a contact shape below the plane.
+    #[error("contact #{contact} is below the table (gap {gap:e} m): place the body on or above it")]
+    BodyInsideTable {
+        /// Which contact shape (its index in [`crate::TableBody::contacts`]).
+        contact: usize,
+        /// Its gap, the height of its lowest point, m (< 0).
+        gap: f64,
+    },
+    /// An impact whose solution would raise the kinetic energy (an impact
+    /// law can, with several frictional contacts: Glocker 2013): refused.
+    #[error(
+        "the impact at t = {time} s would raise the kinetic energy from {before:e} J to {after:e} J"
+    )]
+    ImpactGainsEnergy {
+        /// The impact's time, s.
+        time: f64,
+        /// The kinetic energy before, J.
+        before: f64,
+        /// The kinetic energy the impact law gave, J.
+        after: f64,
+    },
+    /// The contact modes of a body on the table change again and again at
+    /// one instant without the motion advancing (no consistent mode).
+    #[error("the contact modes at t = {time} s change {count} times without the motion advancing")]
+    ContactModesChatter {
+        /// The time, s.
+        time: f64,
+        /// How many events in a row did not advance the time.
+        count: usize,
+    },
     /// An error tolerance of an adaptive integrator outside its domain
     /// (see [`crate::AdaptiveTolerance::try_new`]).
     #[error("adaptive tolerance: {parameter} = {value}: {reason}")]

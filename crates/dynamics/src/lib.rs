@@ -81,6 +81,7 @@ mod rk4;
 pub mod splitting;
 mod stability;
 mod state;
+pub mod table;
 mod world;
 
 pub use composition::{Composition, CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
@@ -115,4 +116,8 @@ pub use stability::{
     AxisStability, EllipticMotion, axis_stability, elliptic_motion, try_axis_stability,
 };
 pub use state::PrincipalState;
+pub use table::{
+    ContactLaw, ContactMode, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableBody, TableContact,
+    TableEvent, TableEventKind, TableMotion,
+};
 pub use world::{Body, BodyBuilder, BodyId, BodyState, Choice, Plan, Support, Tolerance, World};

@@ -28,10 +28,10 @@ use crate::DynamicsError;
 const METHOD: &str = "ground-top dopri5";
 
 /// Stage times `cᵢ` (where applied loads are read; the order conditions).
-const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
+pub(crate) const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
 
 /// The Runge–Kutta matrix, row `i` the weights of stages `0..i`.
-const A: [[f64; 6]; 7] = [
+pub(crate) const A: [[f64; 6]; 7] = [
     [0.0; 6],
     [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
     [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
@@ -63,7 +63,7 @@ const A: [[f64; 6]; 7] = [
 ];
 
 /// Fifth-order weights (the last row of `A`: FSAL).
-const B: [f64; 7] = [
+pub(crate) const B: [f64; 7] = [
     35.0 / 384.0,
     0.0,
     500.0 / 1113.0,
@@ -74,7 +74,7 @@ const B: [f64; 7] = [
 ];
 
 /// Embedded fourth-order weights.
-const B_HAT: [f64; 7] = [
+pub(crate) const B_HAT: [f64; 7] = [
     5179.0 / 57600.0,
     0.0,
     7571.0 / 16695.0,
@@ -85,11 +85,11 @@ const B_HAT: [f64; 7] = [
 ];
 
 /// The controller's safety factor on the predicted step.
-const SAFETY: f64 = 0.9;
+pub(crate) const SAFETY: f64 = 0.9;
 /// The most a step may grow after an accepted step.
-const MAX_GROWTH: f64 = 5.0;
+pub(crate) const MAX_GROWTH: f64 = 5.0;
 /// The most a step may shrink after a rejected one.
-const MIN_SHRINK: f64 = 0.2;
+pub(crate) const MIN_SHRINK: f64 = 0.2;
 /// The smallest step, relative to the larger of `|t0|`, `|t_end|` (and
 /// 1 s): below it the controller gives up with
 /// [`DynamicsError::StepTooSmall`].

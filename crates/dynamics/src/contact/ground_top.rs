@@ -113,6 +113,52 @@ fn invalid(parameter: &'static str, value: f64, reason: &'static str) -> Dynamic
     }
 }
 
+/// Checks a body's mass, inertia tensor about its centre of mass (body
+/// axes) and gravity: each positive and finite, the tensor symmetric and
+/// positive definite.
+///
+/// # Errors
+/// [`DynamicsError::InvalidContact`] naming `"mass"`, `"gravity"` or
+/// `"inertia"`.
+pub(crate) fn check_mass_properties(
+    mass: f64,
+    m: DMat3,
+    gravity: f64,
+) -> Result<(), DynamicsError> {
+    if !(mass.is_finite() && mass > 0.0) {
+        return Err(invalid("mass", mass, "must be positive and finite"));
+    }
+    if !(gravity.is_finite() && gravity > 0.0) {
+        return Err(invalid(
+            "gravity",
+            gravity,
+            "must be positive and finite (gravity along −z)",
+        ));
+    }
+    if let Some(x) = m.to_cols_array().into_iter().find(|x| !x.is_finite()) {
+        return Err(invalid("inertia", x, "must be finite"));
+    }
+    let asym = (m - m.transpose()).abs().to_cols_array();
+    let scale = m.abs().to_cols_array().into_iter().fold(0.0, f64::max);
+    if let Some(x) = asym.into_iter().find(|x| *x > 1e-12 * scale) {
+        return Err(invalid("inertia", x, "must be symmetric"));
+    }
+    // Sylvester's criterion: the leading minors are positive.
+    let minors = [
+        m.x_axis.x,
+        m.x_axis.x * m.y_axis.y - m.x_axis.y * m.y_axis.x,
+        m.determinant(),
+    ];
+    if let Some(x) = minors.into_iter().find(|x| *x <= 0.0) {
+        return Err(invalid(
+            "inertia",
+            x,
+            "must be positive definite (a leading minor is not positive)",
+        ));
+    }
+    Ok(())
+}
+
 impl GroundTop {
     /// A body of `mass` kg with inertia tensor `inertia_body` about its
     /// centre of mass (body axes), touching with `sphere`, under gravity
@@ -174,39 +220,9 @@ impl GroundTop {
         friction: Friction,
         gravity: f64,
     ) -> Result<Self, DynamicsError> {
-        if !(mass.is_finite() && mass > 0.0) {
-            return Err(invalid("mass", mass, "must be positive and finite"));
-        }
-        if !(gravity.is_finite() && gravity > 0.0) {
-            return Err(invalid(
-                "gravity",
-                gravity,
-                "must be positive and finite (gravity along −z)",
-            ));
-        }
+        check_mass_properties(mass, inertia_body, gravity)?;
         friction.validate()?;
         let m = inertia_body;
-        if let Some(x) = m.to_cols_array().into_iter().find(|x| !x.is_finite()) {
-            return Err(invalid("inertia", x, "must be finite"));
-        }
-        let asym = (m - m.transpose()).abs().to_cols_array();
-        let scale = m.abs().to_cols_array().into_iter().fold(0.0, f64::max);
-        if let Some(x) = asym.into_iter().find(|x| *x > 1e-12 * scale) {
-            return Err(invalid("inertia", x, "must be symmetric"));
-        }
-        // Sylvester's criterion: the leading minors are positive.
-        let minors = [
-            m.x_axis.x,
-            m.x_axis.x * m.y_axis.y - m.x_axis.y * m.y_axis.x,
-            m.determinant(),
-        ];
-        if let Some(x) = minors.into_iter().find(|x| *x <= 0.0) {
-            return Err(invalid(
-                "inertia",
-                x,
-                "must be positive definite (a leading minor is not positive)",
-            ));
-        }
         Ok(Self {
             mass,
             inertia_body: m,

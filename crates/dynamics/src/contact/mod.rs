@@ -250,6 +250,9 @@ mod rk4;
 mod sphere_contact;
 mod touchdown;
 
+pub(crate) use self::adaptive::{
+    A as DOPRI_A, B_HAT as DOPRI_B_HAT, MAX_GROWTH, MIN_SHRINK, SAFETY,
+};
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub use self::contact_shape::ContactShape;
 pub use self::disk_contact::DiskContact;
@@ -257,6 +260,7 @@ pub use self::ellipsoid_contact::EllipsoidContact;
 pub use self::flight::Landing;
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_check::{GROUND_CHECK_TOLERANCE, GroundCheck, GroundViolation};
+pub(crate) use self::ground_top::check_mass_properties;
 pub use self::ground_top::{GroundTop, GroundTopState};
 pub use self::sphere_contact::SphereContact;
 pub use self::touchdown::MAX_OTHER_CONTACTS;

@@ -1,0 +1,373 @@
+//! The contact problems of a [`super::TableBody`] at one state: the
+//! accelerations of the current contact modes (the smooth right-hand
+//! side between events), and the set-valued problem that decides the
+//! modes at an event (which contacts stay closed, which stick).
+//!
+//! Both act on the relative quantities of [`ContactFrame`]: per contact
+//! `y = (y_N, y_T)` (accelerations here, velocities at an impact) that
+//! depend linearly on the contact's unknowns `x = (x_N, x_T)` (forces
+//! here, impulses at an impact) through the Delassus blocks
+//! `G_ij = W_iᵀ M⁻¹ W_j`:
+//!
+//! ```text
+//! y_i = y_i⁰ + Σ_j G_ij x_j
+//! normal:   x_N ≥ 0,  y_N ≥ 0,  x_N y_N = 0                      (Signorini)
+//! friction: |x_T| ≤ μ x_N,  x_T = −μ x_N y_T/|y_T| when y_T ≠ 0   (Coulomb–Contensou)
+//!           or, slipping already: x_T = −μ x_N d, d the slip direction
+//! ```
+//!
+//! The problem is solved contact by contact (block Gauss–Seidel; Studer &
+//! Glocker, Acta Mech. 2006, call it the successive solution of the
+//! inclusions), each block exactly: separation if `y_N⁰ ≥ 0`, else
+//! sticking if its force lies in the cone, else slipping on the cone's
+//! boundary with the direction found by fixed-point iteration.
+
+use glam::DVec3;
+
+use super::TableBody;
+use super::contact_frame::{ContactFrame, Wrench};
+use super::dense::solve_in_place;
+use crate::DynamicsError;
+
+/// What a contact does between two events.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ContactMode {
+    /// Not touching (or touching without force, about to separate).
+    Open,
+    /// Closed, slipping (or drilling) against the friction.
+    Slipping,
+    /// Closed, the contact point at rest on the table (and no drilling).
+    Sticking,
+}
+
+/// A contact's mode with the slip direction to use where the slip itself
+/// is too small to give one (just after slipping starts).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Mode {
+    pub(crate) mode: ContactMode,
+    pub(crate) direction: DVec3,
+}
+
+impl Mode {
+    /// An open contact.
+    pub(crate) const OPEN: Mode = Mode {
+        mode: ContactMode::Open,
+        direction: DVec3::ZERO,
+    };
+}
+
+/// The accelerations and contact forces of one state in given modes.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ModeForces {
+    /// `v̇_G`, m/s².
+    pub(crate) velocity_rate: DVec3,
+    /// `L̇`, the torque of the contact forces about the centre of mass.
+    pub(crate) l_rate: DVec3,
+    /// `ω̇`.
+    pub(crate) omega_rate: DVec3,
+    /// Each contact's normal force `N` (0 for an open one).
+    pub(crate) normal: [f64; TableBody::MAX_CONTACTS],
+    /// Each contact's friction `x_T` (components along its friction
+    /// directions).
+    pub(crate) friction: [DVec3; TableBody::MAX_CONTACTS],
+}
+
+/// The slip direction of a slipping contact: the slip's when it exceeds
+/// `floor`, else the direction kept in its mode.
+pub(crate) fn slip_direction(slip: DVec3, mode: &Mode, floor: f64) -> DVec3 {
+    let s = slip.length();
+    if s > floor { slip / s } else { mode.direction }
+}
+
+/// The painlevé error at `time` for the coefficient `compliance`.
+fn indeterminate(compliance: f64) -> DynamicsError {
+    DynamicsError::ContactIndeterminate {
+        time: f64::NAN,
+        compliance,
+    }
+}
+
+/// The accelerations of `frame` with the contacts in `modes`: each closed
+/// contact keeps `g̈ = 0`, each sticking one `γ̇_T = 0`, each slipping one
+/// rubs with `−μ N d`.
+///
+/// # Errors
+/// [`DynamicsError::ContactIndeterminate`] (its time NaN: the caller
+/// knows it) when a slipping contact's normal coefficient
+/// `w_Nᵀ M⁻¹ (w_N − μ W_T d)` is not positive or the system is singular.
+pub(crate) fn mode_forces(
+    frame: &ContactFrame,
+    modes: &[Mode],
+    slip_floor: f64,
+) -> Result<ModeForces, DynamicsError> {
+    const MAX: usize = 4 * TableBody::MAX_CONTACTS;
+    let mut rows = [Wrench::default(); MAX];
+    let mut cols = [Wrench::default(); MAX];
+    let mut rhs = [0.0; MAX];
+    // (contact, component) of each unknown.
+    let mut owner = [(0usize, 0usize); MAX];
+    let mut n = 0;
+    let free = (frame.free_velocity_rate, frame.free_omega_rate);
+    let mut directions = [DVec3::ZERO; TableBody::MAX_CONTACTS];
+    for (i, (row, mode)) in frame.rows.iter().zip(modes).enumerate() {
+        if mode.mode == ContactMode::Open {
+            continue;
+        }
+        let mut normal_col = row.directions[0];
+        let nf = row.friction_dimensions;
+        if mode.mode == ContactMode::Slipping && nf > 0 {
+            let d = slip_direction(row.slip(), mode, slip_floor);
+            directions[i] = d;
+            for c in 0..nf {
+                normal_col = normal_col.plus(row.directions[1 + c].scaled(-row.mu * d[c]));
+            }
+            let compliance = frame.delassus(&row.directions[0], &normal_col);
+            if compliance.is_nan() || compliance <= 0.0 {
+                return Err(indeterminate(compliance));
+            }
+        }
+        let sticking = mode.mode == ContactMode::Sticking;
+        let components = if sticking { 1 + nf } else { 1 };
+        for k in 0..components {
+            rows[n] = row.directions[k];
+            cols[n] = if k == 0 {
+                normal_col
+            } else {
+                row.directions[k]
+            };
+            rhs[n] = -frame.rate(i, k, free);
+            owner[n] = (i, k);
+            n += 1;
+        }
+    }
+    let mut a = [0.0; MAX * MAX];
+    for r in 0..n {
+        for k in 0..n {
+            a[r * n + k] = frame.delassus(&rows[r], &cols[k]);
+        }
+    }
+    if !solve_in_place(&mut a, &mut rhs, n) {
+        return Err(indeterminate(0.0));
+    }
+    let mut total = Wrench::default();
+    let mut out = ModeForces {
+        velocity_rate: DVec3::ZERO,
+        l_rate: DVec3::ZERO,
+        omega_rate: DVec3::ZERO,
+        normal: [0.0; TableBody::MAX_CONTACTS],
+        friction: [DVec3::ZERO; TableBody::MAX_CONTACTS],
+    };
+    for k in 0..n {
+        total = total.plus(cols[k].scaled(rhs[k]));
+        let (i, c) = owner[k];
+        if c == 0 {
+            out.normal[i] = rhs[k];
+            if modes[i].mode == ContactMode::Slipping {
+                out.friction[i] = -frame.rows[i].mu * rhs[k] * directions[i];
+            }
+        } else {
+            out.friction[i][c - 1] = rhs[k];
+        }
+    }
+    let (dv, dw) = frame.response(&total);
+    out.velocity_rate = frame.free_velocity_rate + dv;
+    out.omega_rate = frame.free_omega_rate + dw;
+    out.l_rate = total.torque;
+    Ok(out)
+}
+
+/// One contact's share of a set-valued problem: its Delassus block and
+/// its law.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Block {
+    /// How many components: 1 + friction directions.
+    pub(crate) size: usize,
+    pub(crate) mu: f64,
+    /// `Some(d)`: slipping already along `d` (the friction is `−μ x_N d`);
+    /// `None`: the friction cone.
+    pub(crate) slipping: Option<DVec3>,
+}
+
+/// The relative change of the unknowns below which block Gauss–Seidel
+/// stops.
+const SWEEP_TOLERANCE: f64 = 1e-15;
+
+/// The most sweeps (and slip-direction iterations) before the problem is
+/// called unsolved.
+const MAX_SWEEPS: usize = 2000;
+
+/// Solves `y_i = y⁰_i + Σ_j G_ij x_j` with each block's law.
+///
+/// `g(i, a, j, b)` is the Delassus entry between component `a` of contact
+/// `i` and component `b` of contact `j`.
+///
+/// # Errors
+/// [`DynamicsError::ContactIndeterminate`] for a slipping block whose
+/// normal coefficient is not positive, or no convergence.
+pub(crate) fn solve_blocks(
+    blocks: &[Block],
+    y_free: &[[f64; 4]],
+    g: &dyn Fn(usize, usize, usize, usize) -> f64,
+) -> Result<Vec<[f64; 4]>, DynamicsError> {
+    let m = blocks.len();
+    let mut x = vec![[0.0; 4]; m];
+    for _sweep in 0..MAX_SWEEPS {
+        let mut change: f64 = 0.0;
+        let mut size: f64 = 0.0;
+        for i in 0..m {
+            let bi = &blocks[i];
+            let mut y0 = y_free[i];
+            for (j, xj) in x.iter().enumerate() {
+                if j == i {
+                    continue;
+                }
+                for (a, y) in y0.iter_mut().enumerate().take(bi.size) {
+                    for (b, xb) in xj.iter().enumerate().take(blocks[j].size) {
+                        *y += g(i, a, j, b) * xb;
+                    }
+                }
+            }
+            let mut gii = [[0.0; 4]; 4];
+            for (a, row) in gii.iter_mut().enumerate().take(bi.size) {
+                for (b, v) in row.iter_mut().enumerate().take(bi.size) {
+                    *v = g(i, a, i, b);
+                }
+            }
+            let xi = solve_block(bi, &gii, &y0)?;
+            for k in 0..bi.size {
+                change = change.max((xi[k] - x[i][k]).abs());
+                size = size.max(xi[k].abs());
+            }
+            x[i] = xi;
+        }
+        if m == 1 || change <= SWEEP_TOLERANCE * size {
+            return Ok(x);
+        }
+    }
+    Err(indeterminate(f64::NAN))
+}
+
+/// One block exactly: separation, sticking, or slipping on the cone.
+fn solve_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Result<[f64; 4], DynamicsError> {
+    let n = b.size;
+    let mut x = [0.0; 4];
+    if y0[0] >= 0.0 {
+        return Ok(x); // separating: no force
+    }
+    if n == 1 || b.mu == 0.0 {
+        x[0] = -y0[0] / g[0][0];
+        return Ok(x);
+    }
+    if let Some(d) = b.slipping {
+        return slip_along(b, g, y0, d).ok_or_else(|| indeterminate(f64::NAN));
+    }
+    // Sticking: y = 0 in every component.
+    let mut a = [0.0; 16];
+    let mut rhs = [0.0; 4];
+    for r in 0..n {
+        for k in 0..n {
+            a[r * n + k] = g[r][k];
+        }
+        rhs[r] = -y0[r];
+    }
+    if solve_in_place(&mut a, &mut rhs, n) {
+        let t = DVec3::new(
+            rhs[1],
+            rhs.get(2).copied().unwrap_or(0.0),
+            if n > 3 { rhs[3] } else { 0.0 },
+        );
+        if rhs[0] >= 0.0 && t.length() <= b.mu * rhs[0] * (1.0 + 1e-12) {
+            x[..n].copy_from_slice(&rhs[..n]);
+            return Ok(x);
+        }
+        // Slipping: start from the direction opposite the sticking force.
+        let mut d = -t.normalize_or_zero();
+        for _ in 0..MAX_SWEEPS {
+            let Some(xs) = slip_along(b, g, y0, d) else {
+                return Err(indeterminate(f64::NAN));
+            };
+            let y_t = tangential(g, y0, &xs, n);
+            let next = y_t.normalize_or_zero();
+            if next == DVec3::ZERO || (next - d).length() <= 1e-14 {
+                return Ok(xs);
+            }
+            // Damped: the plain fixed point may oscillate between two
+            // directions when the block is far from isotropic.
+            d = (d + next).normalize_or(next);
+        }
+    }
+    Err(indeterminate(f64::NAN))
+}
+
+/// The block slipping along `d`: `x_T = −μ x_N d`, `y_N = 0`.
+fn slip_along(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4], d: DVec3) -> Option<[f64; 4]> {
+    let n = b.size;
+    let mut kappa = g[0][0];
+    for c in 0..n - 1 {
+        kappa -= b.mu * g[0][1 + c] * d[c];
+    }
+    if kappa.is_nan() || kappa <= 0.0 {
+        return None;
+    }
+    let mut x = [0.0; 4];
+    x[0] = (-y0[0] / kappa).max(0.0);
+    for c in 0..n - 1 {
+        x[1 + c] = -b.mu * x[0] * d[c];
+    }
+    Some(x)
+}
+
+/// The friction components of `y = y0 + G x` for one block.
+fn tangential(g: &[[f64; 4]; 4], y0: &[f64; 4], x: &[f64; 4], n: usize) -> DVec3 {
+    let mut t = DVec3::ZERO;
+    for c in 0..n - 1 {
+        let mut v = y0[1 + c];
+        for k in 0..n {
+            v += g[1 + c][k] * x[k];
+        }
+        t[c] = v;
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A block with the Delassus matrix of a point mass (`G = 𝟙/m`).
+    fn mass_block(mu: f64) -> (Block, [[f64; 4]; 4]) {
+        let mut g = [[0.0; 4]; 4];
+        for (k, row) in g.iter_mut().enumerate().take(3) {
+            row[k] = 2.0; // m = 0.5 kg
+        }
+        (
+            Block {
+                size: 3,
+                mu,
+                slipping: None,
+            },
+            g,
+        )
+    }
+
+    #[test]
+    fn a_point_mass_sticks_inside_the_cone_and_slips_outside() {
+        // A mass pressed down at 10 m/s² and pulled sideways at 3 m/s²:
+        // N = 5 N, sticking needs F = 1.5 N ≤ μ N for μ ≥ 0.3.
+        let (b, g) = mass_block(0.5);
+        let x = solve_block(&b, &g, &[-10.0, 3.0, 0.0, 0.0]).unwrap();
+        assert!((x[0] - 5.0).abs() < 1e-14 && (x[1] + 1.5).abs() < 1e-14);
+        let (b, g) = mass_block(0.2);
+        let x = solve_block(&b, &g, &[-10.0, 3.0, 0.0, 0.0]).unwrap();
+        // Slipping: F = −μ N along the pull.
+        assert!(
+            (x[0] - 5.0).abs() < 1e-14 && (x[1] + 1.0).abs() < 1e-14,
+            "{x:?}"
+        );
+        // Separating: no force.
+        assert_eq!(
+            solve_block(&b, &g, &[1.0, 3.0, 0.0, 0.0]).unwrap(),
+            [0.0; 4]
+        );
+    }
+}

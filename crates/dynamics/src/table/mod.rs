@@ -1,0 +1,56 @@
+//! Bodies on a table as nonsmooth mechanics: any number of contact
+//! shapes per body, unilateral contact (Signorini), impacts with Newton's
+//! restitution, set-valued Coulomb friction with Contensou's drilling
+//! friction — run from any start to rest, with the events recorded.
+//!
+//! - [`ContactLaw`]: `μ`, restitution `e`, tangential restitution `e_T`,
+//!   the Contensou patch radius;
+//! - [`TableBody`], [`TableContact`]: the body and its shapes
+//!   ([`crate::ContactShape`]: spheres, disk rims, ellipsoids);
+//! - [`TableMotion`]: the event-driven run (Dormand–Prince 5(4) with error
+//!   control between events; lift-off, touchdown, impacts, stick and slip
+//!   located to rounding), [`TableEvent`]s while it goes on;
+//! - [`ContactMode`]: open, slipping or sticking.
+//!
+//! # The model
+//! State `y = (r_G, v_G, q, L)` as for [`crate::GroundTop`], velocities
+//! `u = (v_G, ω)`, mass matrix `M = diag(m 𝟙, I_w)`. Each contact `i` has
+//! a gap `gᵢ` (the height of its shape's lowest point) and, while closed,
+//! a normal force `Nᵢ` and friction `Λᵢ` acting along the directions of
+//! its frame (`contact_frame`): the normal `w_N`, the slip directions
+//! `w_x, w_y` and, with a Contensou patch, the drilling direction
+//! `w_d = (0, ε ẑ)`. Between events
+//!
+//! ```text
+//! M u̇ = h(y) + Σ_i (w_N Nᵢ + W_T Λᵢ),     h = (−m g ẑ, −ω × L)
+//! closed contact:   g̈ᵢ = 0,   Nᵢ ≥ 0
+//! sticking:         γ̇_Tᵢ = 0, |Λᵢ| ≤ μ Nᵢ
+//! slipping:         Λᵢ = −μ Nᵢ γ_Tᵢ/|γ_Tᵢ|
+//! ```
+//!
+//! and at an impact (a contact closing with speed) Newton's law with
+//! friction on the impulses ([`ContactLaw`] has the formulas). The energy
+//! never rises: friction dissipates `μ N |γ_T|`, the impact law is checked
+//! (a gain is [`crate::DynamicsError::ImpactGainsEnergy`]), a contact that
+//! starts to stick loses its residual slip by a dissipative impulse.
+//!
+//! # What it does not do (yet)
+//! A disk lying flat on its face, rolling resistance and applied loads
+//! are not modelled here; free flight is integrated by the same
+//! error-controlled method (exact for the centre of mass's parabola, to
+//! the tolerance for the rotation).
+
+mod contact_frame;
+mod contact_law;
+mod contact_problem;
+mod dense;
+mod impact;
+mod table_body;
+mod table_event;
+mod table_motion;
+
+pub use self::contact_law::ContactLaw;
+pub use self::contact_problem::ContactMode;
+pub use self::table_body::{TableBody, TableContact};
+pub use self::table_event::{TableEvent, TableEventKind};
+pub use self::table_motion::{TABLE_ACCUMULATION, TABLE_RESOLUTION, TableMotion};

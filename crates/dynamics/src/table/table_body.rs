@@ -1,0 +1,173 @@
+//! [`TableBody`]: a rigid body with any number of contact shapes, each
+//! with its [`ContactLaw`], above or on the table `z = 0`.
+
+use glam::{DMat3, DQuat, DVec3};
+
+use super::ContactLaw;
+use crate::contact::check_mass_properties;
+use crate::{ContactShape, DynamicsError, GroundTopState};
+
+/// A contact shape fixed in the body and the law of its contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TableContact {
+    /// The surface (sphere, disk rim, ellipsoid), body axes from the
+    /// centre of mass.
+    pub shape: ContactShape,
+    /// Its friction and restitution.
+    pub law: ContactLaw,
+}
+
+/// A rigid body above the table `z = 0` under gravity `−g ẑ`, touching it
+/// with any of its contact shapes.
+///
+/// ```text
+/// state:   r_G, v_G, q (body → world, rotation A), L about the centre of mass (world axes)
+/// ω = A I⁻¹ Aᵀ L,   u = (v_G, ω)
+/// contact i: ρᵢ (lowest point of shape i from the centre of mass),
+///            gᵢ = z_G + ρᵢ_z (its gap),   v_Pᵢ = v_G + ω × ρᵢ
+/// E = ½ m |v_G|² + ½ L·ω + m g z_G
+/// ```
+///
+/// ```
+/// use glam::{DMat3, DVec3};
+/// use kreisel_dynamics::{ContactLaw, ContactShape, SphereContact, TableBody, TableContact};
+/// let ball = SphereContact::try_new(0.1, DVec3::ZERO)?;
+/// let contact = TableContact { shape: ContactShape::Sphere(ball), law: ContactLaw::new(0.0) };
+/// let i = DMat3::from_diagonal(DVec3::splat(0.4 * 0.1 * 0.1));
+/// let body = TableBody::try_new(1.0, i, vec![contact], 9.81)?;
+/// assert_eq!(body.contacts().len(), 1);
+/// assert!(TableBody::try_new(1.0, i, vec![], 9.81).is_err());
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct TableBody {
+    mass: f64,
+    inertia_body: DMat3,
+    inverse_inertia_body: DMat3,
+    gravity: f64,
+    contacts: Vec<TableContact>,
+}
+
+impl TableBody {
+    /// The most contact shapes one body may carry.
+    pub const MAX_CONTACTS: usize = 8;
+
+    /// A body of `mass` kg, inertia tensor `inertia_body` about its centre
+    /// of mass (body axes), with `contacts`, under gravity `g` m/s² along
+    /// −z.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidContact`] for a mass, inertia or `g` no
+    /// body has (`"mass"`, `"inertia"`, `"gravity"`), for no contact shape
+    /// or more than [`TableBody::MAX_CONTACTS`] (`"contacts"`).
+    pub fn try_new(
+        mass: f64,
+        inertia_body: DMat3,
+        contacts: Vec<TableContact>,
+        gravity: f64,
+    ) -> Result<Self, DynamicsError> {
+        check_mass_properties(mass, inertia_body, gravity)?;
+        if contacts.is_empty() || contacts.len() > Self::MAX_CONTACTS {
+            return Err(DynamicsError::InvalidContact {
+                parameter: "contacts",
+                value: contacts.len() as f64,
+                reason: "a body on the table needs 1 to 8 contact shapes",
+            });
+        }
+        Ok(Self {
+            mass,
+            inertia_body,
+            inverse_inertia_body: inertia_body.inverse(),
+            gravity,
+            contacts,
+        })
+    }
+
+    /// The mass `m`, kg.
+    pub fn mass(&self) -> f64 {
+        self.mass
+    }
+
+    /// The inertia tensor about the centre of mass, body axes, kg m².
+    pub fn inertia_body(&self) -> DMat3 {
+        self.inertia_body
+    }
+
+    /// `g`, m/s².
+    pub fn gravity(&self) -> f64 {
+        self.gravity
+    }
+
+    /// The contact shapes and their laws.
+    pub fn contacts(&self) -> &[TableContact] {
+        &self.contacts
+    }
+
+    /// The inverse inertia tensor in world axes, `I_w⁻¹ = A I⁻¹ Aᵀ`, at
+    /// the unit attitude `q`.
+    pub(crate) fn inverse_inertia_world(&self, q: DQuat) -> DMat3 {
+        let a = DMat3::from_quat(q);
+        a * self.inverse_inertia_body * a.transpose()
+    }
+
+    /// The angular velocity in world axes: `ω = A I⁻¹ Aᵀ L`.
+    pub fn omega_world(&self, state: &GroundTopState) -> DVec3 {
+        let q = state.world_from_body.normalize();
+        q * (self.inverse_inertia_body * (q.conjugate() * state.l_world))
+    }
+
+    /// The mechanical energy, zero potential at `z_G = 0`:
+    /// `E = ½ m |v_G|² + ½ L·ω + m g z_G`.
+    pub fn energy(&self, state: &GroundTopState) -> f64 {
+        self.kinetic_energy(state) + self.mass * self.gravity * state.com_world.z
+    }
+
+    /// The kinetic energy `T = ½ m |v_G|² + ½ L·ω`.
+    pub fn kinetic_energy(&self, state: &GroundTopState) -> f64 {
+        0.5 * self.mass * state.velocity_world.length_squared()
+            + 0.5 * state.l_world.dot(self.omega_world(state))
+    }
+
+    /// The gap of contact `i`, the height of its lowest point: `z_G + ρᵢ_z`.
+    ///
+    /// # Panics
+    /// For `i` out of range.
+    pub fn gap(&self, state: &GroundTopState, i: usize) -> f64 {
+        let q = state.world_from_body.normalize();
+        state.com_world.z + self.contacts[i].shape.contact_from_com_world(q).z
+    }
+
+    /// The velocity of the body's material point at contact `i`'s lowest
+    /// point: `v_P = v_G + ω × ρᵢ` (its `z` is the gap's rate).
+    ///
+    /// # Panics
+    /// For `i` out of range.
+    pub fn contact_velocity(&self, state: &GroundTopState, i: usize) -> DVec3 {
+        let q = state.world_from_body.normalize();
+        let rho = self.contacts[i].shape.contact_from_com_world(q);
+        state.velocity_world + self.omega_world(state).cross(rho)
+    }
+
+    /// Jellett's integral about contact `i`: `λ = −L·ρᵢ` (conserved while
+    /// only that sphere touches, its centre on an axis of symmetry of the
+    /// inertia and no drilling friction; module docs of
+    /// [`crate::contact`]).
+    ///
+    /// # Panics
+    /// For `i` out of range.
+    pub fn jellett(&self, state: &GroundTopState, i: usize) -> f64 {
+        let q = state.world_from_body.normalize();
+        -state
+            .l_world
+            .dot(self.contacts[i].shape.contact_from_com_world(q))
+    }
+
+    /// The body's length scale `ℓ`, m: its largest contact shape's size
+    /// plus that shape's distance from the centre of mass.
+    pub(crate) fn length_scale(&self) -> f64 {
+        self.contacts
+            .iter()
+            .map(|c| c.shape.size() + c.shape.center_from_com_world(DQuat::IDENTITY).length())
+            .fold(0.0, f64::max)
+    }
+}

@@ -1,0 +1,678 @@
+//! [`TableMotion`]: a [`TableBody`] run from any start through sliding,
+//! sticking, lifting off, flying, landing and bouncing — event-driven:
+//! Dormand–Prince 5(4) with error control between events, each event
+//! located in its step, impacts and mode changes solved there.
+//!
+//! ```text
+//! between events:  ẏ = f(y; modes),  y = (r_G, v_G, q, L)     (contact_problem::mode_forces)
+//!                  local error ≤ atol·s + rtol·|y| per component (AdaptiveTolerance)
+//! an event in a step (end of the trial, or a dip of a gap's cubic Hermite inside it):
+//!     open contact:      g < 0 while ġ < 0           → touchdown (impact when −ġ > v_res)
+//!     closed contact:    N < 0                        → lift-off
+//!     sticking contact:  |x_T| > μ N                  → slip
+//!     slipping contact:  γ_T · d₀ < 0 (slip reversed)  → stick (if the cone holds it)
+//! located by bisection on the step's length to a few ulps of t;
+//! there: impact (impact::impact), then the modes (contact_problem::solve_blocks)
+//! ```
+//!
+//! Method: the event-driven integration of Pfeiffer & Glocker
+//! (*Multibody Dynamics with Unilateral Contacts*, 1996) with the
+//! acceleration-level contact problem solved as in Studer & Glocker (Acta
+//! Mech. 2006), Newton's impact law as in Glocker (2001). Between events
+//! the motion is smooth and the Dormand–Prince pair (order 5) meets the
+//! tolerance; events are located to rounding, so the order holds through
+//! them (measured in `tests/table_*.rs`). Nothing is projected or
+//! renormalised between events; at an event the impact law sets the
+//! velocities and a contact that starts to stick has its residual slip
+//! (below the resolution speed) removed by a tangential impulse, which
+//! only dissipates.
+
+use glam::{DQuat, DVec3};
+
+use super::contact_frame::ContactFrame;
+use super::contact_problem::{Block, ContactMode, Mode, ModeForces, mode_forces, solve_blocks};
+use super::impact::{at_time, impact, stop_slip};
+use super::{TableBody, TableEvent, TableEventKind};
+use crate::contact::{DOPRI_A, DOPRI_B_HAT, MAX_GROWTH, MIN_SHRINK, SAFETY};
+use crate::{AdaptiveStats, AdaptiveTolerance, DynamicsError, GroundTopState};
+
+/// The method's name in errors.
+const METHOD: &str = "table dopri5";
+
+/// The resolution speed, relative to the body's speed scale: slips and
+/// approach speeds below it are zero.
+pub const TABLE_RESOLUTION: f64 = 1e-9;
+
+/// The rebound speed, relative to the body's speed scale, below which a
+/// contact's bounces are summed rather than followed: the bounces then
+/// accumulate within `2 e v/(a (1 − e))` (a few 10⁻⁴ s for a body of a
+/// few cm), while following them would time each impact by gaps of a few
+/// ulps (a ball's 10⁻¹⁷ m gap resolution at 10⁻⁵ m/s puts each impact
+/// 10⁻¹² s off and the accumulation point 10⁻⁹ s off; measured in
+/// `tests/table_bouncing_ball.rs`).
+pub const TABLE_ACCUMULATION: f64 = 1e-4;
+
+/// The smallest step, relative to `max(|t|, τ)` (`τ = √(ℓ/g)`).
+const MIN_STEP_RELATIVE: f64 = 1e-14;
+
+/// Events in a row at one instant before the modes are called chattering.
+const MAX_EVENTS_IN_PLACE: usize = 64;
+
+/// The time derivative of a state.
+#[derive(Debug, Clone, Copy)]
+struct Derivative {
+    d_com: DVec3,
+    d_velocity: DVec3,
+    d_attitude: DQuat,
+    d_l: DVec3,
+}
+
+/// A state with its derivative, forces and contact frame (what the
+/// event predicates read).
+#[derive(Debug, Clone)]
+struct Snapshot {
+    state: GroundTopState,
+    derivative: Derivative,
+    forces: ModeForces,
+    frame: ContactFrame,
+}
+
+/// A trial step: its end and its error norm.
+struct Trial {
+    end: Snapshot,
+    error: f64,
+}
+
+/// A body on the table moving through its contact events.
+///
+/// ```
+/// use glam::{DMat3, DQuat, DVec3};
+/// use kreisel_dynamics::{
+///     AdaptiveTolerance, ContactLaw, ContactShape, GroundTopState, SphereContact, TableBody,
+///     TableContact, TableEventKind, TableMotion,
+/// };
+/// // A ball dropped from 1 m (centre), e = 0.9: the first impact at √(2 · 0.9/9.81) s.
+/// let shape = ContactShape::Sphere(SphereContact::try_new(0.1, DVec3::ZERO)?);
+/// let law = ContactLaw::new(0.0).try_with_restitution(0.9)?;
+/// let body = TableBody::try_new(1.0, DMat3::from_diagonal(DVec3::splat(0.004)),
+///     vec![TableContact { shape, law }], 9.81)?;
+/// let start = GroundTopState { com_world: DVec3::new(0.0, 0.0, 1.0), velocity_world: DVec3::ZERO,
+///     world_from_body: DQuat::IDENTITY, l_world: DVec3::ZERO };
+/// let mut run = TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10))?;
+/// run.try_advance_to(0.5)?;
+/// let first = run.events()[0];
+/// assert!(matches!(first.kind, TableEventKind::Impact { .. }));
+/// assert!((first.time - (2.0 * 0.9 / 9.81f64).sqrt()).abs() < 1e-12);
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct TableMotion {
+    body: TableBody,
+    tolerance: AdaptiveTolerance,
+    time: f64,
+    current: Snapshot,
+    modes: Vec<Mode>,
+    events: Vec<TableEvent>,
+    /// The next step to try, s.
+    h: f64,
+    /// Error weights of the 13 components (the body's units).
+    scales: [f64; 13],
+    /// `ℓ`, m; `√(g ℓ)`-based speed scale, m/s; `τ = √(ℓ/g)`, s.
+    length: f64,
+    speed: f64,
+    time_scale: f64,
+    resting: bool,
+    /// The latest accumulation point of bounces, s (the body rests no
+    /// earlier).
+    accumulation: f64,
+    stats: AdaptiveStats,
+}
+
+/// `s + h Σ wᵢ kᵢ`.
+fn combine(s: &GroundTopState, ks: &[Derivative], weights: &[f64], h: f64) -> GroundTopState {
+    let mut out = *s;
+    for (k, &w) in ks.iter().zip(weights) {
+        if w != 0.0 {
+            let f = w * h;
+            out.com_world += k.d_com * f;
+            out.velocity_world += k.d_velocity * f;
+            out.world_from_body += k.d_attitude * f;
+            out.l_world += k.d_l * f;
+        }
+    }
+    out
+}
+
+/// The 13 components of a state.
+fn flat(s: &GroundTopState) -> [f64; 13] {
+    let (r, v, q, l) = (s.com_world, s.velocity_world, s.world_from_body, s.l_world);
+    [
+        r.x, r.y, r.z, v.x, v.y, v.z, q.w, q.x, q.y, q.z, l.x, l.y, l.z,
+    ]
+}
+
+impl TableMotion {
+    /// The body in `state` at `t = 0`, with the contacts that touch closed
+    /// (an impact first where one approaches the table) and their modes
+    /// found.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidState`] for a state that is not finite;
+    /// [`DynamicsError::BodyInsideTable`] for a contact below the plane
+    /// (beyond `10⁻⁹ ℓ`); the errors of the first events
+    /// ([`DynamicsError::ContactIndeterminate`],
+    /// [`DynamicsError::ImpactGainsEnergy`]).
+    pub fn try_new(
+        body: TableBody,
+        state: GroundTopState,
+        tolerance: AdaptiveTolerance,
+    ) -> Result<Self, DynamicsError> {
+        if !state.is_valid() {
+            return Err(DynamicsError::InvalidState {
+                reason: "the table body's state is not finite",
+            });
+        }
+        let length = body.length_scale();
+        let g = body.gravity();
+        let frame = ContactFrame::of(&body, &state);
+        for (i, row) in frame.rows.iter().enumerate() {
+            if row.gap < -1e-9 * length {
+                return Err(DynamicsError::BodyInsideTable {
+                    contact: i,
+                    gap: row.gap,
+                });
+            }
+        }
+        let omega = frame.omega;
+        let speed = (g * length)
+            .sqrt()
+            .max(state.velocity_world.length())
+            .max(omega.length() * length);
+        let time_scale = (length / g).sqrt();
+        let i_max = body
+            .inertia_body()
+            .to_cols_array()
+            .into_iter()
+            .fold(0.0, f64::max);
+        let s = [length, speed, 1.0, i_max * speed / length];
+        let mut scales = [0.0; 13];
+        for (k, v) in scales.iter_mut().enumerate() {
+            *v = s[match k {
+                0..=2 => 0,
+                3..=5 => 1,
+                6..=9 => 2,
+                _ => 3,
+            }];
+        }
+        let modes = vec![Mode::OPEN; body.contacts().len()];
+        let current = Self::snapshot_of(&body, &modes, state, speed)?;
+        let mut run = Self {
+            body,
+            tolerance,
+            time: 0.0,
+            current,
+            modes,
+            events: Vec::new(),
+            h: 1e-3 * time_scale,
+            scales,
+            length,
+            speed,
+            time_scale,
+            resting: false,
+            accumulation: f64::NEG_INFINITY,
+            stats: AdaptiveStats::default(),
+        };
+        run.settle()?;
+        Ok(run)
+    }
+
+    /// The body.
+    pub fn body(&self) -> &TableBody {
+        &self.body
+    }
+
+    /// The time reached, s.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// The state at [`TableMotion::time`].
+    pub fn state(&self) -> &GroundTopState {
+        &self.current.state
+    }
+
+    /// Each contact's mode now.
+    pub fn modes(&self) -> Vec<ContactMode> {
+        self.modes.iter().map(|m| m.mode).collect()
+    }
+
+    /// Each contact's normal force now, N (0 when open).
+    pub fn normal_forces(&self) -> Vec<f64> {
+        self.current.forces.normal[..self.modes.len()].to_vec()
+    }
+
+    /// The events so far, in time order.
+    pub fn events(&self) -> &[TableEvent] {
+        &self.events
+    }
+
+    /// Whether the body has come to rest (it stays there).
+    pub fn is_resting(&self) -> bool {
+        self.resting
+    }
+
+    /// Steps accepted and rejected, evaluations of the vector field.
+    pub fn stats(&self) -> AdaptiveStats {
+        self.stats
+    }
+
+    /// The resolution speed `v_res`, m/s: [`TABLE_RESOLUTION`] times the
+    /// body's speed scale `max(√(g ℓ), |v_G|, |ω| ℓ)` at the start.
+    pub fn resolution_speed(&self) -> f64 {
+        TABLE_RESOLUTION * self.speed
+    }
+
+    /// The derivative, forces and frame of `state` in `modes`.
+    fn snapshot_of(
+        body: &TableBody,
+        modes: &[Mode],
+        state: GroundTopState,
+        speed: f64,
+    ) -> Result<Snapshot, DynamicsError> {
+        let frame = ContactFrame::of(body, &state);
+        let forces = mode_forces(&frame, modes, TABLE_RESOLUTION * speed)?;
+        let q = state.world_from_body;
+        let w = frame.omega;
+        let derivative = Derivative {
+            d_com: state.velocity_world,
+            d_velocity: forces.velocity_rate,
+            d_attitude: DQuat::from_xyzw(w.x, w.y, w.z, 0.0) * q * 0.5,
+            d_l: forces.l_rate,
+        };
+        Ok(Snapshot {
+            state,
+            derivative,
+            forces,
+            frame,
+        })
+    }
+
+    fn snapshot(&self, state: GroundTopState) -> Result<Snapshot, DynamicsError> {
+        Self::snapshot_of(&self.body, &self.modes, state, self.speed)
+    }
+
+    /// One Dormand–Prince trial of length `h` from the current state.
+    fn trial(&mut self, h: f64) -> Result<Trial, DynamicsError> {
+        let s0 = self.current.state;
+        let mut k = [self.current.derivative; 7];
+        for i in 1..7 {
+            let stage = combine(&s0, &k[..i], &DOPRI_A[i][..i], h);
+            let snap = self.snapshot(stage)?;
+            self.stats.evaluations += 1;
+            k[i] = snap.derivative;
+            if i == 6 {
+                // FSAL: stage 7 is the fifth-order solution itself.
+                let (y0, y1) = (flat(&s0), flat(&snap.state));
+                let low = flat(&combine(&s0, &k, &DOPRI_B_HAT, h));
+                let mut error: f64 = 0.0;
+                for c in 0..13 {
+                    let bound = self.tolerance.atol() * self.scales[c]
+                        + self.tolerance.rtol() * y0[c].abs().max(y1[c].abs());
+                    error = error.max((y1[c] - low[c]).abs() / bound);
+                }
+                return Ok(Trial { end: snap, error });
+            }
+        }
+        unreachable!("the loop returns at its last stage")
+    }
+
+    /// Whether an event happened between the current snapshot and `end`
+    /// (a trial of length `h`).
+    fn event_in(&self, end: &Snapshot, h: f64) -> bool {
+        let start = &self.current;
+        let floor = self.resolution_speed();
+        for (i, mode) in self.modes.iter().enumerate() {
+            let (r0, r1) = (&start.frame.rows[i], &end.frame.rows[i]);
+            match mode.mode {
+                ContactMode::Open => {
+                    if r1.gap < 0.0 && r1.velocity[0] < 0.0 {
+                        return true;
+                    }
+                    if dips_below(r0.gap, r0.velocity[0], r1.gap, r1.velocity[0], h) {
+                        return true;
+                    }
+                }
+                ContactMode::Sticking | ContactMode::Slipping => {
+                    let n = end.forces.normal[i];
+                    if n < 0.0 {
+                        return true;
+                    }
+                    let friction = end.forces.friction[i].length();
+                    if mode.mode == ContactMode::Sticking && friction > r1.mu * n {
+                        return true;
+                    }
+                    if mode.mode == ContactMode::Slipping && r1.friction_dimensions > 0 {
+                        let d0 = super::contact_problem::slip_direction(r0.slip(), mode, floor);
+                        if r1.slip().dot(d0) < 0.0 {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        false
+    }
+
+    /// Advances to time `t_end` (exactly; the last step shortened),
+    /// recording events on the way.
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidInterval`] for `t_end` before now or not
+    /// finite; [`DynamicsError::StepTooSmall`] when the error control
+    /// needs a step below `10⁻¹⁴ max(t, τ)`; the errors of the events
+    /// ([`DynamicsError::ContactIndeterminate`] — Painlevé —,
+    /// [`DynamicsError::ImpactGainsEnergy`],
+    /// [`DynamicsError::ContactModesChatter`]). The motion keeps the last
+    /// state reached.
+    pub fn try_advance_to(&mut self, t_end: f64) -> Result<(), DynamicsError> {
+        if !(t_end.is_finite() && t_end >= self.time) {
+            return Err(DynamicsError::InvalidInterval {
+                t0: self.time,
+                t_end,
+            });
+        }
+        let mut in_place = 0;
+        while self.time < t_end {
+            if self.resting {
+                self.time = t_end;
+                break;
+            }
+            let remaining = t_end - self.time;
+            let last = self.h >= remaining;
+            let h = if last { remaining } else { self.h };
+            let min = MIN_STEP_RELATIVE * self.time.abs().max(self.time_scale);
+            let trial = match self.trial(h) {
+                Ok(t) => t,
+                Err(DynamicsError::ContactIndeterminate { .. }) if h > min => {
+                    // A stage beyond an event may be indeterminate: shorter.
+                    self.stats.rejected += 1;
+                    self.h = h * MIN_SHRINK;
+                    continue;
+                }
+                Err(e) => return Err(at_time(e, self.time)),
+            };
+            if trial.error.is_nan() || trial.error > 1.0 {
+                self.stats.rejected += 1;
+                let factor = if trial.error.is_finite() {
+                    (SAFETY * trial.error.powf(-0.2)).max(MIN_SHRINK)
+                } else {
+                    MIN_SHRINK
+                };
+                self.h = h * factor;
+                if self.h < min {
+                    return Err(DynamicsError::StepTooSmall {
+                        method: METHOD,
+                        time: self.time,
+                        h: self.h,
+                        min,
+                    });
+                }
+                continue;
+            }
+            self.stats.accepted += 1;
+            let growth = if trial.error > 0.0 {
+                (SAFETY * trial.error.powf(-0.2)).clamp(MIN_SHRINK, MAX_GROWTH)
+            } else {
+                MAX_GROWTH
+            };
+            if self.event_in(&trial.end, h) {
+                let (tau, end) = self.locate(h, trial.end)?;
+                self.time = if tau == h && last {
+                    t_end
+                } else {
+                    self.time + tau
+                };
+                self.current = end;
+                self.h = h.max(tau * 4.0);
+                in_place = if tau <= 4.0 * f64::EPSILON * self.time.abs().max(self.time_scale) {
+                    in_place + 1
+                } else {
+                    0
+                };
+                if in_place > MAX_EVENTS_IN_PLACE {
+                    return Err(DynamicsError::ContactModesChatter {
+                        time: self.time,
+                        count: in_place,
+                    });
+                }
+                self.settle()?;
+                continue;
+            }
+            in_place = 0;
+            self.time = if last { t_end } else { self.time + h };
+            self.current = trial.end;
+            if !last || growth < 1.0 {
+                self.h = h * growth;
+            }
+        }
+        Ok(())
+    }
+
+    /// The earliest length `τ ≤ h` by which an event has happened
+    /// (bisection to a few ulps of the time), and the state there.
+    fn locate(&mut self, h: f64, at_h: Snapshot) -> Result<(f64, Snapshot), DynamicsError> {
+        let (mut lo, mut hi, mut end) = (0.0, h, at_h);
+        let resolution = 2.0 * f64::EPSILON * (self.time.abs() + h);
+        while hi - lo > resolution {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            let trial = self.trial(mid).map_err(|e| at_time(e, self.time + mid))?;
+            if self.event_in(&trial.end, mid) {
+                hi = mid;
+                end = trial.end;
+            } else {
+                lo = mid;
+            }
+        }
+        Ok((hi, end))
+    }
+
+    /// At an event (or the start): impacts where a contact approaches,
+    /// then each contact's mode from the acceleration-level problem,
+    /// events recorded for every change, rest detected.
+    fn settle(&mut self) -> Result<(), DynamicsError> {
+        let v_res = self.resolution_speed();
+        let gap_tol = 1e-9 * self.length;
+        let frame = &self.current.frame;
+        let participants: Vec<usize> = (0..self.modes.len())
+            .filter(|&i| self.modes[i].mode != ContactMode::Open || frame.rows[i].gap <= gap_tol)
+            .collect();
+        let impacting = participants
+            .iter()
+            .any(|&i| frame.rows[i].velocity[0] < -v_res);
+        let mut struck = vec![false; self.modes.len()];
+        if impacting {
+            let outcome = impact(
+                &self.body,
+                &self.current.state,
+                &participants,
+                TABLE_ACCUMULATION * self.speed,
+                self.time,
+            )?;
+            for &(i, approach, rebound, approached) in &outcome.speeds {
+                if approached && approach > v_res {
+                    struck[i] = true;
+                    self.events.push(TableEvent {
+                        time: self.time,
+                        contact: Some(i),
+                        kind: TableEventKind::Impact {
+                            approach_speed: approach,
+                            rebound_speed: rebound,
+                        },
+                    });
+                }
+            }
+            for &(i, tau) in &outcome.accumulations {
+                self.accumulation = self.accumulation.max(self.time + tau);
+                self.events.push(TableEvent {
+                    time: self.time,
+                    contact: Some(i),
+                    kind: TableEventKind::ImpactsAccumulate {
+                        accumulation_time: self.time + tau,
+                    },
+                });
+            }
+            // Modes are chosen below; the snapshot is refreshed there.
+            self.current.state = outcome.state;
+            self.current.frame = ContactFrame::of(&self.body, &outcome.state);
+        }
+        let new_modes = self.resolve(&participants)?;
+        let before = std::mem::replace(&mut self.modes, new_modes);
+        for (i, (old, new)) in before.iter().zip(self.modes.clone()).enumerate() {
+            let kind = match (old.mode, new.mode) {
+                (a, b) if a == b => None,
+                (ContactMode::Open, _) if struck[i] => None,
+                (ContactMode::Open, _) => Some(TableEventKind::Touchdown),
+                (_, ContactMode::Open) => Some(TableEventKind::LiftOff),
+                (_, ContactMode::Sticking) => Some(TableEventKind::Stick),
+                (_, ContactMode::Slipping) => Some(TableEventKind::Slip),
+            };
+            if new.mode == ContactMode::Sticking && old.mode != ContactMode::Sticking {
+                self.current.state = stop_slip(&self.body, &self.current.state, i);
+            }
+            if new.mode == ContactMode::Open && old.mode != ContactMode::Open {
+                self.accumulation = f64::NEG_INFINITY;
+            }
+            if let Some(kind) = kind {
+                self.events.push(TableEvent {
+                    time: self.time,
+                    contact: Some(i),
+                    kind,
+                });
+            }
+        }
+        self.current = self
+            .snapshot(self.current.state)
+            .map_err(|e| at_time(e, self.time))?;
+        self.detect_rest();
+        Ok(())
+    }
+
+    /// The modes of the contacts that touch without separating: the
+    /// acceleration-level problem (Signorini and Coulomb–Contensou on
+    /// accelerations, slipping contacts along their slip).
+    fn resolve(&self, participants: &[usize]) -> Result<Vec<Mode>, DynamicsError> {
+        let v_res = self.resolution_speed();
+        let frame = &self.current.frame;
+        let touching: Vec<usize> = participants
+            .iter()
+            .copied()
+            .filter(|&i| frame.rows[i].velocity[0] <= v_res)
+            .collect();
+        let free = (frame.free_velocity_rate, frame.free_omega_rate);
+        let mut blocks = Vec::with_capacity(touching.len());
+        let mut y_free = Vec::with_capacity(touching.len());
+        for &i in &touching {
+            let row = &frame.rows[i];
+            let slip = row.slip();
+            let sliding = row.friction_dimensions > 0
+                && self.modes[i].mode != ContactMode::Sticking
+                && slip.length() > v_res;
+            let size = 1 + row.friction_dimensions;
+            let mut y = [0.0; 4];
+            for (k, v) in y.iter_mut().enumerate().take(size) {
+                *v = frame.rate(i, k, free);
+            }
+            y_free.push(y);
+            blocks.push(Block {
+                size,
+                mu: row.mu,
+                slipping: sliding.then(|| slip.normalize()),
+            });
+        }
+        let g = |a: usize, ca: usize, b: usize, cb: usize| {
+            frame.delassus(
+                &frame.rows[touching[a]].directions[ca],
+                &frame.rows[touching[b]].directions[cb],
+            )
+        };
+        let x = solve_blocks(&blocks, &y_free, &g).map_err(|e| at_time(e, self.time))?;
+        let mut modes = vec![Mode::OPEN; self.modes.len()];
+        for ((&i, xi), block) in touching.iter().zip(&x).zip(&blocks) {
+            if xi[0].is_nan() || xi[0] <= 0.0 {
+                continue;
+            }
+            let t = DVec3::new(xi[1], xi[2], xi[3]);
+            modes[i] = if block.size == 1 {
+                Mode {
+                    mode: ContactMode::Slipping,
+                    direction: DVec3::ZERO,
+                }
+            } else if let Some(d) = block.slipping {
+                Mode {
+                    mode: ContactMode::Slipping,
+                    direction: d,
+                }
+            } else if t.length() < block.mu * xi[0] * (1.0 - 1e-12) {
+                Mode {
+                    mode: ContactMode::Sticking,
+                    direction: DVec3::ZERO,
+                }
+            } else {
+                Mode {
+                    mode: ContactMode::Slipping,
+                    direction: -t.normalize_or_zero(),
+                }
+            };
+        }
+        Ok(modes)
+    }
+
+    /// Rest: a closed contact, every closed contact sticking (or
+    /// frictionless), velocities and accelerations below the resolution.
+    fn detect_rest(&mut self) {
+        let closed: Vec<usize> = (0..self.modes.len())
+            .filter(|&i| self.modes[i].mode != ContactMode::Open)
+            .collect();
+        if closed.is_empty() {
+            return;
+        }
+        let frictional_slip = closed.iter().any(|&i| {
+            self.modes[i].mode == ContactMode::Slipping
+                && self.current.frame.rows[i].friction_dimensions > 0
+        });
+        let v_res = self.resolution_speed();
+        let a_res = TABLE_RESOLUTION * self.body.gravity();
+        let s = &self.current;
+        let still = s.state.velocity_world.length() <= v_res
+            && s.frame.omega.length() * self.length <= v_res
+            && s.forces.velocity_rate.length() <= a_res
+            && s.forces.omega_rate.length() * self.length <= a_res;
+        if still && !frictional_slip {
+            self.resting = true;
+            self.events.push(TableEvent {
+                time: self.time.max(self.accumulation),
+                contact: None,
+                kind: TableEventKind::Rest,
+            });
+        }
+    }
+}
+
+/// Whether a gap's cubic Hermite over a step of length `h` (from `g0, ġ0`
+/// to `g1, ġ1`) dips below zero, and below its start, inside the step: a
+/// graze the step's end does not show (sampled at 16 interior points).
+fn dips_below(g0: f64, d0: f64, g1: f64, d1: f64, h: f64) -> bool {
+    let floor = g0.min(0.0);
+    (1..16).any(|k| {
+        let s = f64::from(k) / 16.0;
+        let (s2, s3) = (s * s, s * s * s);
+        let value = (2.0 * s3 - 3.0 * s2 + 1.0) * g0
+            + (s3 - 2.0 * s2 + s) * h * d0
+            + (-2.0 * s3 + 3.0 * s2) * g1
+            + (s3 - s2) * h * d1;
+        value < floor
+    })
+}
