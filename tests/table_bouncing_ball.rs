@@ -136,5 +136,4 @@ fn the_bounces_accumulate_at_the_zeno_point_and_the_ball_rests() {
         );
     }
     assert!(last.2.abs() < 1e-15 && E * last.1 <= kreisel::dynamics::TABLE_ACCUMULATION * 1.0);
-    eprintln!("{} events, {:?}", run.events().len(), run.stats());
 }
