@@ -1,0 +1,334 @@
+"""Nonsmooth reference for Leine & Glocker's tippe top WITH its stem (cardillo).
+
+Writes ../contact/tippe_top_stem_reference.json (relative to this script):
+the model's parameters, and for each run (integrator, step size) the event
+times and the final state listed under "Events" below.
+
+Install and run (Python 3.11; about 40 minutes on one core)
+-----------------------------------------------------------
+cardillo's Coulomb-Contensou sphere-plane contact and its tippe-top example
+were deleted from cardillo in October 2023 (commit 6ee0290f "Removed some
+contacts."); the last commit that has both is 832f71fc (2023-10-26):
+
+    git clone https://github.com/cardilloproject/cardillo /tmp/cardillo
+    git -C /tmp/cardillo checkout 832f71fc7ba50a2db1addf5eb357f6b7094d4f82
+    python3 -m venv /tmp/cardillo-venv
+    /tmp/cardillo-venv/bin/pip install numpy==1.26.4 scipy==1.12.0 \\
+        tqdm==4.70.1 meshio==5.3.5
+    PYTHONPATH=/tmp/cardillo TQDM_DISABLE=1 \\
+        /tmp/cardillo-venv/bin/python tests/data/gen/tippe_top_stem_reference.py
+
+(cardillo 3.0.0 by its setup.py; it is imported from PYTHONPATH, not
+installed: its setup.py pins meshio to a git fork that only its VTK export
+needs, PyPI's meshio imports fine.) `--cache DIR` keeps each run's trajectory
+in DIR/<solver>_<dt>_<T>.npz and reuses it; `--runs moreau:2e-4,...` picks
+runs. numpy < 2 is needed (cardillo of 2023 predates numpy 2).
+
+Model (as cardillo's examples/nonsmooth/tippetop.py at 832f71fc, which
+cites Leine & Glocker, Eur. J. Mech. A/Solids 22 (2003) 193-216, Sect. 5)
+----------------------------------------------------------------------------
+* Rigid body: m = 6e-3 kg, inertia about the centre of mass S
+  diag(I1, I1, I3) = diag(8e-7, 8e-7, 7e-7) kg m^2 (body axes), g = 9.81.
+* Ball: radius R1 = 0.015 m, centre at (0, 0, a1) = (0, 0, 0.003) m in body
+  axes from S (so S lies a1 BELOW the ball's centre when the stem is up).
+* Stem tip: a sphere of radius R2 = 0.005 m centred at (0, 0, a2) =
+  (0, 0, 0.016) m in body axes from S (on the stem side).
+* Table: the plane z = 0, normal +z.
+* Both contacts: Signorini + Newton impact law with e_N = 0, tangential
+  restitution e_F = 0, friction mu = 0.3, Coulomb-Contensou with contact
+  radius R = 5e-4 m (Moeller, Leine & Glocker's ellipsoidal approximation):
+      generalized friction velocity  gamma_F = (v_C.t1, v_C.t2, Rbar * omega.n)
+      Rbar = (3 pi / 16) R      (Hertzian pressure over a disc of radius R;
+                                 uniform pressure would give 2/3)
+      force/torque on the body:  (F_t1, F_t2, T_n) = (l1, l2, Rbar * l3),
+      l = (l1, l2, l3) in the ball |l| <= mu * lambda_N, maximal dissipation
+      (l = prox onto that ball). So the admissible set is the ellipsoid
+          F_t1^2 + F_t2^2 + (T_n / Rbar)^2 <= (mu lambda_N)^2,
+      semi-axes mu N, mu N and mu N Rbar, and while sliding
+          F_t = -mu N v_t / s,  T_n = -mu N Rbar^2 omega_n / s,
+          s = sqrt(|v_t|^2 + Rbar^2 omega_n^2),
+      v_C the velocity of the body's point at the contact (the sphere's
+      lowest point), omega_n the angular velocity's vertical component.
+* Initial state (L&G: "all zero except z0 = 1.2015e-2 m, theta0 = 0.1 rad,
+  psi_dot0 = 180 rad/s"): orientation = rotation by theta0 about world x;
+  S at (0, 0, R1 - a1 cos theta0) = (0, 0, 0.0120149875...), at rest;
+  angular velocity 180 rad/s about the BODY symmetry axis (body (0, 0, 180)).
+  The ball touches the table, its contact point slides.
+* End time 8 s (cardillo's example; L&G's figures span 8 s).
+
+Integrators (cardillo)
+----------------------
+* MoreauClassical: midpoint Moreau-Jean time stepping, contacts active when
+  the gap at the midpoint is <= 0, fixed-point prox iteration to 1e-10.
+* Rattle: cardillo's nonsmooth RATTLE (Capobianco et al.), atol 1e-10.
+
+Events (per run; times in s, linear interpolation between samples where a
+sign change is located, else the first sample where it holds)
+--------------------------------------------------------------------------
+* t_axis_horizontal: the symmetry axis' world z-component (stem direction)
+  first drops to 0 (theta = 90 degrees).
+* t_stem_first_touch: first step with a positive stem-sphere percussion.
+* t_ball_last_contact: last step with a positive ball percussion (after it
+  the ball never touches again up to t_end); ball_contact_at_end.
+* theta at 0.5 s intervals (degrees), final state at t_end: theta, z_S,
+  omega (world), spin about the vertical, energy; energy_max_rise: the
+  largest increase of the total energy between consecutive steps (a
+  nonsmooth scheme with e_N = e_F = 0 must not create energy beyond its
+  discretization error) and energy_rises_above_1e-9_J: how many steps rose;
+  friction_*_ratio_max: max |l| / (mu P_N) over the steps a contact pushes
+  (<= 1 up to the prox iteration's tolerance); the smallest gaps.
+"""
+
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+os.environ.setdefault("TQDM_DISABLE", "1")
+
+import numpy as np  # noqa: E402
+
+OUT = Path(__file__).resolve().parent.parent / "contact" / "tippe_top_stem_reference.json"
+CARDILLO_COMMIT = "832f71fc7ba50a2db1addf5eb357f6b7094d4f82"
+
+PARAMS = dict(
+    m=6e-3,
+    I1=8e-7,
+    I3=7e-7,
+    g=9.81,
+    a1=3e-3,
+    a2=1.6e-2,
+    R1=1.5e-2,
+    R2=5e-3,
+    mu=0.3,
+    e_N=0.0,
+    e_F=0.0,
+    R_contensou=5e-4,
+    theta0=0.1,
+    omega3_body0=180.0,
+    t_end=8.0,
+)
+PARAMS["Rbar"] = 3 * np.pi / 16 * PARAMS["R_contensou"]
+PARAMS["z0"] = PARAMS["R1"] - PARAMS["a1"] * np.cos(PARAMS["theta0"])
+
+DEFAULT_RUNS = "moreau:2e-4,moreau:1e-4,moreau:5e-5,rattle:1e-3,rattle:5e-4"
+
+
+def build():
+    """cardillo system and the top's rigid body."""
+    from cardillo import System
+    from cardillo.contacts import Sphere2PlaneCoulombContensouMoeller
+    from cardillo.discrete import RigidBody
+    from cardillo.forces import Force
+    from cardillo.math import axis_angle2quat
+
+    p = PARAMS
+    q0 = np.zeros(7)
+    q0[2] = p["z0"]
+    q0[3:] = axis_angle2quat(np.array([1.0, 0.0, 0.0]), p["theta0"])
+    u0 = np.zeros(6)
+    u0[5] = p["omega3_body0"]
+    system = System()
+    top = RigidBody(p["m"], np.diag([p["I1"], p["I1"], p["I3"]]), q0=q0, u0=u0)
+    ball = Sphere2PlaneCoulombContensouMoeller(
+        system.origin, top, p["R1"], p["R_contensou"], p["mu"], p["e_N"], p["e_F"],
+        K_r_SP=np.array([0.0, 0.0, p["a1"]]),
+    )
+    stem = Sphere2PlaneCoulombContensouMoeller(
+        system.origin, top, p["R2"], p["R_contensou"], p["mu"], p["e_N"], p["e_F"],
+        K_r_SP=np.array([0.0, 0.0, p["a2"]]),
+    )
+    gravity = Force(np.array([0.0, 0.0, -p["m"] * p["g"]]), top)
+    system.add(top, ball, stem, gravity)
+    system.assemble()
+    return system, top
+
+
+def simulate(solver, dt, t_end, cache):
+    """(t, q, u, P_N, P_F, wall seconds) of one run, from the cache if there."""
+    name = f"{solver}_{dt:g}_{t_end:g}.npz"
+    if cache is not None and (cache / name).exists():
+        d = np.load(cache / name)
+        return d["t"], d["q"], d["u"], d["P_N"], d["P_F"], float(d.get("wall", np.nan))
+    from cardillo.solver import MoreauClassical, Rattle
+
+    system, _ = build()
+    start = time.time()
+    if solver == "moreau":
+        sol = MoreauClassical(system, t_end, dt, atol=1e-10, max_iter=1000).solve()
+    elif solver == "rattle":
+        sol = Rattle(system, t_end, dt, atol=1e-10).solve()
+    else:
+        raise SystemExit(f"unknown solver {solver!r} (moreau or rattle)")
+    wall = time.time() - start
+    out = (sol.t, sol.q, sol.u, sol.P_N, sol.P_F, wall)
+    if cache is not None:
+        cache.mkdir(parents=True, exist_ok=True)
+        np.savez(cache / name, t=sol.t, q=sol.q, u=sol.u, P_N=sol.P_N, P_F=sol.P_F, wall=wall)
+    return out
+
+
+def rotation(quat):
+    """world_from_body of a unit quaternion (w, x, y, z)."""
+    w, x, y, z = quat / np.linalg.norm(quat)
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+
+
+def crossing(t, f):
+    """First time f goes from > 0 to <= 0 (linear interpolation), or None."""
+    idx = np.nonzero((f[:-1] > 0) & (f[1:] <= 0))[0]
+    if len(idx) == 0:
+        return None
+    i = idx[0]
+    return float(t[i] + (t[i + 1] - t[i]) * f[i] / (f[i] - f[i + 1]))
+
+
+def analyse(t, q, u, P_N, P_F):
+    p = PARAMS
+    mats = np.array([rotation(qi[3:]) for qi in q])
+    axis_z = mats[:, 2, 2]
+    theta = np.arccos(np.clip(axis_z, -1.0, 1.0))
+    gap_ball = q[:, 2] + p["a1"] * axis_z - p["R1"]
+    gap_stem = q[:, 2] + p["a2"] * axis_z - p["R2"]
+    inertia = np.array([p["I1"], p["I1"], p["I3"]])
+    energy = (
+        0.5 * p["m"] * np.sum(u[:, :3] ** 2, axis=1)
+        + 0.5 * np.sum(inertia * u[:, 3:] ** 2, axis=1)
+        + p["m"] * p["g"] * q[:, 2]
+    )
+    omega_world = np.einsum("nij,nj->ni", mats, u[:, 3:])
+    ball_on = P_N[:, 0] > 0
+    stem_on = P_N[:, 1] > 0
+    stem_idx = np.nonzero(stem_on)[0]
+    ball_idx = np.nonzero(ball_on)[0]
+    rises = np.diff(energy)
+    # cardillo's friction percussions: 3 per contact (l1, l2, l3), |l| <= mu P_N
+    cone = []
+    for k in range(2):
+        lam = np.linalg.norm(P_F[:, 3 * k : 3 * k + 3], axis=1)
+        on = P_N[:, k] > 1e-14
+        cone.append(float(np.max(lam[on] / (p["mu"] * P_N[on, k]))) if on.any() else None)
+    samples = {}
+    for ts in np.arange(0.5, t[-1] + 1e-9, 0.5):
+        i = int(np.argmin(np.abs(t - ts)))
+        samples[f"{ts:g}"] = float(np.degrees(theta[i]))
+    return dict(
+        t_axis_horizontal=crossing(t, axis_z),
+        t_stem_first_touch=float(t[stem_idx[0]]) if len(stem_idx) else None,
+        t_stem_gap_first_nonpositive=crossing(t, gap_stem),
+        t_ball_last_contact=float(t[ball_idx[-1]]) if len(ball_idx) else None,
+        ball_contact_at_end=bool(ball_on[-1]),
+        stem_contact_at_end=bool(stem_on[-1]),
+        ball_contact_steps_after_stem_touch=(
+            int(np.sum(ball_on[stem_idx[0]:])) if len(stem_idx) else None
+        ),
+        theta_deg_every_half_second=samples,
+        theta_deg_max=float(np.degrees(theta.max())),
+        end=dict(
+            t=float(t[-1]),
+            theta_deg=float(np.degrees(theta[-1])),
+            z_com=float(q[-1, 2]),
+            gap_ball=float(gap_ball[-1]),
+            gap_stem=float(gap_stem[-1]),
+            omega_world=[float(x) for x in omega_world[-1]],
+            omega_body=[float(x) for x in u[-1, 3:]],
+            v_com=[float(x) for x in u[-1, :3]],
+            energy=float(energy[-1]),
+        ),
+        energy_start=float(energy[0]),
+        energy_max_rise=float(rises.max()),
+        energy_rises_above_1e_9_J=int(np.sum(rises > 1e-9)),
+        friction_ball_ratio_max=cone[0],
+        friction_stem_ratio_max=cone[1],
+        min_gap_ball=float(gap_ball.min()),
+        min_gap_stem=float(gap_stem.min()),
+    )
+
+
+def versions():
+    import scipy
+
+    out = dict(
+        reference_code="cardillo (github.com/cardilloproject/cardillo)",
+        cardillo_commit=CARDILLO_COMMIT,
+        cardillo_version="3.0.0 (setup.py at that commit)",
+        cardillo_files=[
+            "examples/nonsmooth/tippetop.py (parameters, lines 29-53, 79-83)",
+            "cardillo/contacts/sphere2plane.py (Sphere2PlaneCoulombContensouMoeller, lines 291-490)",
+            "cardillo/solver/moreau.py (MoreauClassical, lines 554-)",
+            "cardillo/solver/rattle.py (Rattle)",
+        ],
+        python=platform.python_version(),
+        numpy=np.__version__,
+        scipy=scipy.__version__,
+    )
+    try:
+        import cardillo
+
+        root = Path(cardillo.__file__).resolve().parent.parent
+        head = subprocess.run(
+            ["git", "-C", str(root), "rev-parse", "HEAD"],
+            capture_output=True, text=True, check=False,
+        ).stdout.strip()
+        if head:
+            out["cardillo_checkout_head"] = head
+    except Exception:  # noqa: BLE001 (a tarball export has no git)
+        pass
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--runs", default=DEFAULT_RUNS)
+    ap.add_argument("--cache", type=Path, default=None)
+    ap.add_argument("--t-end", type=float, default=PARAMS["t_end"])
+    args = ap.parse_args()
+    runs = []
+    for spec in args.runs.split(","):
+        solver, dt = spec.split(":")
+        t, q, u, P_N, P_F, wall = simulate(solver, float(dt), args.t_end, args.cache)
+        ev = analyse(t, q, u, P_N, P_F)
+        ev.update(solver=solver, dt=float(dt), wall_seconds=wall)
+        runs.append(ev)
+        print(json.dumps({k: ev[k] for k in (
+            "solver", "dt", "t_axis_horizontal", "t_stem_first_touch",
+            "t_ball_last_contact", "energy_max_rise")}), flush=True)
+        print("   end:", json.dumps(ev["end"]), flush=True)
+    doc = dict(
+        description=(
+            "Leine & Glocker (2003) tippe top with stem on the table z = 0, "
+            "Coulomb-Contensou friction (ellipsoid, Rbar = 3 pi/16 R), e_N = e_F = 0, "
+            "simulated with cardillo's nonsmooth integrators; see "
+            "tests/data/gen/tippe_top_stem_reference.py for the model and the events"
+        ),
+        parameters=PARAMS,
+        initial_state=dict(
+            quaternion_wxyz=[float(np.cos(PARAMS["theta0"] / 2)), float(np.sin(PARAMS["theta0"] / 2)), 0.0, 0.0],
+            com=[0.0, 0.0, PARAMS["z0"]],
+            v_com=[0.0, 0.0, 0.0],
+            omega_body=[0.0, 0.0, PARAMS["omega3_body0"]],
+        ),
+        friction_law=(
+            "(F_t1, F_t2, T_n) = (l1, l2, Rbar l3), |l| <= mu lambda_N, "
+            "l = -mu lambda_N gamma/|gamma| when sliding, gamma = (v_t1, v_t2, Rbar omega_n), "
+            "Rbar = 3 pi / 16 * R_contensou"
+        ),
+        code=versions(),
+        runs=runs,
+    )
+    OUT.write_text(json.dumps(doc, indent=1) + "\n")
+    print("wrote", OUT)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
