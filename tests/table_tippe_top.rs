@@ -81,7 +81,7 @@ fn inverts_lands_on_the_stem_and_the_times_converge() {
     // Each tenfold tightening moves the landing less; the last by < 1e-8 s.
     let steps: Vec<f64> = strikes.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
     assert!(steps[3] < 1e-8 && steps[3] < steps[0], "{strikes:?}");
-    assert!((strikes[4] - 1.3733).abs() < 1e-3, "{strikes:?}");
+    assert!((strikes[4] - 1.3710).abs() < 1e-3, "{strikes:?}");
 }
 
 #[test]

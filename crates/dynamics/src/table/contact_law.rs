@@ -7,7 +7,7 @@ use crate::DynamicsError;
 /// Friction and restitution of one contact with the table.
 ///
 /// ```text
-/// slip:      γ = (v_Px, v_Py, ε ω_z),   ε = ⅔ r_c     (r_c = contensou_radius)
+/// slip:      γ = (v_Px, v_Py, ε ω_z),   ε = (3π/16) r_c     (r_c = contensou_radius)
 /// friction:  Λ = (F_x, F_y, M_z/ε),     |Λ| ≤ μ N,   Λ = −μ N γ/|γ| when γ ≠ 0
 /// impact:    ξ_N = γ_N⁺ + e γ_N⁻ ≥ 0,  P_N ≥ 0,  ξ_N P_N = 0
 ///            ξ_T = γ_T⁺ + e_T γ_T⁻,    P_T = −μ P_N ξ_T/|ξ_T| (|P_T| ≤ μ P_N when ξ_T = 0)
@@ -18,10 +18,13 @@ use crate::DynamicsError;
 /// `P` the impulses of an impact. With `r_c = 0` the law is Coulomb's
 /// point contact (stick while `|F| < μ N`, slip against `v_P`); with
 /// `r_c > 0` it is Contensou's friction of a circular patch of radius `r_c`
-/// under uniform pressure, whose pure-spin torque is `⅔ μ N r_c` (so
-/// `ε = ⅔ r_c`) — Leine & Glocker's ellipsoidal approximation of the
-/// exact Contensou integrals (Eur. J. Mech. A/Solids 22 (2003) 193,
-/// §4): one friction cone in the three slip rates `(v_Px, v_Py, ε ω_z)`.
+/// under Hertz's pressure, whose pure-spin torque is `(3π/16) μ N r_c` (so
+/// `ε = (3π/16) r_c`; uniform pressure would give `⅔ r_c`) — Leine &
+/// Glocker's ellipsoidal approximation of the exact Contensou integrals
+/// (Eur. J. Mech. A/Solids 22 (2003) 193, §4, as cardillo's tippe-top
+/// example writes it): one friction cone in the three slip rates
+/// `(v_Px, v_Py, ε ω_z)`, the admissible set the ellipsoid
+/// `F_x² + F_y² + (M_z/ε)² ≤ (μ N)²`.
 /// The impact law is Newton's in Glocker's form (*Set-Valued Force Laws*,
 /// 2001, ch. 7): `e` the normal restitution (0 plastic, 1 elastic), `e_T`
 /// the tangential one (0: the slip after the impact is the one friction
@@ -32,7 +35,7 @@ use crate::DynamicsError;
 /// use kreisel_dynamics::ContactLaw;
 /// let law = ContactLaw::try_new(0.3)?.try_with_restitution(0.5)?.try_with_contensou_radius(5e-4)?;
 /// assert_eq!(law.mu(), 0.3);
-/// assert!((law.drilling_arm() - 2.0 / 3.0 * 5e-4).abs() < 1e-20);
+/// assert!((law.drilling_arm() - 3.0 * std::f64::consts::PI / 16.0 * 5e-4).abs() < 1e-20);
 /// assert!(ContactLaw::try_new(-0.1).is_err());
 /// assert!(ContactLaw::try_new(0.3)?.try_with_restitution(1.5).is_err());
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
@@ -166,10 +169,10 @@ impl ContactLaw {
         self.contensou_radius
     }
 
-    /// The drilling lever `ε = ⅔ r_c`, m: the pure-spin friction torque
-    /// of the patch per newton of friction, `M_z = −ε μ N sgn ω_z`.
+    /// The drilling lever `ε = (3π/16) r_c`, m: the pure-spin friction
+    /// torque of the patch per newton of friction, `M_z = −ε μ N sgn ω_z`.
     pub fn drilling_arm(&self) -> f64 {
-        2.0 / 3.0 * self.contensou_radius
+        3.0 * std::f64::consts::PI / 16.0 * self.contensou_radius
     }
 
     /// How many friction directions the law has: 0 (frictionless), 2
