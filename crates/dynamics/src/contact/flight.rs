@@ -24,17 +24,51 @@ pub struct Landing {
     pub approach_speed: f64,
 }
 
-/// The exact flight from one state.
-struct Flight {
+/// The exact flight from one state: the centre of mass on its parabola,
+/// the rotation torque-free ([`ExactSolution`]).
+#[derive(Debug, Clone)]
+pub(crate) struct Flight {
     start: GroundTopState,
     exact: ExactSolution,
     body_from_principal: DQuat,
     gravity: f64,
+    /// The fastest possible turn, `|L|/I_min`, rad/s.
+    pub(crate) fastest_turn: f64,
 }
 
 impl Flight {
+    /// The flight of a body with inertia `inertia_body` (about its centre
+    /// of mass, body axes) from `state` under gravity `g`.
+    ///
+    /// # Errors
+    /// Those of [`RigidBody::try_from_inertia_tensor`] and
+    /// [`ExactSolution::try_new`].
+    pub(crate) fn try_new(
+        inertia_body: glam::DMat3,
+        state: &GroundTopState,
+        gravity: f64,
+    ) -> Result<Self, DynamicsError> {
+        let body = RigidBody::try_from_inertia_tensor(inertia_body)?;
+        let (moments, body_from_principal) = (body.principal_moments(), body.body_from_principal());
+        let world_from_principal = state.world_from_body.normalize() * body_from_principal;
+        let exact = ExactSolution::try_new(
+            moments,
+            PrincipalState {
+                world_from_principal,
+                l_principal: world_from_principal.conjugate() * state.l_world,
+            },
+        )?;
+        Ok(Self {
+            start: *state,
+            exact,
+            body_from_principal,
+            gravity,
+            fastest_turn: state.l_world.length() / moments.min_element(),
+        })
+    }
+
     /// The state `tau` seconds into the flight.
-    fn at(&self, tau: f64) -> GroundTopState {
+    pub(crate) fn at(&self, tau: f64) -> GroundTopState {
         let p = self.exact.state_at(tau);
         let s = &self.start;
         GroundTopState {
@@ -132,24 +166,9 @@ impl GroundTop {
                 reason: "the flight is the exact torque-free motion: not with applied inputs",
             });
         }
-        let body = RigidBody::try_from_inertia_tensor(self.inertia_body())?;
-        let (moments, body_from_principal) = (body.principal_moments(), body.body_from_principal());
-        let world_from_principal = state.world_from_body.normalize() * body_from_principal;
-        let exact = ExactSolution::try_new(
-            moments,
-            PrincipalState {
-                world_from_principal,
-                l_principal: world_from_principal.conjugate() * state.l_world,
-            },
-        )?;
-        let flight = Flight {
-            start: *state,
-            exact,
-            body_from_principal,
-            gravity: self.gravity(),
-        };
+        let flight = Flight::try_new(self.inertia_body(), state, self.gravity())?;
         let span = t_end - t0;
-        let fastest = state.l_world.length() / moments.min_element();
+        let fastest = flight.fastest_turn;
         let dt = if fastest > 0.0 {
             (1.0 / (SAMPLES_PER_RADIAN * fastest)).min(span)
         } else {

@@ -258,6 +258,7 @@ pub use self::contact_shape::ContactShape;
 pub use self::disk_contact::DiskContact;
 pub use self::ellipsoid_contact::EllipsoidContact;
 pub use self::flight::Landing;
+pub(crate) use self::flight::Flight;
 pub use self::friction::{Friction, FrictionModel};
 pub use self::ground_check::{GROUND_CHECK_TOLERANCE, GroundCheck, GroundViolation};
 pub(crate) use self::ground_top::check_mass_properties;

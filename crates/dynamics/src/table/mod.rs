@@ -8,8 +8,9 @@
 //! - [`TableBody`], [`TableContact`]: the body and its shapes
 //!   ([`crate::ContactShape`]: spheres, disk rims, ellipsoids);
 //! - [`TableMotion`]: the event-driven run (Dormand–Prince 5(4) with error
-//!   control between events; lift-off, touchdown, impacts, stick and slip
-//!   located to rounding), [`TableEvent`]s while it goes on;
+//!   control between events in contact, the exact flight between contacts;
+//!   lift-off, touchdown, impacts, stick and slip located to rounding),
+//!   [`TableEvent`]s while it goes on;
 //! - [`ContactMode`]: open, slipping or sticking.
 //!
 //! # The model
@@ -36,9 +37,8 @@
 //!
 //! # What it does not do (yet)
 //! A disk lying flat on its face, rolling resistance and applied loads
-//! are not modelled here; free flight is integrated by the same
-//! error-controlled method (exact for the centre of mass's parabola, to
-//! the tolerance for the rotation).
+//! are not modelled here. Free flight is exact (parabola and the
+//! torque-free [`crate::ExactSolution`]).
 
 mod contact_frame;
 mod contact_law;
