@@ -10,33 +10,11 @@ mod common;
 
 use glam::{DMat3, DVec3};
 use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactMode, ContactShape, Friction, GroundTop, SphereContact,
-    TableBody, TableContact, TableEventKind, TableMotion,
+    AdaptiveTolerance, ContactLaw, ContactMode, Friction, GroundTop, SphereContact, TableEventKind,
+    TableMotion,
 };
 
-use common::tippe_top::{A, G, I1, I3, M, MU, R, leine_glocker, stem};
-
-/// The top with ball and stem, each with `law`, in Leine & Glocker's start.
-fn tippe_top(law: ContactLaw, rtol: f64) -> TableMotion {
-    let ball = ContactShape::Sphere(SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap());
-    let body = TableBody::try_new(
-        M,
-        DMat3::from_diagonal(DVec3::new(I1, I1, I3)),
-        vec![
-            TableContact { shape: ball, law },
-            TableContact { shape: stem(), law },
-        ],
-        G,
-    )
-    .unwrap();
-    let (_, start) = leine_glocker(Friction::None);
-    TableMotion::try_new(body, start, AdaptiveTolerance::new(rtol, rtol)).unwrap()
-}
-
-/// Leine & Glocker's law: μ = 0.3, Contensou radius 0.5 mm, plastic.
-fn contensou() -> ContactLaw {
-    ContactLaw::new(MU).try_with_contensou_radius(5e-4).unwrap()
-}
+use common::tippe_top::{A, G, I1, I3, M, MU, R, contensou_law, table_motion};
 
 /// The time of the first event of `kind` at `contact`.
 fn first(run: &TableMotion, contact: usize, pick: fn(&TableEventKind) -> bool) -> Option<f64> {
@@ -62,7 +40,7 @@ fn tilt(run: &TableMotion) -> f64 {
 fn inverts_lands_on_the_stem_and_the_times_converge() {
     let mut strikes = Vec::new();
     for rtol in [1e-7, 1e-8, 1e-9, 1e-10, 1e-11] {
-        let mut run = tippe_top(contensou(), rtol);
+        let mut run = table_motion(contensou_law(), rtol);
         // Past the horizontal, up to the stem's landing, then on the stem.
         run.try_advance_to(1.2).unwrap();
         assert!(
@@ -90,16 +68,16 @@ fn the_energy_never_rises_with_plastic_or_elastic_impacts_at_two_contacts() {
     // and the stem — can gain energy; here every impact is checked and the
     // motion between them only dissipates.
     let laws = [
-        contensou().try_with_restitution(0.5).unwrap(),
-        contensou(),
-        contensou()
+        contensou_law().try_with_restitution(0.5).unwrap(),
+        contensou_law(),
+        contensou_law()
             .try_with_restitution(1.0)
             .unwrap()
             .try_with_tangential_restitution(1.0)
             .unwrap(),
     ];
     for law in laws {
-        let mut run = tippe_top(law, 1e-10);
+        let mut run = table_motion(law, 1e-10);
         let e0 = run.body().energy(run.state());
         let mut previous = e0;
         for k in 1..=6000 {
@@ -127,7 +105,7 @@ fn under_point_coulomb_friction_the_top_sticks_rolls_and_never_inverts() {
     // Without Contensou's drilling friction the slip stops within 40 ms and
     // the top then rolls without slipping: energy and Jellett's integral
     // constant, no inversion.
-    let mut run = tippe_top(ContactLaw::new(MU), 1e-11);
+    let mut run = table_motion(ContactLaw::new(MU), 1e-11);
     let lambda0 = run.body().jellett(run.state(), 0);
     run.try_advance_to(0.1).unwrap();
     let stick = first(&run, 0, |k| *k == TableEventKind::Stick).expect("the slip stops");
@@ -152,7 +130,7 @@ fn once_it_sticks_it_rolls_as_the_rolling_model_says() {
     // (K F = b for the whole contact force); started from the state where
     // the nonsmooth run sticks, both give the same motion.
     let tol = 1e-12;
-    let mut run = tippe_top(ContactLaw::new(MU), tol);
+    let mut run = table_motion(ContactLaw::new(MU), tol);
     while run.try_advance_until_event(0.1).unwrap() {
         if run.events().last().unwrap().kind == TableEventKind::Stick {
             break;

@@ -129,3 +129,34 @@ pub fn touchdown_reference(scenario: &str) -> Touchdown {
         },
     }
 }
+
+/// Leine & Glocker's contact law with Contensou's drilling friction:
+/// μ = 0.3, Contensou radius 0.5 mm, plastic impacts.
+pub fn contensou_law() -> kreisel::dynamics::ContactLaw {
+    kreisel::dynamics::ContactLaw::new(MU)
+        .try_with_contensou_radius(5e-4)
+        .unwrap()
+}
+
+/// The top with its ball and its stem on the table, each contact with
+/// `law`, in Leine & Glocker's start (tilted θ₀, spinning ω₀, at rest),
+/// run by the nonsmooth engine at `rtol` (= atol).
+pub fn table_motion(
+    law: kreisel::dynamics::ContactLaw,
+    rtol: f64,
+) -> kreisel::dynamics::TableMotion {
+    use kreisel::dynamics::{AdaptiveTolerance, TableBody, TableContact, TableMotion};
+    let ball = ContactShape::Sphere(SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap());
+    let body = TableBody::try_new(
+        M,
+        DMat3::from_diagonal(DVec3::new(I1, I1, I3)),
+        vec![
+            TableContact { shape: ball, law },
+            TableContact { shape: stem(), law },
+        ],
+        G,
+    )
+    .unwrap();
+    let (_, start) = leine_glocker(Friction::None);
+    TableMotion::try_new(body, start, AdaptiveTolerance::new(rtol, rtol)).unwrap()
+}

@@ -520,23 +520,82 @@ impl TableMotion {
         Ok(false)
     }
 
-    /// The earliest length `τ ≤ h` by which an event has happened
-    /// (bisection to a few ulps of the time), and the state there.
+    /// A continuous measure of how far `end` is from the events the
+    /// predicates of [`TableMotion::event_in`] look for (each normalised by
+    /// the body's units; the smallest): the gaps of open contacts that
+    /// start above the plane, the normal forces of closed ones, the
+    /// friction's room in the cone of sticking ones, the slip along its
+    /// start direction of slipping ones. It steers the location, the
+    /// predicates decide it.
+    fn event_value(&self, end: &Snapshot) -> f64 {
+        let start = &self.current;
+        let floor = self.resolution_speed();
+        let weight = self.body.mass() * self.body.gravity();
+        let mut value = f64::INFINITY;
+        for (i, mode) in self.modes.iter().enumerate() {
+            let (r0, r1) = (&start.frame.rows[i], &end.frame.rows[i]);
+            let n = end.forces.normal[i];
+            let v = match mode.mode {
+                ContactMode::Open if r0.gap >= 0.0 => r1.gap / self.length,
+                ContactMode::Open => f64::INFINITY,
+                ContactMode::Sticking => {
+                    (n.min(r1.mu * n - end.forces.friction[i].length())) / weight
+                }
+                ContactMode::Slipping if r1.friction_dimensions > 0 => {
+                    let d0 = super::contact_problem::slip_direction(r0.slip(), mode, floor);
+                    (n / weight).min(r1.slip().dot(d0) / self.speed)
+                }
+                ContactMode::Slipping => n / weight,
+            };
+            value = value.min(v);
+        }
+        value
+    }
+
+    /// The earliest length `τ ≤ h` by which an event has happened, to a
+    /// few ulps of the time, and the state there: the predicates bracket
+    /// it, regula falsi on [`TableMotion::event_value`] (Illinois) picks
+    /// the next trial, bisection where that does not halve the bracket.
     fn locate(&mut self, h: f64, at_h: Snapshot) -> Result<(f64, Snapshot), DynamicsError> {
-        let (mut lo, mut hi, mut end) = (0.0, h, at_h);
+        let (mut lo, mut hi) = (0.0, h);
+        let mut f_lo = self.event_value(&self.current);
+        let mut f_hi = self.event_value(&at_h);
+        let mut end = at_h;
         let resolution = 2.0 * f64::EPSILON * (self.time.abs() + h);
+        let (mut side, mut bisect) = (0i8, false);
         while hi - lo > resolution {
-            let mid = 0.5 * (lo + hi);
+            let secant = lo + (hi - lo) * f_lo / (f_lo - f_hi);
+            let usable = f_lo > 0.0 && f_hi <= 0.0 && secant > lo && secant < hi;
+            // Bisect after a secant trial that did not halve the bracket.
+            let mid = if usable && !bisect {
+                secant
+            } else {
+                0.5 * (lo + hi)
+            };
             if mid <= lo || mid >= hi {
                 break;
             }
+            let width = hi - lo;
+            let secant_trial = usable && !bisect;
             let trial = self.trial(mid).map_err(|e| at_time(e, self.time + mid))?;
+            let value = self.event_value(&trial.end);
             if self.event_in(&trial.end, mid) {
                 hi = mid;
+                f_hi = value.min(0.0);
                 end = trial.end;
+                if side == -1 {
+                    f_lo *= 0.5;
+                }
+                side = -1;
             } else {
                 lo = mid;
+                f_lo = value.max(f64::MIN_POSITIVE);
+                if side == 1 {
+                    f_hi *= 0.5;
+                }
+                side = 1;
             }
+            bisect = secant_trial && hi - lo > 0.5 * width;
         }
         Ok((hi, end))
     }

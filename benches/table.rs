@@ -1,0 +1,82 @@
+//! Criterion timings of the nonsmooth table (`kreisel::dynamics::TableMotion`,
+//! issue 26) on the shared test problems: Leine & Glocker's tippe top with
+//! its stem (Coulomb–Contensou friction, plastic impacts) run for 8 s of
+//! game frames (480 calls of 1/60 s) at two tolerances, and a ball dropped
+//! from 1 m with e = 0.9 run to rest (≈ 130 bounces, the Zeno point).
+//!
+//! ```text
+//! cargo bench --bench table
+//! ```
+//!
+//! The real-time factor is 8 s over the measured time; the MuJoCo side by
+//! side is `benches/mujoco_table.py` (BENCHMARKS.md, "Tops on a table,
+//! start to finish (issue #26)").
+
+use std::hint::black_box;
+use std::time::Duration;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use glam::{DMat3, DQuat, DVec3};
+use kreisel::dynamics::{
+    AdaptiveTolerance, ContactLaw, ContactShape, GroundTopState, SphereContact, TableBody,
+    TableContact, TableMotion,
+};
+
+#[allow(dead_code)]
+#[path = "../tests/common/tippe_top.rs"]
+mod tippe_top;
+
+use tippe_top::{contensou_law, table_motion};
+
+fn tippe_top_frames(c: &mut Criterion) {
+    let mut group = c.benchmark_group("table_tippe_top_stem_8s_at_1_60");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(3));
+    for rtol in [1e-8, 1e-10] {
+        group.bench_function(format!("rtol_{rtol:e}"), |b| {
+            b.iter(|| {
+                let mut run = table_motion(contensou_law(), black_box(rtol));
+                for frame in 1..=480 {
+                    run.try_advance_to(f64::from(frame) / 60.0).unwrap();
+                }
+                run
+            })
+        });
+    }
+    group.finish();
+}
+
+fn ball_to_rest(c: &mut Criterion) {
+    let mut group = c.benchmark_group("table_ball_e0.9_to_rest");
+    group.sample_size(20);
+    let shape = ContactShape::Sphere(SphereContact::try_new(0.1, DVec3::ZERO).unwrap());
+    let law = ContactLaw::new(0.0).try_with_restitution(0.9).unwrap();
+    let body = TableBody::try_new(
+        0.5,
+        DMat3::from_diagonal(DVec3::splat(0.002)),
+        vec![TableContact { shape, law }],
+        9.81,
+    )
+    .unwrap();
+    let start = GroundTopState {
+        com_world: DVec3::new(0.0, 0.0, 1.0),
+        velocity_world: DVec3::ZERO,
+        world_from_body: DQuat::IDENTITY,
+        l_world: DVec3::ZERO,
+    };
+    group.bench_function("rtol_1e-12", |b| {
+        b.iter(|| {
+            let tol = AdaptiveTolerance::new(1e-12, 1e-12);
+            let mut run = TableMotion::try_new(body.clone(), start, tol).unwrap();
+            run.try_advance_to(10.0).unwrap();
+            assert!(run.is_resting());
+            run
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, tippe_top_frames, ball_to_rest);
+criterion_main!(benches);
