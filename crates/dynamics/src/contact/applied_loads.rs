@@ -26,6 +26,36 @@ impl PartialEq for AppliedLoads {
 }
 
 impl AppliedLoads {
+    /// The loads of `inputs` on a body of `mass` kg with inertia
+    /// `inertia_body` (about its centre of mass, body axes) under gravity
+    /// `g` along −z; `None` for no inputs.
+    ///
+    /// # Errors
+    /// [`Inputs::validate`]'s, [`RigidBody::try_from_inertia_tensor`]'s
+    /// and [`ForcedBody::try_new`]'s.
+    pub(crate) fn try_new(
+        inertia_body: glam::DMat3,
+        mass: f64,
+        gravity: f64,
+        inputs: Inputs,
+    ) -> Result<Option<Self>, DynamicsError> {
+        inputs.validate()?;
+        if inputs.is_none() {
+            return Ok(None);
+        }
+        let body = RigidBody::try_from_inertia_tensor(inertia_body)?;
+        let forced = ForcedBody::try_new(body, mass, DVec3::new(0.0, 0.0, -gravity), inputs)?;
+        Ok(Some(Self {
+            forced: Arc::new(forced),
+            body_from_principal: body.body_from_principal(),
+        }))
+    }
+
+    /// The inputs these loads come from.
+    pub(crate) fn inputs(&self) -> &Inputs {
+        self.forced.inputs()
+    }
+
     /// Torque about the centre of mass and force through it, world axes,
     /// at `(t, state)`.
     pub(crate) fn at(&self, t: f64, state: &GroundTopState) -> (DVec3, DVec3) {
@@ -81,25 +111,14 @@ impl GroundTop {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn try_with_inputs(self, inputs: Inputs) -> Result<Self, DynamicsError> {
-        inputs.validate()?;
         let mut top = self;
-        top.loads = if inputs.is_none() {
-            None
-        } else {
-            let body = RigidBody::try_from_inertia_tensor(top.inertia_body())?;
-            let gravity = DVec3::new(0.0, 0.0, -top.gravity());
-            let forced = ForcedBody::try_new(body, top.mass(), gravity, inputs)?;
-            Some(AppliedLoads {
-                forced: Arc::new(forced),
-                body_from_principal: body.body_from_principal(),
-            })
-        };
+        top.loads = AppliedLoads::try_new(top.inertia_body(), top.mass(), top.gravity(), inputs)?;
         Ok(top)
     }
 
     /// The applied inputs (`None`: nothing but gravity and the contact).
     pub fn inputs(&self) -> Option<&Inputs> {
-        self.loads.as_ref().map(|l| l.forced.inputs())
+        self.loads.as_ref().map(AppliedLoads::inputs)
     }
 
     /// The applied torque about the centre of mass and force through it at

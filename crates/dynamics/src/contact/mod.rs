@@ -251,9 +251,10 @@ mod sphere_contact;
 mod touchdown;
 
 pub(crate) use self::adaptive::{
-    A as DOPRI_A, B_HAT as DOPRI_B_HAT, MAX_GROWTH, MIN_SHRINK, SAFETY,
+    A as DOPRI_A, B_HAT as DOPRI_B_HAT, C as DOPRI_C, MAX_GROWTH, MIN_SHRINK, SAFETY,
 };
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
+pub(crate) use self::applied_loads::AppliedLoads;
 pub use self::contact_shape::ContactShape;
 pub use self::disk_contact::DiskContact;
 pub use self::ellipsoid_contact::EllipsoidContact;

@@ -91,16 +91,20 @@ pub(crate) struct ContactFrame {
     pub(crate) omega: DVec3,
     pub(crate) inverse_mass: f64,
     pub(crate) inverse_inertia_world: DMat3,
-    /// `v̇_G` and `L̇` without contact forces: gravity (no torque).
+    /// `v̇_G` without contact forces: gravity and the applied force,
+    /// `−g ẑ + F/m`.
     pub(crate) free_velocity_rate: DVec3,
-    /// `ω̇` without contact torques: `I_w⁻¹ (L × ω)`.
+    /// `ω̇` without contact torques: `I_w⁻¹ (L × ω + τ)`.
     pub(crate) free_omega_rate: DVec3,
+    /// The applied torque `τ` (part of `L̇`).
+    pub(crate) applied_torque: DVec3,
     pub(crate) rows: Vec<ContactRow>,
 }
 
 impl ContactFrame {
-    /// The frame of `state` (attitude read through `q/|q|`).
-    pub(crate) fn of(body: &TableBody, state: &GroundTopState) -> Self {
+    /// The frame of `state` at time `t` (attitude read through `q/|q|`;
+    /// `t` only where applied inputs depend on it).
+    pub(crate) fn of(body: &TableBody, state: &GroundTopState, t: f64) -> Self {
         let q: DQuat = state.world_from_body.normalize();
         let inverse_inertia_world = body.inverse_inertia_world(q);
         let omega = inverse_inertia_world * state.l_world;
@@ -134,12 +138,14 @@ impl ContactFrame {
                 }
             })
             .collect();
+        let (torque, force) = body.applied_world(t, state);
         Self {
             omega,
             inverse_mass: 1.0 / body.mass(),
             inverse_inertia_world,
-            free_velocity_rate: -body.gravity() * DVec3::Z,
-            free_omega_rate: inverse_inertia_world * state.l_world.cross(omega),
+            free_velocity_rate: force / body.mass() - body.gravity() * DVec3::Z,
+            free_omega_rate: inverse_inertia_world * (state.l_world.cross(omega) + torque),
+            applied_torque: torque,
             rows,
         }
     }
@@ -199,7 +205,7 @@ mod tests {
         // Any accelerations: move the state along them to second order.
         let accel = (DVec3::new(0.3, -1.0, 2.0), DVec3::new(40.0, -25.0, 10.0));
         let at = |h: f64| {
-            let f = ContactFrame::of(&body, &state);
+            let f = ContactFrame::of(&body, &state, 0.0);
             let omega = f.omega + accel.1 * h;
             let q = DQuat::from_scaled_axis(f.omega * h + 0.5 * accel.1 * h * h)
                 * state.world_from_body;
@@ -213,9 +219,9 @@ mod tests {
                 world_from_body: q,
                 l_world: l,
             };
-            ContactFrame::of(&body, &s)
+            ContactFrame::of(&body, &s, 0.0)
         };
-        let f0 = ContactFrame::of(&body, &state);
+        let f0 = ContactFrame::of(&body, &state, 0.0);
         let h = 1e-6;
         let (fp, fm) = (at(h), at(-h));
         for k in 0..4 {

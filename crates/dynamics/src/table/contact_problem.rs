@@ -182,7 +182,7 @@ pub(crate) fn mode_forces(
     let (dv, dw) = frame.response(&total);
     out.velocity_rate = frame.free_velocity_rate + dv;
     out.omega_rate = frame.free_omega_rate + dw;
-    out.l_rate = total.torque;
+    out.l_rate = total.torque + frame.applied_torque;
     Ok(out)
 }
 

@@ -49,7 +49,7 @@ pub(crate) fn impact(
     resolution_speed: f64,
     time: f64,
 ) -> Result<ImpactOutcome, DynamicsError> {
-    let frame = ContactFrame::of(body, state);
+    let frame = ContactFrame::of(body, state, time);
     let free = (frame.free_velocity_rate, frame.free_omega_rate);
     let mut blocks = Vec::with_capacity(participants.len());
     let mut y_free = Vec::with_capacity(participants.len());
@@ -147,7 +147,8 @@ pub(crate) fn at_time(e: DynamicsError, time: f64) -> DynamicsError {
 /// The impulse `P_T = −G_TT⁻¹ γ_T` that stops the residual slip of a
 /// contact that starts to stick (dissipative: `ΔT = −½ γ_Tᵀ G_TT⁻¹ γ_T`).
 pub(crate) fn stop_slip(body: &TableBody, state: &GroundTopState, i: usize) -> GroundTopState {
-    let frame = ContactFrame::of(body, state);
+    // Impulses only: the velocities, not the (time-dependent) loads, matter.
+    let frame = ContactFrame::of(body, state, 0.0);
     let row = &frame.rows[i];
     let n = row.friction_dimensions;
     if n == 0 {

@@ -4,8 +4,8 @@
 use glam::{DMat3, DQuat, DVec3};
 
 use super::ContactLaw;
-use crate::contact::check_mass_properties;
-use crate::{ContactShape, DynamicsError, GroundTopState};
+use crate::contact::{AppliedLoads, check_mass_properties};
+use crate::{ContactShape, DynamicsError, GroundTopState, Inputs};
 
 /// A contact shape fixed in the body and the law of its contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,6 +46,8 @@ pub struct TableBody {
     inverse_inertia_body: DMat3,
     gravity: f64,
     contacts: Vec<TableContact>,
+    /// Applied torques and forces ([`TableBody::try_with_inputs`]).
+    loads: Option<AppliedLoads>,
 }
 
 impl TableBody {
@@ -80,7 +82,51 @@ impl TableBody {
             inverse_inertia_body: inertia_body.inverse(),
             gravity,
             contacts,
+            loads: None,
         })
+    }
+
+    /// The body with applied `inputs` (torques about the centre of mass,
+    /// forces through it or at body points, damping, a user law of
+    /// `(t, state)`: [`Inputs`]) acting beside gravity and the table:
+    ///
+    /// ```text
+    /// m v̇_G = −m g ẑ + F + Σ contact forces,   L̇ = τ + Σ ρᵢ × contact forces
+    /// ```
+    ///
+    /// The energy then changes by the inputs' power too; rest is not
+    /// detected (the inputs may move the body again).
+    ///
+    /// # Errors
+    /// [`Inputs::validate`]'s, and those of building the forced body
+    /// ([`crate::ForcedBody::try_new`]).
+    ///
+    /// ```
+    /// use glam::{DMat3, DVec3};
+    /// use kreisel_dynamics::{ContactLaw, ContactShape, Inputs, SphereContact, TableBody, TableContact};
+    /// let shape = ContactShape::Sphere(SphereContact::try_new(0.1, DVec3::ZERO)?);
+    /// let body = TableBody::try_new(1.0, DMat3::from_diagonal(DVec3::splat(0.004)),
+    ///     vec![TableContact { shape, law: ContactLaw::new(0.5) }], 9.81)?
+    ///     .try_with_inputs(Inputs::default().with_torque_world(DVec3::new(0.0, 0.0, 1e-3)))?;
+    /// assert!(body.inputs().is_some());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn try_with_inputs(self, inputs: Inputs) -> Result<Self, DynamicsError> {
+        let loads = AppliedLoads::try_new(self.inertia_body, self.mass, self.gravity, inputs)?;
+        Ok(Self { loads, ..self })
+    }
+
+    /// The applied inputs, if any.
+    pub fn inputs(&self) -> Option<&Inputs> {
+        self.loads.as_ref().map(AppliedLoads::inputs)
+    }
+
+    /// The applied torque about the centre of mass and force through it,
+    /// world axes, at time `t` in `state` (zero without inputs).
+    pub fn applied_world(&self, t: f64, state: &GroundTopState) -> (DVec3, DVec3) {
+        self.loads
+            .as_ref()
+            .map_or((DVec3::ZERO, DVec3::ZERO), |l| l.at(t, state))
     }
 
     /// The mass `m`, kg.

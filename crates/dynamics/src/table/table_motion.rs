@@ -38,7 +38,7 @@ use super::contact_frame::ContactFrame;
 use super::contact_problem::{Block, ContactMode, Mode, ModeForces, mode_forces, solve_blocks};
 use super::impact::{at_time, impact, stop_slip};
 use super::{TableBody, TableEvent, TableEventKind};
-use crate::contact::{DOPRI_A, DOPRI_B_HAT, Flight, MAX_GROWTH, MIN_SHRINK, SAFETY};
+use crate::contact::{DOPRI_A, DOPRI_B_HAT, DOPRI_C, Flight, MAX_GROWTH, MIN_SHRINK, SAFETY};
 use crate::{AdaptiveStats, AdaptiveTolerance, DynamicsError, GroundTopState};
 
 /// The method's name in errors.
@@ -181,7 +181,7 @@ impl TableMotion {
         }
         let length = body.length_scale();
         let g = body.gravity();
-        let frame = ContactFrame::of(&body, &state);
+        let frame = ContactFrame::of(&body, &state, 0.0);
         for (i, row) in frame.rows.iter().enumerate() {
             if row.gap < -1e-9 * length {
                 return Err(DynamicsError::BodyInsideTable {
@@ -212,7 +212,7 @@ impl TableMotion {
             }];
         }
         let modes = vec![Mode::OPEN; body.contacts().len()];
-        let current = Self::snapshot_of(&body, &modes, state, speed)?;
+        let current = Self::snapshot_of(&body, &modes, state, 0.0, speed)?;
         let mut run = Self {
             body,
             tolerance,
@@ -285,9 +285,10 @@ impl TableMotion {
         body: &TableBody,
         modes: &[Mode],
         state: GroundTopState,
+        t: f64,
         speed: f64,
     ) -> Result<Snapshot, DynamicsError> {
-        let frame = ContactFrame::of(body, &state);
+        let frame = ContactFrame::of(body, &state, t);
         let forces = mode_forces(&frame, modes, TABLE_RESOLUTION * speed)?;
         let q = state.world_from_body;
         let w = frame.omega;
@@ -305,8 +306,9 @@ impl TableMotion {
         })
     }
 
-    fn snapshot(&self, state: GroundTopState) -> Result<Snapshot, DynamicsError> {
-        Self::snapshot_of(&self.body, &self.modes, state, self.speed)
+    /// [`TableMotion::snapshot_of`] in the current modes at time `t`.
+    fn snapshot(&self, state: GroundTopState, t: f64) -> Result<Snapshot, DynamicsError> {
+        Self::snapshot_of(&self.body, &self.modes, state, t, self.speed)
     }
 
     /// One Dormand–Prince trial of length `h` from the current state.
@@ -314,14 +316,14 @@ impl TableMotion {
         if let Some((start, flight)) = &self.flight {
             let state = flight.at(self.time + h - start);
             self.stats.evaluations += 1;
-            let end = self.snapshot(state)?;
+            let end = self.snapshot(state, self.time + h)?;
             return Ok(Trial { end, error: 0.0 });
         }
         let s0 = self.current.state;
         let mut k = [self.current.derivative; 7];
         for i in 1..7 {
             let stage = combine(&s0, &k[..i], &DOPRI_A[i][..i], h);
-            let snap = self.snapshot(stage)?;
+            let snap = self.snapshot(stage, self.time + DOPRI_C[i] * h)?;
             self.stats.evaluations += 1;
             k[i] = snap.derivative;
             if i == 6 {
@@ -647,7 +649,7 @@ impl TableMotion {
             }
             // Modes are chosen below; the snapshot is refreshed there.
             self.current.state = outcome.state;
-            self.current.frame = ContactFrame::of(&self.body, &outcome.state);
+            self.current.frame = ContactFrame::of(&self.body, &outcome.state, self.time);
         }
         let new_modes = self.resolve(&participants)?;
         let before = std::mem::replace(&mut self.modes, new_modes);
@@ -675,9 +677,10 @@ impl TableMotion {
             }
         }
         self.current = self
-            .snapshot(self.current.state)
+            .snapshot(self.current.state, self.time)
             .map_err(|e| at_time(e, self.time))?;
-        self.flight = if self.modes.iter().all(|m| m.mode == ContactMode::Open) {
+        let ballistic = self.body.inputs().is_none();
+        self.flight = if ballistic && self.modes.iter().all(|m| m.mode == ContactMode::Open) {
             let g = self.body.gravity();
             let flight = Flight::try_new(self.body.inertia_body(), &self.current.state, g)
                 .map_err(|e| at_time(e, self.time))?;
@@ -762,6 +765,9 @@ impl TableMotion {
     /// Rest: a closed contact, every closed contact sticking (or
     /// frictionless), velocities and accelerations below the resolution.
     fn detect_rest(&mut self) {
+        if self.body.inputs().is_some() {
+            return;
+        }
         let closed: Vec<usize> = (0..self.modes.len())
             .filter(|&i| self.modes[i].mode != ContactMode::Open)
             .collect();
