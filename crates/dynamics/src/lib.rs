@@ -117,7 +117,7 @@ pub use stability::{
 };
 pub use state::PrincipalState;
 pub use table::{
-    ContactLaw, ContactMode, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableBody, TableContact,
-    TableEvent, TableEventKind, TableMotion,
+    ContactLaw, ContactMode, DISK_FLAT_TILT, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableBody,
+    TableContact, TableEvent, TableEventKind, TableMotion,
 };
 pub use world::{Body, BodyBuilder, BodyId, BodyState, Choice, Plan, Support, Tolerance, World};

@@ -36,9 +36,13 @@
 //! starts to stick loses its residual slip by a dissipative impulse.
 //!
 //! # What it does not do (yet)
-//! A disk lying flat on its face, rolling resistance and applied loads
-//! are not modelled here. Free flight is exact (parabola and the
-//! torque-free [`crate::ExactSolution`]).
+//! A disk's flat face is not a contact shape yet: a rim that comes to lie
+//! flat (its axis within [`DISK_FLAT_TILT`] of the vertical — a dropped
+//! coin settling, Euler's disk at its end) stops the run with
+//! [`crate::DynamicsError::DiskFlat`] and its time. Rolling resistance is
+//! not modelled. Free flight is exact (parabola and the torque-free
+//! [`crate::ExactSolution`]); applied inputs ([`TableBody::try_with_inputs`])
+//! act beside the contacts (the flight is then integrated).
 
 mod contact_frame;
 mod contact_law;
@@ -53,4 +57,4 @@ pub use self::contact_law::ContactLaw;
 pub use self::contact_problem::ContactMode;
 pub use self::table_body::{TableBody, TableContact};
 pub use self::table_event::{TableEvent, TableEventKind};
-pub use self::table_motion::{TABLE_ACCUMULATION, TABLE_RESOLUTION, TableMotion};
+pub use self::table_motion::{DISK_FLAT_TILT, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableMotion};

@@ -39,7 +39,7 @@ use super::contact_problem::{Block, ContactMode, Mode, ModeForces, mode_forces, 
 use super::impact::{at_time, impact, stop_slip};
 use super::{TableBody, TableEvent, TableEventKind};
 use crate::contact::{DOPRI_A, DOPRI_B_HAT, DOPRI_C, Flight, MAX_GROWTH, MIN_SHRINK, SAFETY};
-use crate::{AdaptiveStats, AdaptiveTolerance, DynamicsError, GroundTopState};
+use crate::{AdaptiveStats, AdaptiveTolerance, ContactShape, DynamicsError, GroundTopState};
 
 /// The method's name in errors.
 const METHOD: &str = "table dopri5";
@@ -56,6 +56,10 @@ pub const TABLE_RESOLUTION: f64 = 1e-9;
 /// 10⁻¹² s off and the accumulation point 10⁻⁹ s off; measured in
 /// `tests/table_bouncing_ball.rs`).
 pub const TABLE_ACCUMULATION: f64 = 1e-4;
+
+/// The sine of the smallest tilt of a disk rim's axis from the vertical
+/// the rim contact follows ([`DynamicsError::DiskFlat`] below it).
+pub const DISK_FLAT_TILT: f64 = 1e-6;
 
 /// The smallest step, relative to `max(|t|, τ)` (`τ = √(ℓ/g)`).
 const MIN_STEP_RELATIVE: f64 = 1e-14;
@@ -392,8 +396,9 @@ impl TableMotion {
     /// needs a step below `10⁻¹⁴ max(t, τ)`; the errors of the events
     /// ([`DynamicsError::ContactIndeterminate`] — Painlevé —,
     /// [`DynamicsError::ImpactGainsEnergy`],
-    /// [`DynamicsError::ContactModesChatter`]). The motion keeps the last
-    /// state reached.
+    /// [`DynamicsError::ContactModesChatter`]); [`DynamicsError::DiskFlat`]
+    /// when a disk rim comes to lie flat (its face is not a contact shape
+    /// yet). The motion keeps the last state reached.
     pub fn try_advance_to(&mut self, t_end: f64) -> Result<(), DynamicsError> {
         self.advance(t_end, false).map(|_| ())
     }
@@ -515,6 +520,7 @@ impl TableMotion {
             in_place = 0;
             self.time = if last { t_end } else { self.time + h };
             self.current = trial.end;
+            self.check_disks()?;
             if !last || growth < 1.0 {
                 self.h = h * growth;
             }
@@ -602,10 +608,31 @@ impl TableMotion {
         Ok((hi, end))
     }
 
+    /// [`DynamicsError::DiskFlat`] when a disk rim's axis is within
+    /// [`DISK_FLAT_TILT`] of the vertical: the rim's lowest point is then
+    /// ill-defined (it jumps across the rim) and the face, which would
+    /// carry the disk, is not a contact shape yet.
+    fn check_disks(&self) -> Result<(), DynamicsError> {
+        let q = self.current.state.world_from_body.normalize();
+        let flat = self.body.contacts().iter().any(|c| match c.shape {
+            ContactShape::Disk(d) => {
+                let n = q * d.normal_body();
+                DVec3::Z.cross(n).length() < DISK_FLAT_TILT
+            }
+            _ => false,
+        });
+        if flat {
+            Err(DynamicsError::DiskFlat { time: self.time })
+        } else {
+            Ok(())
+        }
+    }
+
     /// At an event (or the start): impacts where a contact approaches,
     /// then each contact's mode from the acceleration-level problem,
     /// events recorded for every change, rest detected.
     fn settle(&mut self) -> Result<(), DynamicsError> {
+        self.check_disks()?;
         let v_res = self.resolution_speed();
         let gap_tol = 1e-9 * self.length;
         let frame = &self.current.frame;
