@@ -13,6 +13,7 @@
 
 mod body;
 mod contact;
+mod events;
 mod figure;
 mod methods;
 mod output;
@@ -28,7 +29,7 @@ use std::io::{self, BufWriter, Write};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
-use kreisel_dynamics::{BodyId, World};
+use kreisel_dynamics::{BodyId, Plan, World, table_tolerance};
 
 use self::output::CsvWriter;
 pub use self::output::{Column, States};
@@ -277,6 +278,10 @@ pub struct SimulateArgs {
     /// Also draw omega(t), the energy change and the polhode of each body into FILE (.png or .svg)
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
+
+    /// Also write the events of the bodies on the table (impacts, lift-offs, stick, slip, rest) to FILE as CSV
+    #[arg(long, value_name = "FILE")]
+    pub events: Option<PathBuf>,
 }
 
 /// Runs `kreisel simulate`.
@@ -313,6 +318,26 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         Some(plot) => Some(check_plot(plot, scene_path, args.output.as_deref())?),
         None => None,
     };
+    if let Some(events) = &args.events {
+        let others = [
+            Some(scene_path.as_path()),
+            args.output.as_deref(),
+            args.plot.as_deref(),
+        ];
+        if others
+            .into_iter()
+            .flatten()
+            .any(|other| same_file(events, other))
+        {
+            return Err(CliError::Argument {
+                argument: "--events".to_owned(),
+                message: format!(
+                    "{}: is the scene, the --output or the --plot file; refusing to overwrite it",
+                    events.display()
+                ),
+            });
+        }
+    }
     let text =
         kreisel_inertia::io::read_limited_text(scene_path, "a scene file").map_err(|source| {
             CliError::ReadScene {
@@ -339,6 +364,15 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             Some((path, format, file, pending))
         }
         _ => None,
+    };
+    // Opened before the run too; written when the run ends (or stops at an event).
+    let events_file = match &args.events {
+        Some(path) => {
+            let (file, pending) =
+                crate::atomic_file::create(path).map_err(|source| events_error(path, &source))?;
+            Some((path, file, pending))
+        }
+        None => None,
     };
     let mut recorder = plot
         .as_ref()
@@ -402,8 +436,23 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         }
         _ => None,
     };
+    let events_written = match events_file {
+        Some((path, file, pending)) => {
+            let mut out = BufWriter::new(file);
+            events::write(&scene.world, &scene.bodies, &mut out)
+                .and_then(|()| out.flush())
+                .map_err(|source| events_error(path, &source))?;
+            Some((path, pending))
+        }
+        None => None,
+    };
     // Whole or not at all: the --output file appears only now.
     crate::convert::commit_output(pending, output.clone())?;
+    if let Some((path, pending)) = events_written {
+        pending
+            .commit()
+            .map_err(|source| events_error(path, &source))?;
+    }
     if let Some((path, pending)) = image {
         pending.commit().map_err(|source| CliError::Plot {
             path: path.clone(),
@@ -494,6 +543,10 @@ fn write_plans<W: Write + ?Sized>(scene: &Scene, out: &mut W) -> io::Result<()> 
             if let Some(limit) = methods::StepLimit::of(&scene.world, *id) {
                 write!(out, "; {}", limit.explain())?;
             }
+            if let Plan::OnTable { .. } = plan {
+                let tol = table_tolerance(scene.world.tolerance());
+                write!(out, "; rtol = atol = {:e}", tol.rtol())?;
+            }
             writeln!(out)?;
         }
     }
@@ -564,6 +617,14 @@ fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
             (fs::canonicalize(a), fs::canonicalize(b)),
             (Ok(x), Ok(y)) if x == y
         )
+}
+
+/// The error of creating or writing the `--events` file `path`.
+fn events_error(path: &std::path::Path, source: &io::Error) -> CliError {
+    CliError::Argument {
+        argument: "--events".to_owned(),
+        message: format!("{}: cannot write the file: {source}", path.display()),
+    }
 }
 
 /// The error of writing to `output`.
