@@ -109,10 +109,15 @@ Scene (TOML; SI units, radians):
   friction = \"sliding\"       \"none\" | \"viscous\" (F = -mu N v_slip, mu in
                              s/m) | \"sliding\" (Coulomb, regularised:
                              F = -mu N v/sqrt(|v|^2 + eps^2)) | \"rolling\"
-                             (no slip)
-  mu = 0.3                   viscous and sliding only, >= 0
+                             (no slip) | \"coulomb\" (exact Coulomb friction:
+                             the body is on the table, see below)
+  mu = 0.3                   viscous, sliding and coulomb only, >= 0
   slip_velocity = 1e-3       sliding only: eps, m/s [default: 1e-3, Leine &
                              Glocker's value; inversion times depend on it]
+  restitution = 0.9          coulomb only: Newton's e in [0, 1] [default: 0]
+  tangential_restitution = 0 coulomb only: Garwin's e_T in [0, 1] [default: 0]
+  contensou_radius = 5e-4    coulomb only: the contact patch's radius, m,
+                             for Contensou's drilling friction [default: 0]
                              The body starts touching: the height of its
                              centre of mass follows from its attitude (a
                              `position` z must agree to 1e-9 m); x, y from
@@ -125,7 +130,15 @@ Scene (TOML; SI units, radians):
                              center, normal, semi_axes only: no friction,
                              mu or slip_velocity) are watched for
                              touchdown, e.g. a tippe top's stem ball: they
-                             exert no force and must start above the plane
+                             exert no force and must start above the plane.
+                             With friction = \"coulomb\" (on every table: no
+                             other model on the same body) the body is on
+                             the table: every table is a contact with its
+                             own law (at most 8), the stem's ball too;
+                             `position` and `velocity` are its centre of
+                             mass's start, anywhere above the table (without
+                             `position`: above the origin, its lowest shape
+                             touching); no torque, force or damping
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
@@ -159,6 +172,14 @@ Motion:
   flat, an indeterminate contact, or a watched [[body.contact]] touching
   down (its time located within the step; the impact is not modelled):
   an event, see Errors.
+  A body with friction = \"coulomb\" is on the table, moved by an
+  event-driven nonsmooth method: Dormand-Prince 5(4) with error control
+  between events, each contact unilateral (Signorini), impacts by Newton's
+  law with friction, set-valued Coulomb friction with Contensou's drilling.
+  Impacts, touchdowns, lift-offs, stick, slip and rest are events, located
+  to rounding, and the run goes on (--events). dt is only the grid of the
+  rows: the motion takes its own steps (rtol = atol = 1e-10, or tolerance /
+  1000 with tolerance), so rows at any dt agree to that accuracy.
   With tolerance, a driven body or heavy top takes the cheapest splitting
   and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
   or pdmv6 every dt where that is predicted to meet it for less work than
@@ -193,6 +214,12 @@ Output (CSV; standard output unless --output):
   x,y,z      centre of mass, world axes, m (for a heavy top too: where its
              centre of mass is, not the pivot)
   vx,vy,vz   its velocity, world axes, m/s
+  --events FILE writes the events of the bodies on the table, in time order:
+  time,body,contact,kind,approach_speed,rebound_speed,accumulation_time
+  (contact: the [[body.contact]] table's number, empty for the whole body;
+  kind: impact, impacts_accumulate, touchdown, lift_off, stick, slip, rest;
+  the speeds, m/s, for an impact, accumulation_time, s, where the bounces
+  end); written whole with the CSV, or not at all.
   Rows at t = 0, after every step that ends at a multiple of output_interval
   (every step without it), and at t = duration: one row per body each time,
   in scene order. Numbers in shortest round-trip form; rows are written as
@@ -241,6 +268,8 @@ Examples:
   kreisel simulate examples/scenes/tippe_top.toml --columns t,z,energy,lz
   kreisel simulate examples/scenes/spin_up.toml --columns t,wz,lz,energy
   kreisel simulate examples/scenes/dzhanibekov.toml --output run.csv --plot run.png
+  kreisel simulate examples/scenes/bouncing_ball.toml --events bounces.csv
+  kreisel simulate examples/scenes/tippe_top_coulomb.toml --columns t,z,energy
   kreisel simulate --list-methods";
 
 /// Arguments of `kreisel simulate`.
@@ -545,7 +574,7 @@ fn write_plans<W: Write + ?Sized>(scene: &Scene, out: &mut W) -> io::Result<()> 
             }
             if let Plan::OnTable { .. } = plan {
                 let tol = table_tolerance(scene.world.tolerance());
-                write!(out, "; rtol = atol = {:e}", tol.rtol())?;
+                write!(out, "; rtol = atol = {:.2e}", tol.rtol())?;
             }
             writeln!(out)?;
         }
@@ -714,6 +743,33 @@ mod tests {
             .lines()
             .map(str::to_owned)
             .collect()
+    }
+
+    #[test]
+    fn explain_names_a_body_on_the_table_and_its_tolerance() {
+        let ball = "[[body]]\nname = \"ball\"\nmass = 1\ninertia = [0.004, 0.004, 0.004]\n\
+            angular_velocity = [0, 0, 0]\nposition = [0, 0, 1]\n[[body.contact]]\n\
+            shape = \"sphere\"\nradius = 0.1\nfriction = \"coulomb\"\nmu = 0.3\n";
+        for (tolerance, rtol) in [("", "1.00e-10"), ("tolerance = 1e-6\n", "1.00e-9")] {
+            let text = format!(
+                "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n{tolerance}{ball}"
+            );
+            let scene = scene::parse(Path::new("s.toml"), &text).unwrap();
+            let mut out = Vec::new();
+            write_plans(&scene, &mut out).unwrap();
+            let line = String::from_utf8(out).unwrap();
+            assert!(
+                line.starts_with(
+                    "ball: body on the table: event-driven dopri5 (order 5) with error control, \
+                     its own steps within each dt (unilateral contact of 1 shape with the plane"
+                ),
+                "{line}"
+            );
+            assert!(
+                line.ends_with(&format!("; rtol = atol = {rtol}\n")),
+                "{line}"
+            );
+        }
     }
 
     #[test]

@@ -107,8 +107,8 @@ fn the_ball_strikes_first_at_0_42835_s_and_rests_at_the_zeno_point() {
     assert_eq!(run.code, Some(0), "{}", run.stderr);
     let rows = event_rows(&events);
     // t₁ = √(2 (h − R)/g), v₁ = g t₁; each rebound e times its approach.
-    let (g, e) = (9.81, 0.9);
-    let t1 = (2.0 * 0.9 / g as f64).sqrt();
+    let (g, e): (f64, f64) = (9.81, 0.9);
+    let t1 = (2.0 * 0.9 / g).sqrt();
     let first = &rows[0];
     assert_eq!(first[1..4], ["ball", "1", "impact"], "{first:?}");
     let time: f64 = first[0].parse().unwrap();
