@@ -247,10 +247,12 @@ Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
   nothing: an existing --output or --plot file stays as it was (on
   standard output the rows before it have been written).
   Events end what the model describes: a lift-off, a disk lying flat, an
-  indeterminate contact, a watched contact touching down. The run stops
-  there with one line naming it, exit status 1; the --output file and the
-  --plot image hold the motion up to the event (its last row the last
-  output time before it).
+  indeterminate contact, a watched contact touching down (on the ground);
+  an indeterminate contact, contact modes that chatter, an impact the law
+  cannot resolve without gaining energy (on the table). The run stops
+  there with one line naming it, exit status 1; the --output file, the
+  --plot image and the --events file hold the motion up to the event (its
+  last row the last output time before it).
   A free body stepped by a method beyond that method's step limit, dt
   times the fastest angular speed |L|/I1 the body can reach (--explain
   prints both), gets one warning line on standard error, and the run goes
