@@ -525,6 +525,25 @@ mod tests {
     }
 
     #[test]
+    fn a_failure_inside_a_move_is_given_the_step_that_contains_it() {
+        let clock = Clock::new(0.1);
+        let walker = |whole, last: Option<f64>, end| Walker {
+            route: Route { whole, last, end },
+            clock,
+            end: Dd::from_f64(end),
+        };
+        let grid = walker(10, None, 1.0);
+        assert_eq!(grid.step_at(0.0), 1);
+        assert_eq!(grid.step_at(0.25), 3);
+        assert_eq!(grid.step_at(grid.time_of(3)), 3);
+        assert_eq!(grid.step_at(0.95), 10);
+        assert_eq!(grid.step_at(5.0), 10);
+        let shortened = walker(10, Some(0.05), 1.05);
+        assert_eq!(shortened.step_at(1.02), 11);
+        assert_eq!(walker(0, Some(0.05), 0.05).step_at(0.01), 1);
+    }
+
+    #[test]
     fn the_earlier_failure_is_the_earlier_step_then_the_lower_index() {
         let e = || DynamicsError::InvalidStep { h: 0.0 };
         let pick = |a: (u64, usize), b: (u64, usize)| {
