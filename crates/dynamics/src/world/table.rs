@@ -601,6 +601,48 @@ mod tests {
         assert!(world.state(id).unwrap().l_world.length() < 1e-15);
     }
 
+    /// A body whose body axes are not its principal axes: the state is
+    /// read in body axes (as given), L = q I_body ω_body, and a setter's
+    /// ω reads back as set.
+    #[test]
+    fn a_body_off_its_principal_axes_reads_in_body_axes() {
+        let tensor = glam::DMat3::from_cols_array(&[
+            0.004, 0.0005, 0.0, 0.0005, 0.005, 0.0002, 0.0, 0.0002, 0.006,
+        ]);
+        let props = kreisel_inertia::MassProperties::try_new(1.0, DVec3::ZERO, tensor).unwrap();
+        let law = ContactLaw::try_new(0.3).unwrap();
+        let omega = DVec3::new(0.3, -2.0, 5.0);
+        let q = DQuat::from_rotation_y(0.3);
+        let body = Body::from_mass_properties(props)
+            .world_from_body(q)
+            .omega_body(omega)
+            .on_table(
+                DVec3::new(0.0, 0.0, 1.0),
+                DVec3::ZERO,
+                &[TableContact {
+                    shape: sphere(0.1, 0.0),
+                    law,
+                }],
+            )
+            .try_build()
+            .unwrap();
+        let mut world = World::try_new(DOWN, 0.01).unwrap();
+        let id = world.add(body).unwrap();
+        let s = world.state(id).unwrap();
+        assert!((s.omega_body - omega).length() < 1e-14, "{}", s.omega_body);
+        let error = (s.l_world - q * (tensor * omega)).length();
+        assert!(error < 1e-15 * s.l_world.length(), "{error:e}");
+        assert!(kreisel_kinematics::rotation_angle_between(s.world_from_body, q) < 1e-15);
+        world.advance_to(0.1).unwrap();
+        let turned = DVec3::new(-1.0, 0.5, 2.0);
+        world.set_omega_body(id, turned).unwrap();
+        let s = world.state(id).unwrap();
+        assert!((s.omega_body - turned).length() < 1e-13, "{}", s.omega_body);
+        let expected = s.world_from_body.normalize() * (tensor * turned);
+        let error = (s.l_world - expected).length();
+        assert!(error < 1e-14 * s.l_world.length(), "{error:e}");
+    }
+
     #[test]
     fn the_world_tolerance_reaches_the_table() {
         assert_eq!(
