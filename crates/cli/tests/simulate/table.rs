@@ -328,3 +328,35 @@ fn the_events_file_is_written_whole_or_not_at_all() {
     assert!(run.stderr.contains("body `fast`"), "{}", run.stderr);
     assert_eq!(std::fs::read_to_string(&events).unwrap(), "old\n");
 }
+
+#[test]
+fn a_ball_thrown_above_the_table_lands_at_the_closed_form_time() {
+    // The centre at 1 m thrown at (1, 0, 2) m/s: the bottom reaches the
+    // table when 0.9 + 2 t − g t²/2 = 0; frictionless, x = t throughout.
+    let text = std::fs::read_to_string(workspace("examples/scenes/bouncing_ball.toml"))
+        .unwrap()
+        .replace("duration = 10.0", "duration = 1.0")
+        .replace(
+            "position = [0.0, 0.0, 1.0]",
+            "position = [0.0, 0.0, 1.0]\nvelocity = [1.0, 0.0, 2.0]",
+        );
+    let path = scratch("thrown_ball.toml", text);
+    let events = scratch("thrown_events.csv", "");
+    let run = simulate_file(
+        &path,
+        &["--events", events.to_str().unwrap(), "--columns", "t,x,vx"],
+    );
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let g: f64 = 9.81;
+    let landing = (2.0 + (4.0 + 2.0 * g * 0.9).sqrt()) / g;
+    let first = &event_rows(&events)[0];
+    let (time, approach): (f64, f64) = (first[0].parse().unwrap(), first[4].parse().unwrap());
+    assert!((time - landing).abs() < 1e-12, "{time} vs {landing}");
+    assert!((approach - (g * landing - 2.0)).abs() < 1e-10, "{approach}");
+    let last = run.stdout.lines().last().unwrap();
+    let numbers: Vec<f64> = last.split(',').map(|x| x.parse().unwrap()).collect();
+    assert!(
+        (numbers[1] - 1.0).abs() < 1e-12 && numbers[2] == 1.0,
+        "{last}"
+    );
+}
