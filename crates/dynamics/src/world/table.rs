@@ -34,8 +34,8 @@ use super::plan::Motion;
 use super::state::Reading;
 use super::{Body, BodyId, BodyState, Entry, Plan, Support, World};
 use crate::{
-    AdaptiveTolerance, DynamicsError, GroundTopState, PrincipalState, TableBody, TableEvent,
-    TableMotion, Tolerance,
+    AdaptiveTolerance, ContactMode, DynamicsError, GroundTopState, PrincipalState, TableBody,
+    TableEvent, TableEventKind, TableMotion, Tolerance,
 };
 
 /// The error tolerance (`rtol = atol`) of a body on the table in a world
@@ -114,7 +114,9 @@ impl TableRun {
     }
 
     /// The same body from `state` now (world time `now`), with tolerance
-    /// `tolerance`; its events so far kept.
+    /// `tolerance`; its events so far kept. A contact that was closed and
+    /// stays closed does not touch down again: the new run's touchdown of
+    /// it at the start is not an event of the body.
     fn restarted(
         &self,
         body: &Body,
@@ -123,7 +125,19 @@ impl TableRun {
         state: GroundTopState,
         now: f64,
     ) -> Result<Self, DynamicsError> {
-        Self::try_new(body, gravity, tolerance, state, now, self.events.clone())
+        let closed = self.run.modes();
+        let kept = self.events.len();
+        let mut next = Self::try_new(body, gravity, tolerance, state, now, self.events.clone())?;
+        let mut index = 0;
+        next.events.retain(|e| {
+            index += 1;
+            let again = index > kept
+                && e.kind == TableEventKind::Touchdown
+                && e.contact
+                    .is_some_and(|i| closed.get(i).is_some_and(|m| *m != ContactMode::Open));
+            !again
+        });
+        Ok(next)
     }
 
     /// Copies the run's new events, in world time.
@@ -599,6 +613,25 @@ mod tests {
             .apply_angular_impulse(id, DVec3::new(0.0, 0.0, -0.006))
             .unwrap();
         assert!(world.state(id).unwrap().l_world.length() < 1e-15);
+        // A ball resting on the table, spun about the vertical: it stays
+        // on the table, its contact touches down once (at the start).
+        let mut world = World::try_new(DOWN, 0.01).unwrap();
+        let id = world.add(ball(0.1).try_build().unwrap()).unwrap();
+        let touchdown = world.events(id).unwrap().to_vec();
+        assert_eq!(touchdown.len(), 2, "{touchdown:?}"); // touches down, rests
+        assert_eq!(touchdown[0].kind, TableEventKind::Touchdown);
+        world.advance_to(0.5).unwrap();
+        world.set_omega_body(id, DVec3::new(0.0, 0.0, 3.0)).unwrap();
+        world.advance_to(1.0).unwrap();
+        let events = world.events(id).unwrap();
+        assert!(
+            events[2..]
+                .iter()
+                .all(|e| e.kind != TableEventKind::Touchdown),
+            "{events:?}"
+        );
+        let s = world.state(id).unwrap();
+        assert!((s.position.z - 0.1).abs() < 1e-12 && s.omega_body.z == 3.0);
     }
 
     /// A body whose body axes are not its principal axes: the state is
