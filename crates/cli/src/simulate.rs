@@ -13,6 +13,7 @@
 
 mod body;
 mod contact;
+mod events;
 mod figure;
 mod methods;
 mod output;
@@ -28,7 +29,7 @@ use std::io::{self, BufWriter, Write};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
-use kreisel_dynamics::{BodyId, World};
+use kreisel_dynamics::{BodyId, Plan, World, table_tolerance};
 
 use self::output::CsvWriter;
 pub use self::output::{Column, States};
@@ -108,10 +109,15 @@ Scene (TOML; SI units, radians):
   friction = \"sliding\"       \"none\" | \"viscous\" (F = -mu N v_slip, mu in
                              s/m) | \"sliding\" (Coulomb, regularised:
                              F = -mu N v/sqrt(|v|^2 + eps^2)) | \"rolling\"
-                             (no slip)
-  mu = 0.3                   viscous and sliding only, >= 0
+                             (no slip) | \"coulomb\" (exact Coulomb friction:
+                             the body is on the table, see below)
+  mu = 0.3                   viscous, sliding and coulomb only, >= 0
   slip_velocity = 1e-3       sliding only: eps, m/s [default: 1e-3, Leine &
                              Glocker's value; inversion times depend on it]
+  restitution = 0.9          coulomb only: Newton's e in [0, 1] [default: 0]
+  tangential_restitution = 0 coulomb only: Garwin's e_T in [0, 1] [default: 0]
+  contensou_radius = 5e-4    coulomb only: the contact patch's radius, m,
+                             for Contensou's drilling friction [default: 0]
                              The body starts touching: the height of its
                              centre of mass follows from its attitude (a
                              `position` z must agree to 1e-9 m); x, y from
@@ -124,7 +130,15 @@ Scene (TOML; SI units, radians):
                              center, normal, semi_axes only: no friction,
                              mu or slip_velocity) are watched for
                              touchdown, e.g. a tippe top's stem ball: they
-                             exert no force and must start above the plane
+                             exert no force and must start above the plane.
+                             With friction = \"coulomb\" (on every table: no
+                             other model on the same body) the body is on
+                             the table: every table is a contact with its
+                             own law (at most 8), the stem's ball too;
+                             `position` and `velocity` are its centre of
+                             mass's start, anywhere above the table (without
+                             `position`: above the origin, its lowest shape
+                             touching); no torque, force or damping
   Exactly one of inertia, inertia_tensor and mesh; at most one of
   orientation and euler. Positive mass, dt, duration, density; physical
   inertia (I1 + I2 >= I3).
@@ -158,6 +172,14 @@ Motion:
   flat, an indeterminate contact, or a watched [[body.contact]] touching
   down (its time located within the step; the impact is not modelled):
   an event, see Errors.
+  A body with friction = \"coulomb\" is on the table, moved by an
+  event-driven nonsmooth method: Dormand-Prince 5(4) with error control
+  between events, each contact unilateral (Signorini), impacts by Newton's
+  law with friction, set-valued Coulomb friction with Contensou's drilling.
+  Impacts, touchdowns, lift-offs, stick, slip and rest are events, located
+  to rounding, and the run goes on (--events). dt is only the grid of the
+  rows: the motion takes its own steps (rtol = atol = 1e-10, or tolerance /
+  1000 with tolerance), so rows at any dt agree to that accuracy.
   With tolerance, a driven body or heavy top takes the cheapest splitting
   and sub-steps per dt predicted to meet it, and a free asymmetric body rk4
   or pdmv6 every dt where that is predicted to meet it for less work than
@@ -192,6 +214,12 @@ Output (CSV; standard output unless --output):
   x,y,z      centre of mass, world axes, m (for a heavy top too: where its
              centre of mass is, not the pivot)
   vx,vy,vz   its velocity, world axes, m/s
+  --events FILE writes the events of the bodies on the table, in time order:
+  time,body,contact,kind,approach_speed,rebound_speed,accumulation_time
+  (contact: the [[body.contact]] table's number, empty for the whole body;
+  kind: impact, impacts_accumulate, touchdown, lift_off, stick, slip, rest;
+  the speeds, m/s, for an impact, accumulation_time, s, where the bounces
+  end); written whole with the CSV, or not at all.
   Rows at t = 0, after every step that ends at a multiple of output_interval
   (every step without it), and at t = duration: one row per body each time,
   in scene order. Numbers in shortest round-trip form; rows are written as
@@ -219,10 +247,12 @@ Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
   nothing: an existing --output or --plot file stays as it was (on
   standard output the rows before it have been written).
   Events end what the model describes: a lift-off, a disk lying flat, an
-  indeterminate contact, a watched contact touching down. The run stops
-  there with one line naming it, exit status 1; the --output file and the
-  --plot image hold the motion up to the event (its last row the last
-  output time before it).
+  indeterminate contact, a watched contact touching down (on the ground);
+  an indeterminate contact, contact modes that chatter, an impact the law
+  cannot resolve without gaining energy (on the table). The run stops
+  there with one line naming it, exit status 1; the --output file, the
+  --plot image and the --events file hold the motion up to the event (its
+  last row the last output time before it).
   A free body stepped by a method beyond that method's step limit, dt
   times the fastest angular speed |L|/I1 the body can reach (--explain
   prints both), gets one warning line on standard error, and the run goes
@@ -240,6 +270,8 @@ Examples:
   kreisel simulate examples/scenes/tippe_top.toml --columns t,z,energy,lz
   kreisel simulate examples/scenes/spin_up.toml --columns t,wz,lz,energy
   kreisel simulate examples/scenes/dzhanibekov.toml --output run.csv --plot run.png
+  kreisel simulate examples/scenes/bouncing_ball.toml --events bounces.csv
+  kreisel simulate examples/scenes/tippe_top_coulomb.toml --columns t,z,energy
   kreisel simulate --list-methods";
 
 /// Arguments of `kreisel simulate`.
@@ -277,6 +309,10 @@ pub struct SimulateArgs {
     /// Also draw omega(t), the energy change and the polhode of each body into FILE (.png or .svg)
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
+
+    /// Also write the events of the bodies on the table (impacts, lift-offs, stick, slip, rest) to FILE as CSV
+    #[arg(long, value_name = "FILE")]
+    pub events: Option<PathBuf>,
 }
 
 /// Runs `kreisel simulate`.
@@ -313,6 +349,26 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         Some(plot) => Some(check_plot(plot, scene_path, args.output.as_deref())?),
         None => None,
     };
+    if let Some(events) = &args.events {
+        let others = [
+            Some(scene_path.as_path()),
+            args.output.as_deref(),
+            args.plot.as_deref(),
+        ];
+        if others
+            .into_iter()
+            .flatten()
+            .any(|other| same_file(events, other))
+        {
+            return Err(CliError::Argument {
+                argument: "--events".to_owned(),
+                message: format!(
+                    "{}: is the scene, the --output or the --plot file; refusing to overwrite it",
+                    events.display()
+                ),
+            });
+        }
+    }
     let text =
         kreisel_inertia::io::read_limited_text(scene_path, "a scene file").map_err(|source| {
             CliError::ReadScene {
@@ -339,6 +395,15 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             Some((path, format, file, pending))
         }
         _ => None,
+    };
+    // Opened before the run too; written when the run ends (or stops at an event).
+    let events_file = match &args.events {
+        Some(path) => {
+            let (file, pending) =
+                crate::atomic_file::create(path).map_err(|source| events_error(path, &source))?;
+            Some((path, file, pending))
+        }
+        None => None,
     };
     let mut recorder = plot
         .as_ref()
@@ -402,8 +467,23 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         }
         _ => None,
     };
+    let events_written = match events_file {
+        Some((path, file, pending)) => {
+            let mut out = BufWriter::new(file);
+            events::write(&scene.world, &scene.bodies, &mut out)
+                .and_then(|()| out.flush())
+                .map_err(|source| events_error(path, &source))?;
+            Some((path, pending))
+        }
+        None => None,
+    };
     // Whole or not at all: the --output file appears only now.
     crate::convert::commit_output(pending, output.clone())?;
+    if let Some((path, pending)) = events_written {
+        pending
+            .commit()
+            .map_err(|source| events_error(path, &source))?;
+    }
     if let Some((path, pending)) = image {
         pending.commit().map_err(|source| CliError::Plot {
             path: path.clone(),
@@ -494,6 +574,10 @@ fn write_plans<W: Write + ?Sized>(scene: &Scene, out: &mut W) -> io::Result<()> 
             if let Some(limit) = methods::StepLimit::of(&scene.world, *id) {
                 write!(out, "; {}", limit.explain())?;
             }
+            if let Plan::OnTable { .. } = plan {
+                let tol = table_tolerance(scene.world.tolerance());
+                write!(out, "; rtol = atol = {:.2e}", tol.rtol())?;
+            }
             writeln!(out)?;
         }
     }
@@ -564,6 +648,14 @@ fn same_file(a: &std::path::Path, b: &std::path::Path) -> bool {
             (fs::canonicalize(a), fs::canonicalize(b)),
             (Ok(x), Ok(y)) if x == y
         )
+}
+
+/// The error of creating or writing the `--events` file `path`.
+fn events_error(path: &std::path::Path, source: &io::Error) -> CliError {
+    CliError::Argument {
+        argument: "--events".to_owned(),
+        message: format!("{}: cannot write the file: {source}", path.display()),
+    }
 }
 
 /// The error of writing to `output`.
@@ -653,6 +745,33 @@ mod tests {
             .lines()
             .map(str::to_owned)
             .collect()
+    }
+
+    #[test]
+    fn explain_names_a_body_on_the_table_and_its_tolerance() {
+        let ball = "[[body]]\nname = \"ball\"\nmass = 1\ninertia = [0.004, 0.004, 0.004]\n\
+            angular_velocity = [0, 0, 0]\nposition = [0, 0, 1]\n[[body.contact]]\n\
+            shape = \"sphere\"\nradius = 0.1\nfriction = \"coulomb\"\nmu = 0.3\n";
+        for (tolerance, rtol) in [("", "1.00e-10"), ("tolerance = 1e-6\n", "1.00e-9")] {
+            let text = format!(
+                "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n{tolerance}{ball}"
+            );
+            let scene = scene::parse(Path::new("s.toml"), &text).unwrap();
+            let mut out = Vec::new();
+            write_plans(&scene, &mut out).unwrap();
+            let line = String::from_utf8(out).unwrap();
+            assert!(
+                line.starts_with(
+                    "ball: body on the table: event-driven dopri5 (order 5) with error control, \
+                     its own steps within each dt (unilateral contact of 1 shape with the plane"
+                ),
+                "{line}"
+            );
+            assert!(
+                line.ends_with(&format!("; rtol = atol = {rtol}\n")),
+                "{line}"
+            );
+        }
     }
 
     #[test]

@@ -120,4 +120,7 @@ pub use table::{
     ContactLaw, ContactMode, DISK_FLAT_TILT, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableBody,
     TableContact, TableEvent, TableEventKind, TableMotion,
 };
-pub use world::{Body, BodyBuilder, BodyId, BodyState, Choice, Plan, Support, Tolerance, World};
+pub use world::{
+    Body, BodyBuilder, BodyId, BodyState, Choice, DEFAULT_TABLE_TOLERANCE, Plan, Support,
+    Tolerance, World, table_tolerance,
+};

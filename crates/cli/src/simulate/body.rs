@@ -10,14 +10,16 @@ use std::io::Write;
 use std::path::Path;
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{Body, BodyBuilder, BodyId, DynamicsError, Friction, Inputs, World};
+use kreisel_dynamics::{
+    Body, BodyBuilder, BodyId, DynamicsError, Friction, Inputs, Plan, TableContact, World,
+};
 use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
 use kreisel_inertia::{MassProperties, Material};
 use kreisel_kinematics::{EulerSequence, try_normalize_quat};
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::contact::{self, RawContacts};
+use super::contact::{self, Contacts, RawContacts};
 use super::scene::{Keys, SceneFile};
 use crate::error::CliError;
 use crate::numbers::Shortest;
@@ -109,34 +111,50 @@ pub fn add_body(
                            pivot or stands on the ground, not both";
             return Err(keys.fail(pivot, message));
         }
-        (Some(contact), None) => {
-            let contacts = contact::check(&keys, contact)?;
-            let checked = contacts.first;
-            if let Some(v) = &b.velocity {
-                if checked.friction == Friction::Rolling {
-                    let message = "`velocity` cannot be given with friction \"rolling\": \
-                                   it follows from rolling without slipping";
-                    return Err(keys.fail(v, message));
-                }
-                if velocity.z != 0.0 {
+        (Some(contact), None) => match contact::check(&keys, contact)? {
+            Contacts::Table(contacts) => {
+                if let Some((key, span)) = &first_input {
                     let message = format!(
-                        "`velocity` of a body on the ground must be horizontal, \
+                        "`{key}`: applied loads are not modelled for a body on the table \
+                         (friction \"coulomb\"): only gravity and the contacts act"
+                    );
+                    return Err(keys.fail_at(span.clone(), &message));
+                }
+                // Without `position`: above the origin, its lowest shape touching.
+                let position = match &b.position {
+                    Some(_) => position,
+                    None => touching(&contacts, attitude),
+                };
+                builder.on_table(position, velocity, &contacts)
+            }
+            Contacts::Ground(contacts) => {
+                let checked = contacts.first;
+                if let Some(v) = &b.velocity {
+                    if checked.friction == Friction::Rolling {
+                        let message = "`velocity` cannot be given with friction \"rolling\": \
+                                   it follows from rolling without slipping";
+                        return Err(keys.fail(v, message));
+                    }
+                    if velocity.z != 0.0 {
+                        let message = format!(
+                            "`velocity` of a body on the ground must be horizontal, \
                          [vx, vy, 0], got vz = {}: the vertical velocity follows from \
                          the spin",
-                        Shortest(velocity.z)
-                    );
-                    return Err(keys.fail(v, &message));
+                            Shortest(velocity.z)
+                        );
+                        return Err(keys.fail(v, &message));
+                    }
                 }
+                builder
+                    .on_ground_at(
+                        checked.shape,
+                        checked.friction,
+                        position.truncate(),
+                        velocity.truncate(),
+                    )
+                    .other_contacts(&contacts.others)
             }
-            builder
-                .on_ground_at(
-                    checked.shape,
-                    checked.friction,
-                    position.truncate(),
-                    velocity.truncate(),
-                )
-                .other_contacts(&contacts.others)
-        }
+        },
         (None, Some(pivot)) => {
             if let Some(v) = &b.velocity {
                 let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
@@ -161,6 +179,9 @@ pub fn add_body(
             (DynamicsError::OtherContactTouching { contact: i, gap }, _, Some(contact)) => {
                 watched_touching(&keys, contact, i, gap)
             }
+            (DynamicsError::BodyInsideTable { contact: i, gap }, _, Some(contact)) => {
+                inside_table(&keys, b.position.as_ref(), contact, i, gap)
+            }
             (e, _, Some(contact)) => keys.fail(contact, &format!("`contact`: {e}")),
             (e @ DynamicsError::InvalidState { .. }, _, _) => state_error(e),
             (e @ DynamicsError::MethodTakesNoInputs { .. }, _, _) => match &first_input {
@@ -170,7 +191,8 @@ pub fn add_body(
             (e, Some(pivot), _) => keys.fail(pivot, &format!("`pivot`: {e}")),
             (e, None, _) => keys.fail(raw, &e.to_string()),
         })?;
-    if let (Some(_), Some(given)) = (&b.contact, &b.position) {
+    let on_ground = matches!(world.plan(id), Some(Plan::OnGround { .. }));
+    if let (true, Some(given)) = (on_ground, &b.position) {
         check_height(&keys, given, world, id)?;
     }
     Ok((name, id))
@@ -197,6 +219,44 @@ fn watched_touching(
         Shortest(gap)
     );
     keys.fail_at(span, &message)
+}
+
+/// The centre of mass above the origin at the height where the lowest of
+/// `contacts` touches the table at attitude `q` (normalised).
+fn touching(contacts: &[TableContact], q: DQuat) -> DVec3 {
+    let height = contacts
+        .iter()
+        .map(|c| -c.shape.contact_from_com_world(q).z)
+        .fold(f64::NEG_INFINITY, f64::max);
+    DVec3::new(0.0, 0.0, height)
+}
+
+/// The error for contact `index` (0-based) of a body on the table below
+/// it at the start, at the `position` key if given, else at the table's
+/// line.
+fn inside_table(
+    keys: &Keys<'_>,
+    position: Option<&Spanned<[f64; 3]>>,
+    contacts: &Spanned<RawContacts>,
+    index: usize,
+    gap: f64,
+) -> CliError {
+    let message = format!(
+        "[[body.contact]] #{} is below the table at the start (its lowest point at z = {} m): \
+         a body on the table starts above it or touching it",
+        index + 1,
+        Shortest(gap)
+    );
+    match position {
+        Some(p) => keys.fail(p, &format!("`position`: {message}")),
+        None => {
+            let tables = contact::tables(contacts);
+            let span = tables
+                .get(index)
+                .map_or(contacts.span(), |(_, span)| span.clone());
+            keys.fail_at(span, &message)
+        }
+    }
 }
 
 /// The largest difference between a ground body's `position` z and the

@@ -9,10 +9,23 @@
 //! center = [x, y, z]          from the centre of mass, body axes, m [default: 0]
 //! normal = [x, y, z]          disk only: its axis, body axes
 //! semi_axes = [a, b, c]       ellipsoid only, body axes, m
-//! friction = "none" | "viscous" | "sliding" | "rolling"
-//! mu = μ                      viscous (s/m) and sliding (Coulomb), ≥ 0
+//! friction = "none" | "viscous" | "sliding" | "rolling" | "coulomb"
+//! mu = μ                      viscous (s/m), sliding and coulomb (Coulomb), ≥ 0
 //! slip_velocity = ε           sliding only, m/s [default: 1e-3]
+//! restitution = e             coulomb only: Newton's, in [0, 1] [default: 0]
+//! tangential_restitution = eT coulomb only: Garwin's, in [0, 1] [default: 0]
+//! contensou_radius = r_c      coulomb only: the drilling patch, m, ≥ 0 [default: 0]
 //! ```
+//!
+//! **`friction = "coulomb"`: the body is on the table.** A body whose
+//! contacts use `"coulomb"` moves with every one of them as a unilateral
+//! contact of the table `z = 0` — set-valued Coulomb friction with
+//! Contensou's drilling, Newton's impacts ([`ContactLaw`]) — by the
+//! library's event-driven [`kreisel_dynamics::TableMotion`]
+//! ([`kreisel_dynamics::Support::Table`]): each table gives its own law
+//! (`friction = "coulomb"` on every one of them, up to
+//! [`TableBody::MAX_CONTACTS`]; another friction model on the same body is
+//! an error), and the body may start above the table.
 //!
 //! `[[body.contact]]`, an array of such tables: the first is the surface
 //! the body stands on; the others (at most [`MAX_OTHER_CONTACTS`]) are
@@ -37,8 +50,8 @@ use std::str::FromStr;
 
 use glam::DVec3;
 use kreisel_dynamics::{
-    ContactShape, DiskContact, EllipsoidContact, Friction, FrictionModel, MAX_OTHER_CONTACTS,
-    SphereContact,
+    ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, Friction,
+    FrictionModel, MAX_OTHER_CONTACTS, SphereContact, TableBody, TableContact,
 };
 use serde::Deserialize;
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
@@ -63,7 +76,13 @@ pub struct RawContact {
     friction: Option<Spanned<String>>,
     mu: Option<Spanned<f64>>,
     slip_velocity: Option<Spanned<f64>>,
+    restitution: Option<Spanned<f64>>,
+    tangential_restitution: Option<Spanned<f64>>,
+    contensou_radius: Option<Spanned<f64>>,
 }
+
+/// The friction name of the nonsmooth contacts of a body on the table.
+pub const COULOMB: &str = "coulomb";
 
 /// `[body.contact]` (one table) or `[[body.contact]]` (an array of them).
 #[derive(Debug)]
@@ -146,6 +165,16 @@ pub struct CheckedContact {
     pub friction: Friction,
 }
 
+/// A body's checked contacts: on the ground (one touching, others
+/// watched) or on the table (every one a contact with its law).
+#[derive(Debug, Clone)]
+pub enum Contacts {
+    /// Regularised or rolling friction at the first table.
+    Ground(CheckedContacts),
+    /// `friction = "coulomb"`: every table, in order.
+    Table(Vec<TableContact>),
+}
+
 /// A body's checked contacts: the one it stands on, and the further
 /// shapes watched for touchdown (the tables after the first).
 #[derive(Debug, Clone)]
@@ -166,23 +195,119 @@ pub fn tables(contacts: &Spanned<RawContacts>) -> Vec<(&RawContact, std::ops::Ra
 }
 
 /// Checks the `contact` key of a body: one table, or an array of them
-/// (the first touching, the others watched; module docs).
+/// (the first touching, the others watched; with `friction = "coulomb"`
+/// all of them on the table; module docs).
 ///
 /// # Errors
 /// [`CliError::Scene`] naming the line and key of the first problem.
-pub fn check(
-    keys: &Keys<'_>,
-    contacts: &Spanned<RawContacts>,
-) -> Result<CheckedContacts, CliError> {
+pub fn check(keys: &Keys<'_>, contacts: &Spanned<RawContacts>) -> Result<Contacts, CliError> {
     let tables = tables(contacts);
     let Some(((first, _), others)) = tables.split_first() else {
         return Err(keys.fail(contacts, "`contact` is an empty array: give one table"));
     };
-    if let Some((_, span)) = tables.get(1 + MAX_OTHER_CONTACTS) {
+    let coulomb = tables.iter().find_map(|(raw, _)| {
+        raw.friction
+            .as_ref()
+            .filter(|f| f.get_ref().as_str() == COULOMB)
+    });
+    match coulomb {
+        Some(at) => on_table(keys, &tables, at).map(Contacts::Table),
+        None => on_ground(keys, first, others).map(Contacts::Ground),
+    }
+}
+
+/// The contacts of a body on the table: every table with
+/// `friction = "coulomb"` (`at`, the first such key, names the body's
+/// kind in the errors).
+fn on_table(
+    keys: &Keys<'_>,
+    tables: &[(&RawContact, std::ops::Range<usize>)],
+    at: &Spanned<String>,
+) -> Result<Vec<TableContact>, CliError> {
+    if let Some((_, span)) = tables.get(TableBody::MAX_CONTACTS) {
+        let message = format!(
+            "{} [[body.contact]] tables: a body on the table has at most {}",
+            tables.len(),
+            TableBody::MAX_CONTACTS
+        );
+        return Err(keys.fail_at(span.clone(), &message));
+    }
+    let mut checked = Vec::with_capacity(tables.len());
+    for (n, (raw, _)) in tables.iter().enumerate() {
+        let shape = shape(keys, raw)?;
+        let Some(given) = &raw.friction else {
+            let message = format!(
+                "`contact.friction` is missing: the body is on the table (friction \"coulomb\" \
+                 at line {}), and every [[body.contact]] gives its own law: friction = \"coulomb\" \
+                 with its mu (table #{})",
+                keys.line_of(at),
+                n + 1
+            );
+            return Err(keys.fail(&raw.shape, &message));
+        };
+        if given.get_ref() != COULOMB {
+            let message = format!(
+                "`contact.friction` = \"{}\" cannot be mixed with \"coulomb\" on one body (line \
+                 {}): a body on the table has friction \"coulomb\" at every contact",
+                given.get_ref(),
+                keys.line_of(at)
+            );
+            return Err(keys.fail(given, &message));
+        }
+        let law = law(keys, raw, given)?;
+        checked.push(TableContact { shape, law });
+    }
+    Ok(checked)
+}
+
+/// The law of a `friction = "coulomb"` table from `mu`, `restitution`,
+/// `tangential_restitution` and `contensou_radius`.
+fn law(keys: &Keys<'_>, raw: &RawContact, given: &Spanned<String>) -> Result<ContactLaw, CliError> {
+    let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²)); \
+               \"coulomb\" is exact Coulomb friction";
+    not_with(keys, "slip_velocity", &raw.slip_velocity, why)?;
+    let what = "friction \"coulomb\" needs the coefficient μ (dimensionless)";
+    let mu = required(keys, "mu", &raw.mu, given, what)?;
+    // Each key's value, checked by the law itself; its error at the key.
+    let keyed = |value: &Spanned<f64>, made: Result<ContactLaw, DynamicsError>| {
+        made.map_err(|e| match e {
+            DynamicsError::InvalidContact {
+                parameter, reason, ..
+            } => keys.fail(
+                value,
+                &format!(
+                    "`contact.{parameter}` {reason}, got {}",
+                    Shortest(*value.get_ref())
+                ),
+            ),
+            other => keys.fail(value, &format!("`contact`: {other}")),
+        })
+    };
+    let mut law = keyed(mu, ContactLaw::try_new(*mu.get_ref()))?;
+    if let Some(e) = &raw.restitution {
+        law = keyed(e, law.try_with_restitution(*e.get_ref()))?;
+    }
+    if let Some(e) = &raw.tangential_restitution {
+        law = keyed(e, law.try_with_tangential_restitution(*e.get_ref()))?;
+    }
+    if let Some(r) = &raw.contensou_radius {
+        law = keyed(r, law.try_with_contensou_radius(*r.get_ref()))?;
+    }
+    Ok(law)
+}
+
+/// The contacts of a body on the ground: the first table touching, the
+/// others watched (module docs).
+fn on_ground(
+    keys: &Keys<'_>,
+    first: &RawContact,
+    others: &[(&RawContact, std::ops::Range<usize>)],
+) -> Result<CheckedContacts, CliError> {
+    if let Some((_, span)) = others.get(MAX_OTHER_CONTACTS) {
         let message = format!(
             "{} [[body.contact]] tables: at most {} (the first touching the plane, up to \
              {MAX_OTHER_CONTACTS} more watched for touchdown)",
-            tables.len(),
+            1 + others.len(),
             1 + MAX_OTHER_CONTACTS
         );
         return Err(keys.fail_at(span.clone(), &message));
@@ -202,11 +327,25 @@ pub fn check(
         not_with(keys, "friction", &raw.friction, &why)?;
         not_with(keys, "mu", &raw.mu, &why)?;
         not_with(keys, "slip_velocity", &raw.slip_velocity, &why)?;
+        not_coulomb_keys(keys, raw, &why)?;
     }
     Ok(CheckedContacts {
         first: checked,
         others: watched,
     })
+}
+
+/// The keys of friction "coulomb" given where they have no meaning
+/// (`why`): an error at the first one's line.
+fn not_coulomb_keys(keys: &Keys<'_>, raw: &RawContact, why: &str) -> Result<(), CliError> {
+    not_with(keys, "restitution", &raw.restitution, why)?;
+    not_with(
+        keys,
+        "tangential_restitution",
+        &raw.tangential_restitution,
+        why,
+    )?;
+    not_with(keys, "contensou_radius", &raw.contensou_radius, why)
 }
 
 /// `key` given where it has no meaning: an error at its line.
@@ -316,13 +455,21 @@ fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, CliError> {
         "friction",
         &raw.friction,
         &raw.shape,
-        "\"none\", \"viscous\", \"sliding\" or \"rolling\" at the contact the body stands on",
+        "\"none\", \"viscous\", \"sliding\", \"rolling\" or \"coulomb\" at the contact the body \
+         stands on",
     )?;
-    let model: FrictionModel = given
-        .get_ref()
-        .parse()
-        .map_err(|e| keys.fail(given, &format!("`contact.friction`: {e}")))?;
+    let model: FrictionModel = given.get_ref().parse().map_err(|e| match e {
+        DynamicsError::UnknownFriction { name, known } => keys.fail(
+            given,
+            &format!(
+                "`contact.friction`: unknown friction model `{name}` (known: {known}, {COULOMB})"
+            ),
+        ),
+        other => keys.fail(given, &format!("`contact.friction`: {other}")),
+    })?;
     let unused = format!("is not used with friction \"{model}\"");
+    let only_coulomb = "is only for friction \"coulomb\" (a body on the table)";
+    not_coulomb_keys(keys, raw, only_coulomb)?;
     if model != FrictionModel::Sliding {
         let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²))";
         not_with(keys, "slip_velocity", &raw.slip_velocity, why)?;

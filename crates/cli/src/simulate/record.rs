@@ -40,8 +40,8 @@ pub struct Track {
     pub principal: PrincipalAxes,
     /// Turns about a fixed pivot (L is then about the pivot).
     pub pivot: bool,
-    /// Stands on the ground plane (L about the centre of mass, turned by
-    /// the contact force).
+    /// Stands on the ground plane or the table (L about the centre of
+    /// mass, turned by the contact forces).
     pub ground: bool,
     /// Torques, forces or damping act on it.
     pub driven: bool,
@@ -79,7 +79,10 @@ impl Recorder {
                     name: name.clone(),
                     principal: body.mass_properties().principal(),
                     pivot: matches!(body.support(), Support::Pivot { .. }),
-                    ground: matches!(body.support(), Support::Ground { .. }),
+                    ground: matches!(
+                        body.support(),
+                        Support::Ground { .. } | Support::Table { .. }
+                    ),
                     driven: !body.inputs().is_none(),
                     samples: Vec::new(),
                 })

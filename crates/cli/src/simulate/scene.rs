@@ -116,6 +116,11 @@ impl<'a> Keys<'a> {
         self.fail_at(value.span(), message)
     }
 
+    /// The 1-based line of `value`.
+    pub fn line_of<T>(&self, value: &Spanned<T>) -> u64 {
+        self.file.line_of(value.span().start)
+    }
+
     /// The value of `key`, which must be positive and finite.
     pub fn positive(&self, key: &str, value: &Spanned<f64>) -> Result<f64, CliError> {
         let v = *value.get_ref();

@@ -5,7 +5,7 @@
 use std::io;
 use std::path::Path;
 
-use kreisel_dynamics::DynamicsError;
+use kreisel_dynamics::{DynamicsError, Plan};
 
 use super::methods::AUTO;
 use super::scene::Scene;
@@ -36,9 +36,11 @@ pub(super) enum Stop {
 impl Stop {
     /// Whether the run stopped at a physical event that ends what the
     /// model describes (a watched contact touching down, lift-off, a disk
-    /// lying flat, an indeterminate contact): the rows before it are the
-    /// motion up to the event. A divergence, a refused step or a number
-    /// that is not finite is no event: the run failed.
+    /// lying flat, an indeterminate contact; on the table: contact modes
+    /// that chatter, an impact the law cannot resolve without gaining
+    /// energy): the rows before it are the motion up to the event. A
+    /// divergence, a refused step or a number that is not finite is no
+    /// event: the run failed.
     pub(super) fn is_event(&self) -> bool {
         matches!(
             self,
@@ -46,7 +48,9 @@ impl Stop {
                 error: DynamicsError::ContactTouchdown { .. }
                     | DynamicsError::ContactLost { .. }
                     | DynamicsError::DiskFlat { .. }
-                    | DynamicsError::ContactIndeterminate { .. },
+                    | DynamicsError::ContactIndeterminate { .. }
+                    | DynamicsError::ContactModesChatter { .. }
+                    | DynamicsError::ImpactGainsEnergy { .. },
                 ..
             }
         )
@@ -106,10 +110,12 @@ impl From<io::Error> for Stop {
 }
 
 /// The body whose step failed: its name, the lines of its contact
-/// tables, and the end of the step that failed, s.
+/// tables, whether it is on the table, and the end of the step that
+/// failed, s.
 struct Failed<'a> {
     body: &'a str,
     contact_lines: &'a [u64],
+    on_table: bool,
     time: f64,
 }
 
@@ -122,6 +128,10 @@ impl<'a> Failed<'a> {
                 .get(body)
                 .map_or("?", |(name, _)| name.as_str()),
             contact_lines: scene.contact_lines.get(body).map_or(&[], Vec::as_slice),
+            on_table: scene
+                .bodies
+                .get(body)
+                .is_some_and(|(_, id)| matches!(scene.world.plan(*id), Some(Plan::OnTable { .. }))),
             time,
         }
     }
@@ -139,8 +149,20 @@ fn diverged(
     let Failed {
         body,
         contact_lines,
+        on_table,
         time,
     } = *failed;
+    if on_table {
+        // Its own steps, whatever dt: the error says what and when.
+        return CliError::Scene {
+            path: scene_path.to_owned(),
+            line: None,
+            message: format!(
+                "body `{body}`: on the table: {error}; the run stops there (dt is only the grid \
+                 of the rows and does not change the motion; `tolerance` sets its steps)"
+            ),
+        };
+    }
     if let DynamicsError::ContactTouchdown {
         time,
         contact,
@@ -201,5 +223,46 @@ fn diverged(
         path: scene_path.to_owned(),
         line: None,
         message,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use super::*;
+
+    /// A body on the table whose modes chatter: an event (the rows before
+    /// it kept), one line naming the body and the library's error, and no
+    /// advice to shrink dt (which does not change its motion).
+    #[test]
+    fn a_failure_on_the_table_is_named_without_the_dt_hint() {
+        let text = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
+            [[body]]\nname = \"ball\"\nmass = 1\ninertia = [0.004, 0.004, 0.004]\n\
+            angular_velocity = [0, 0, 0]\n[[body.contact]]\nshape = \"sphere\"\nradius = 0.1\n\
+            friction = \"coulomb\"\nmu = 0.3\n";
+        let path = Path::new("s.toml");
+        let scene = super::super::scene::parse(path, text).unwrap();
+        let error = DynamicsError::ContactModesChatter {
+            time: 0.25,
+            count: 65,
+        };
+        let stop = Stop::from_world(DynamicsError::BodyFailed {
+            body: 0,
+            time: 0.3,
+            source: Box::new(error.clone()),
+        });
+        assert!(stop.is_event());
+        let message = stop
+            .into_error(&scene, path, AUTO, &Stream::Standard)
+            .to_string();
+        assert_eq!(
+            message,
+            format!(
+                "s.toml: body `ball`: on the table: {error}; the run stops there (dt is only the \
+                 grid of the rows and does not change the motion; `tolerance` sets its steps)"
+            )
+        );
+        assert!(!message.contains("smaller dt"));
     }
 }

@@ -264,9 +264,9 @@ fn bad_contacts_are_one_line_errors_at_their_line() {
     check(
         "c_unknown_friction.toml",
         DOWN,
-        &contact(&format!("{sphere}friction = \"coulomb\"\n")),
+        &contact(&format!("{sphere}friction = \"stribeck\"\n")),
         13,
-        &["unknown friction model `coulomb` (known: none, viscous, sliding, rolling)"],
+        &["unknown friction model `stribeck` (known: none, viscous, sliding, rolling, coulomb)"],
     );
     check(
         "c_unknown_shape.toml",

@@ -19,5 +19,6 @@ mod physics;
 mod plot;
 mod rattleback;
 mod support;
+mod table;
 mod threads;
 mod tolerance;

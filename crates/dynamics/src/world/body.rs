@@ -6,6 +6,7 @@ use kreisel_inertia::MassProperties;
 
 use crate::{
     ContactShape, DynamicsError, Friction, Inputs, MAX_OTHER_CONTACTS, PrincipalState, RigidBody,
+    TableBody, TableContact,
 };
 
 /// How a body is held.
@@ -74,6 +75,23 @@ pub enum Support {
         /// means "as rolling needs"; any other value must be that one).
         velocity_xy: DVec2,
     },
+    /// The body moves above and on the table `z = 0` (the world's gravity
+    /// must point along −z) with all its contact shapes
+    /// ([`Body::table_contacts`], [`BodyBuilder::on_table`]), each a
+    /// unilateral contact with Coulomb–Contensou friction and Newton's
+    /// restitution: a [`crate::TableMotion`] in the world
+    /// ([`crate::Plan::OnTable`]). It may start above the table (dropped,
+    /// thrown) or touching it; no shape may start below it.
+    ///
+    /// ```text
+    /// r_G(0) = position,   v_G(0) = velocity,   every gap gᵢ = z_G + (ρᵢ)_z ≥ 0
+    /// ```
+    Table {
+        /// The centre of mass at the time the body is added, world axes, m.
+        position: DVec3,
+        /// Its velocity, world axes, m/s.
+        velocity: DVec3,
+    },
 }
 
 /// A rigid body ready to be added to a [`crate::World`]: mass properties
@@ -106,6 +124,8 @@ pub struct Body {
     omega_body: DVec3,
     support: Support,
     others: Option<OtherContacts>,
+    /// The shapes and laws of a body on the table (empty otherwise).
+    table: Vec<TableContact>,
     inputs: Inputs,
 }
 
@@ -149,6 +169,7 @@ pub struct BodyBuilder {
     omega_body: DVec3,
     support: Support,
     others: Option<OtherContacts>,
+    table: Vec<TableContact>,
     inputs: Inputs,
 }
 
@@ -278,6 +299,24 @@ impl Body {
         self.others.as_ref().map_or(&[], OtherContacts::shapes)
     }
 
+    /// The contact shapes and their laws of a body on the table
+    /// ([`BodyBuilder::on_table`]; empty for any other support).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, ContactLaw, ContactShape, SphereContact, TableContact};
+    /// let ball = ContactShape::Sphere(SphereContact::try_new(0.1, DVec3::ZERO)?);
+    /// let contact = TableContact { shape: ball, law: ContactLaw::try_new(0.3)? };
+    /// let b = Body::from_principal_moments(1.0, DVec3::splat(0.004))
+    ///     .on_table(DVec3::new(0.0, 0.0, 1.0), DVec3::ZERO, &[contact])
+    ///     .try_build()?;
+    /// assert_eq!(b.table_contacts(), &[contact]);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn table_contacts(&self) -> &[TableContact] {
+        &self.table
+    }
+
     /// What is applied to the body (torques, forces, damping, a law).
     ///
     /// ```
@@ -296,7 +335,10 @@ impl Body {
     /// Inputs that are all zero change nothing.
     ///
     /// # Errors
-    /// [`DynamicsError::InvalidInput`] as [`Inputs::validate`].
+    /// [`DynamicsError::InvalidInput`] as [`Inputs::validate`];
+    /// [`DynamicsError::InvalidBody`] (`"inputs"`) for inputs that are not
+    /// all zero on a body on the table ([`Support::Table`]: applied loads
+    /// are not modelled there).
     ///
     /// ```
     /// use glam::DVec3;
@@ -312,6 +354,7 @@ impl Body {
     /// ```
     pub fn with_inputs(self, inputs: Inputs) -> Result<Self, DynamicsError> {
         inputs.validate()?;
+        check_table_inputs(self.support, &inputs)?;
         Ok(Self { inputs, ..self })
     }
 
@@ -332,6 +375,7 @@ impl BodyBuilder {
                 velocity: DVec3::ZERO,
             },
             others: None,
+            table: Vec::new(),
             inputs: Inputs::default(),
         }
     }
@@ -460,6 +504,39 @@ impl BodyBuilder {
         }
     }
 
+    /// A body above or on the table `z = 0` ([`Support::Table`]): its
+    /// centre of mass at `position` (m) moving at `velocity` (m/s), world
+    /// axes, touching the table with any of `contacts` (each a shape centred
+    /// in body axes from the centre of mass and its [`crate::ContactLaw`]:
+    /// friction, restitution, Contensou's patch). The world moves it by a
+    /// [`crate::TableMotion`] through impacts, lift-offs, sticking and
+    /// slipping, to rest ([`crate::Plan::OnTable`]).
+    ///
+    /// ```
+    /// use glam::DVec3;
+    /// use kreisel_dynamics::{Body, ContactLaw, ContactShape, Plan, SphereContact, TableContact, World};
+    /// // A ball dropped from 1 m (centre), e = 0.9: the first impact at √(2 · 0.9/9.81) s.
+    /// let ball = ContactShape::Sphere(SphereContact::try_new(0.1, DVec3::ZERO)?);
+    /// let law = ContactLaw::try_new(0.0)?.try_with_restitution(0.9)?;
+    /// let body = Body::from_principal_moments(1.0, DVec3::splat(0.004))
+    ///     .on_table(DVec3::new(0.0, 0.0, 1.0), DVec3::ZERO, &[TableContact { shape: ball, law }])
+    ///     .try_build()?;
+    /// let mut world = World::try_new(DVec3::new(0.0, 0.0, -9.81), 1.0 / 60.0)?;
+    /// let id = world.add(body)?;
+    /// assert_eq!(world.plan(id), Some(&Plan::OnTable { contacts: 1 }));
+    /// world.advance_to(0.5)?;
+    /// let first = world.events(id).unwrap()[0];
+    /// assert!((first.time - (2.0 * 0.9 / 9.81f64).sqrt()).abs() < 1e-12);
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn on_table(self, position: DVec3, velocity: DVec3, contacts: &[TableContact]) -> Self {
+        Self {
+            support: Support::Table { position, velocity },
+            table: contacts.to_vec(),
+            ..self
+        }
+    }
+
     /// A body on the ground ([`BodyBuilder::on_ground`]) with further
     /// body-fixed contact shapes that do not touch the plane at the start
     /// — the stem's ball of a tippe top — watched for touchdown (replacing
@@ -541,7 +618,11 @@ impl BodyBuilder {
     /// [`DynamicsError::InvalidContact`] for more than
     /// [`MAX_OTHER_CONTACTS`] of them; for a body on the ground the errors
     /// of [`Friction::validate`]; [`DynamicsError::InvalidInput`] for
-    /// inputs ([`BodyBuilder::with_inputs`]) as [`Inputs::validate`].
+    /// inputs ([`BodyBuilder::with_inputs`]) as [`Inputs::validate`]; for
+    /// a body on the table ([`BodyBuilder::on_table`]) the errors of
+    /// [`TableBody::try_new`] (no contact shape, more than
+    /// [`TableBody::MAX_CONTACTS`]) and [`DynamicsError::InvalidBody`]
+    /// (`"inputs"`) for inputs that are not all zero.
     ///
     /// ```
     /// use glam::{DQuat, DVec3};
@@ -602,6 +683,16 @@ impl BodyBuilder {
                 finite("velocity", velocity_xy.extend(0.0))?;
                 friction.validate()?;
             }
+            Support::Table { position, velocity } => {
+                finite("position", position)?;
+                finite("velocity", velocity)?;
+            }
+        }
+        if !self.table.is_empty() && !matches!(self.support, Support::Table { .. }) {
+            return Err(DynamicsError::InvalidBody {
+                field: "table_contacts",
+                reason: "are only for a body on the table (BodyBuilder::on_table)",
+            });
         }
         if let Some(others) = &self.others {
             if !matches!(self.support, Support::Ground { .. }) {
@@ -620,6 +711,16 @@ impl BodyBuilder {
         }
         PrincipalState::try_from_omega_body(&rigid, self.world_from_body, self.omega_body)?;
         self.inputs.validate()?;
+        if matches!(self.support, Support::Table { .. }) {
+            // The shapes and the mass properties as the table will take them.
+            TableBody::try_new(
+                mass_properties.mass,
+                mass_properties.inertia,
+                self.table.clone(),
+                1.0,
+            )?;
+            check_table_inputs(self.support, &self.inputs)?;
+        }
         Ok(Body {
             mass_properties,
             rigid,
@@ -627,9 +728,22 @@ impl BodyBuilder {
             omega_body: self.omega_body,
             support: self.support,
             others: self.others,
+            table: self.table,
             inputs: self.inputs,
         })
     }
+}
+
+/// [`DynamicsError::InvalidBody`] (`"inputs"`) for inputs that are not all
+/// zero on a body on the table.
+pub(super) fn check_table_inputs(support: Support, inputs: &Inputs) -> Result<(), DynamicsError> {
+    if matches!(support, Support::Table { .. }) && !inputs.is_none() {
+        return Err(DynamicsError::InvalidBody {
+            field: "inputs",
+            reason: "are not modelled for a body on the table (only gravity and the contacts act)",
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]

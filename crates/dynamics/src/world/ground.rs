@@ -72,7 +72,7 @@ pub(crate) struct GroundMotion {
 ///
 /// # Errors
 /// [`DynamicsError::InvalidBody`] for any other gravity.
-fn gravity_down(gravity: DVec3) -> Result<f64, DynamicsError> {
+pub(super) fn gravity_down(gravity: DVec3) -> Result<f64, DynamicsError> {
     if gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0 {
         Ok(-gravity.z)
     } else {

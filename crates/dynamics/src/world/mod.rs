@@ -33,6 +33,15 @@
 //!   modelled). Their inputs enter the contact model, read at the world's
 //!   time ([`crate::GroundTop::try_with_inputs`]); neither the methods nor
 //!   the tolerance change their plan (`ground.rs`).
+//! - Bodies on the table `z = 0` ([`Support::Table`], [`Plan::OnTable`];
+//!   gravity along −z) with any number of contact shapes, started above
+//!   or touching it: a [`crate::TableMotion`] each (unilateral contacts,
+//!   impacts, Coulomb–Contensou friction), advanced to the end of every
+//!   move in its own error-controlled steps — the world's `dt` is only
+//!   the grid the states are read on; its events (impacts, lift-offs,
+//!   stick–slip, rest) are recorded ([`World::events`]) while the run
+//!   goes on. The world's [`Tolerance`] sets its accuracy
+//!   ([`crate::table_tolerance`]; `table.rs`).
 //! - With a [`Tolerance`] ([`World::set_tolerance`]) each body that steps
 //!   takes the cheapest method and sub-steps predicted to meet it
 //!   ([`World::choice`]).
@@ -64,6 +73,7 @@ mod registry;
 mod setters;
 mod state;
 mod stepping;
+mod table;
 mod tolerance;
 mod uniform;
 
@@ -75,6 +85,7 @@ pub use self::body::{Body, BodyBuilder, Support};
 pub use self::plan::Plan;
 use self::state::Reading;
 pub use self::state::{BodyId, BodyState};
+pub use self::table::{DEFAULT_TABLE_TOLERANCE, table_tolerance};
 pub use self::tolerance::{Choice, Tolerance};
 
 use self::clock::Clock;
@@ -424,7 +435,11 @@ impl World {
     /// ([`crate::GroundTop::try_state_on_ground`]: a disk lying flat, a
     /// rolling start that slips) and
     /// [`DynamicsError::OtherContactTouching`] when a further shape
-    /// ([`BodyBuilder::other_contacts`]) is at or below the plane; for a free body with inputs,
+    /// ([`BodyBuilder::other_contacts`]) is at or below the plane; for a
+    /// body on the table, [`DynamicsError::InvalidBody`] for gravity not
+    /// along −z or applied inputs, the errors of [`crate::TableBody::try_new`]
+    /// and [`crate::TableMotion::try_new`] (a shape below the table:
+    /// [`DynamicsError::BodyInsideTable`]); for a free body with inputs,
     /// [`DynamicsError::MethodTakesNoInputs`] when the world's free-body
     /// method cannot move it and [`DynamicsError::InvalidBodyParameter`]
     /// for a non-finite gravity term; the set-up errors of its plan.
@@ -449,6 +464,7 @@ impl World {
     pub fn add(&mut self, body: Body) -> Result<BodyId, DynamicsError> {
         let (rigid, top, ballistic) = match body.support() {
             Support::Ground { .. } => return self.add_on_ground(body),
+            Support::Table { .. } => return self.add_on_table(body),
             Support::Free { position, velocity } => {
                 (*body.rigid_body(), None, (position, velocity, self.time()))
             }
@@ -649,10 +665,15 @@ impl World {
     }
 
     /// Remakes every plan from the current states (a body on the ground
-    /// keeps its own: no method or tolerance changes it).
+    /// keeps its own: no method or tolerance changes it; a body on the
+    /// table keeps its run: only the tolerance changes it,
+    /// [`World::set_tolerance`]).
     fn replan_all(&mut self) -> Result<(), DynamicsError> {
         for index in 0..self.entries.len() {
-            if matches!(self.entries[index].motion, Motion::Ground(_)) {
+            if matches!(
+                self.entries[index].motion,
+                Motion::Ground(_) | Motion::Table(_)
+            ) {
                 continue;
             }
             let state = self.rotation(index);
@@ -663,8 +684,10 @@ impl World {
 
     /// Gives body `index` the rotational state `state` now and remakes its plan.
     fn replan(&mut self, index: usize, state: PrincipalState) -> Result<(), DynamicsError> {
-        if matches!(self.entries[index].motion, Motion::Ground(_)) {
-            return self.replan_ground(index, state);
+        match self.entries[index].motion {
+            Motion::Ground(_) => return self.replan_ground(index, state),
+            Motion::Table(_) => return self.replan_table(index, state),
+            _ => {}
         }
         let now = self.time();
         let entry = &self.entries[index];
@@ -760,7 +783,9 @@ impl World {
     /// for less work than the exact solution (a game loop that reads every
     /// frame), and a body with inputs by the cheapest splitting and
     /// sub-steps that meet it ([`Choice`]; the model is in [`Tolerance`]'s
-    /// module docs).
+    /// module docs). A body on the table starts its run again from its
+    /// state now under the tolerance's error control
+    /// ([`crate::table_tolerance`]), whatever the methods.
     ///
     /// # Errors
     /// The set-up errors of a plan.
@@ -779,7 +804,8 @@ impl World {
     /// ```
     pub fn set_tolerance(&mut self, tolerance: Option<Tolerance>) -> Result<(), DynamicsError> {
         self.tolerance = tolerance;
-        self.replan_all()
+        self.replan_all()?;
+        self.retune_tables()
     }
 
     /// The accuracy asked of the bodies (`None` by default).

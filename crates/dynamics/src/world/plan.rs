@@ -13,12 +13,14 @@
 //! free, with applied inputs           forced:      a torque splitting, every dt
 //! pivot, with applied inputs          driven top:  the splitting with gravity kicked too, every dt
 //! on the ground (a contact shape)     on ground:   the contact model's RK4, every dt (never more)
+//! on the table (contact shapes)       on table:    event-driven dopri5, its own steps within each move
 //! ```
 
 use std::fmt;
 
 use super::ground::GroundMotion;
 use super::registry;
+use super::table::TableRun;
 use super::uniform::UniformBatch;
 use crate::elliptic::dd::Dd;
 use crate::exact::ExactKind;
@@ -114,6 +116,17 @@ pub enum Plan {
         /// How many further contact shapes are watched for touchdown
         /// ([`crate::BodyBuilder::other_contacts`]).
         watched: usize,
+    },
+    /// A body above or on the table ([`crate::Support::Table`]): its
+    /// [`crate::TableMotion`], Dormand–Prince 5(4) with error control
+    /// between events (impacts, touchdowns, lift-offs, stick, slip, rest,
+    /// recorded: [`crate::World::events`]), advanced to the end of each
+    /// move in its own steps — the world's `dt` is only the grid the
+    /// states are read on. Its tolerance is the world's
+    /// ([`crate::table_tolerance`]); the methods do not change it.
+    OnTable {
+        /// How many contact shapes the body has.
+        contacts: usize,
     },
 }
 
@@ -302,6 +315,11 @@ impl fmt::Display for Plan {
                 "body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction {friction}; {watched} further contact{} watched; lift-off or a touchdown stops the run)",
                 if *watched == 1 { "" } else { "s" }
             ),
+            Plan::OnTable { contacts } => write!(
+                f,
+                "body on the table: event-driven dopri5 (order 5) with error control, its own steps within each dt (unilateral contact of {contacts} shape{} with the plane z = 0, Coulomb-Contensou friction, Newton impacts; impacts, lift-off, stick-slip and rest are events and the run goes on)",
+                if *contacts == 1 { "" } else { "s" }
+            ),
         }
     }
 }
@@ -343,6 +361,8 @@ pub(crate) enum Motion {
     Forced(ForcedMotion),
     /// A body on the ground plane: its contact model and state.
     Ground(Box<GroundMotion>),
+    /// A body on the table: its nonsmooth run.
+    Table(Box<TableRun>),
 }
 
 /// A body under inputs (or a heavy top under a tolerance) as the world
@@ -495,6 +515,7 @@ impl Motion {
             Motion::Stepping(propagator) => propagator.state(),
             Motion::Forced(forced) => forced.state.rotation,
             Motion::Ground(ground) => ground.principal_state(),
+            Motion::Table(table) => table.principal_state(),
         }
     }
 

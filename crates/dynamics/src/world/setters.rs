@@ -20,7 +20,10 @@ impl World {
     ///
     /// # Errors
     /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidState`] for
-    /// a non-finite or overflowing ω; the plan's set-up errors.
+    /// a non-finite or overflowing ω; the plan's set-up errors (for a body
+    /// on the table, whose run starts again from the new state: a shape
+    /// turned into the table, [`DynamicsError::BodyInsideTable`]; then
+    /// nothing changes).
     ///
     /// ```
     /// # use kreisel_dynamics::{Body, Plan, World};
@@ -133,7 +136,9 @@ impl World {
     }
 
     /// Sets a free body's centre of mass (m) and its velocity (m/s), world
-    /// axes, now: its flight restarts from them.
+    /// axes, now: its flight restarts from them. A body on the table
+    /// ([`crate::Support::Table`]) starts its run again from them (above
+    /// the table or touching it).
     ///
     /// ```text
     /// x(t) = x + v (t − now) + ½ g (t − now)²
@@ -142,7 +147,10 @@ impl World {
     /// # Errors
     /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidBody`] for
     /// a non-finite vector, a body on a pivot (which does not fly) or on
-    /// the ground (whose height follows from its attitude).
+    /// the ground (whose height follows from its attitude);
+    /// [`DynamicsError::BodyInsideTable`] for a body on the table put
+    /// into it, and the errors of its run's start
+    /// ([`crate::TableMotion::try_new`]; then nothing changes).
     ///
     /// ```
     /// # use kreisel_dynamics::{Body, World};
@@ -164,6 +172,18 @@ impl World {
         velocity: DVec3,
     ) -> Result<(), DynamicsError> {
         let entry = self.entry(id)?;
+        if matches!(entry.motion, Motion::Table(_)) {
+            if !(position.is_finite() && velocity.is_finite()) {
+                let field = if position.is_finite() {
+                    "velocity"
+                } else {
+                    "position"
+                };
+                let reason = "must be finite";
+                return Err(DynamicsError::InvalidBody { field, reason });
+            }
+            return self.move_on_table(id.0, position, velocity);
+        }
         let field = if entry.top.is_some() {
             Some((
                 "position",
@@ -204,7 +224,9 @@ impl World {
     /// [`DynamicsError::UnknownBody`]; [`DynamicsError::InvalidInput`] as
     /// [`Inputs::validate`]; [`DynamicsError::MethodTakesNoInputs`] when
     /// the world's free-body method (heavy-top method, on a pivot) cannot
-    /// move a body with inputs. On an error nothing changes.
+    /// move a body with inputs; [`DynamicsError::InvalidBody`] (`"inputs"`)
+    /// for inputs not all zero on a body on the table (loads are not
+    /// modelled there). On an error nothing changes.
     ///
     /// ```
     /// use glam::DVec3;
@@ -223,8 +245,14 @@ impl World {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn set_inputs(&mut self, id: BodyId, inputs: Inputs) -> Result<(), DynamicsError> {
-        self.entry(id)?;
+        let entry = self.entry(id)?;
         inputs.validate()?;
+        super::body::check_table_inputs(entry.body.support(), &inputs)?;
+        if matches!(entry.motion, Motion::Table(_)) {
+            // Inputs all zero: nothing changes in the motion.
+            self.entries[id.0].body.set_inputs(inputs);
+            return Ok(());
+        }
         if let Some(super::Entry {
             motion: super::plan::Motion::Ground(ground),
             body,

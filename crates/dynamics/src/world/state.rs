@@ -207,6 +207,7 @@ impl World {
                 } => self.uniform.state(slot).0 * body_from_principal.conjugate(),
                 Lane::Entry => match &self.entries[i].motion {
                     Motion::Ground(ground) => ground.attitude(),
+                    Motion::Table(table) => table.attitude(),
                     _ => self.rotation(i).world_from_body(&self.entries[i].rigid),
                 },
             })
@@ -217,8 +218,10 @@ impl World {
     #[inline(never)]
     fn entry_state(&self, index: usize) -> BodyState {
         let entry = &self.entries[index];
-        if let Motion::Ground(ground) = &entry.motion {
-            return ground.body_state(self.time());
+        match &entry.motion {
+            Motion::Ground(ground) => return ground.body_state(self.time()),
+            Motion::Table(table) => return table.body_state(self.time()),
+            _ => {}
         }
         let state = self.rotation(index);
         let world_from_body = state.world_from_body(&entry.rigid);
@@ -287,7 +290,7 @@ impl World {
         let Some(now) = self.state(id) else {
             return false;
         };
-        let on_ground = matches!(entry.motion, Motion::Ground(_));
+        let on_ground = matches!(entry.motion, Motion::Ground(_) | Motion::Table(_));
         if entry.top.is_some() || entry.motion.forced_state().is_some() || on_ground {
             // A pivot, or loads no formula foresees: only now is known.
             return now.energy.is_finite();

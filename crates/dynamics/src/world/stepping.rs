@@ -8,6 +8,7 @@
 use super::clock::{Clock, Route};
 use super::ground::GroundMotion;
 use super::plan::{ForcedMotion, Motion, elapsed};
+use super::table::TableRun;
 use super::{Entry, World};
 use crate::elliptic::dd::Dd;
 use crate::{
@@ -223,6 +224,10 @@ impl World {
                     jobs.push((index, Job::Ground(ground)));
                     None
                 }
+                Motion::Table(table) => {
+                    jobs.push((index, Job::Table(table)));
+                    None
+                }
                 Motion::HeavyTop { state, integrator } => {
                     if let Some(top) = top.as_ref() {
                         jobs.push((
@@ -322,6 +327,9 @@ enum Job<'a> {
     Forced(&'a mut ForcedMotion),
     /// A body on the ground: stepped by its contact model's RK4.
     Ground(&'a mut GroundMotion),
+    /// A body on the table: its run advanced to the route's end in its
+    /// own steps.
+    Table(&'a mut TableRun),
 }
 
 /// What every body's walk along a route needs (`Copy`, `Send`).
@@ -341,6 +349,23 @@ impl Walker {
         } else {
             self.route.end
         }
+    }
+
+    /// The first step of the route (1-based) that ends at or after `t`
+    /// (the last one for a `t` beyond the route).
+    fn step_at(&self, t: f64) -> u64 {
+        let last = self.route.whole + u64::from(self.route.last.is_some());
+        // time_of is increasing in k: the first k with time_of(k) ≥ t.
+        let (mut lo, mut hi) = (1, last.max(1));
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if self.time_of(mid) >= t {
+                hi = mid;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        lo
     }
 
     /// Takes the route's whole steps of `dt` and its last step through
@@ -428,6 +453,11 @@ impl Walker {
                 };
                 self.walk(&mut step)
             }
+            Job::Table(table) => {
+                // The grid is for reading only: one advance to the end.
+                let advanced = table.advance_to(self.route.end);
+                advanced.err().map(|e| (self.step_at(table.time()), e))
+            }
         }
     }
 
@@ -492,6 +522,25 @@ mod tests {
         assert_eq!(threads_for(2, 100, 100), 1);
         assert_eq!(threads_for(2, 1000, 1000), 2);
         assert_eq!(threads_for(2, 1000, u64::MAX), 2);
+    }
+
+    #[test]
+    fn a_failure_inside_a_move_is_given_the_step_that_contains_it() {
+        let clock = Clock::new(0.1);
+        let walker = |whole, last: Option<f64>, end| Walker {
+            route: Route { whole, last, end },
+            clock,
+            end: Dd::from_f64(end),
+        };
+        let grid = walker(10, None, 1.0);
+        assert_eq!(grid.step_at(0.0), 1);
+        assert_eq!(grid.step_at(0.25), 3);
+        assert_eq!(grid.step_at(grid.time_of(3)), 3);
+        assert_eq!(grid.step_at(0.95), 10);
+        assert_eq!(grid.step_at(5.0), 10);
+        let shortened = walker(10, Some(0.05), 1.05);
+        assert_eq!(shortened.step_at(1.02), 11);
+        assert_eq!(walker(0, Some(0.05), 0.05).step_at(0.01), 1);
     }
 
     #[test]
