@@ -68,8 +68,15 @@ sign change is located, else the first sample where it holds)
 * t_axis_horizontal: the symmetry axis' world z-component (stem direction)
   first drops to 0 (theta = 90 degrees).
 * t_stem_first_touch: first step with a positive stem-sphere percussion.
-* t_ball_last_contact: last step with a positive ball percussion (after it
-  the ball never touches again up to t_end); ball_contact_at_end.
+* t_ball_liftoff: the ball's gap first exceeds 1e-6 m (interpolated);
+  t_ball_retouch: the first step after that with a positive ball percussion.
+* t_both_contacts_first: first step with both percussions positive (ball and
+  stem on the table: then theta = theta_two_point_deg =
+  arccos((R2 - R1)/(a2 - a1)) = 140.2849 degrees, a geometric check);
+  t_stem_last_contact; stem_only_duration: the time spent on the stem with
+  the ball off the table.
+* t_ball_last_contact: last step with a positive ball percussion;
+  ball_contact_at_end, stem_contact_at_end.
 * theta at 0.5 s intervals (degrees), final state at t_end: theta, z_S,
   omega (world), spin about the vertical, energy; energy_max_rise: the
   largest increase of the total energy between consecutive steps (a
@@ -114,7 +121,12 @@ PARAMS = dict(
 )
 PARAMS["Rbar"] = 3 * np.pi / 16 * PARAMS["R_contensou"]
 PARAMS["z0"] = PARAMS["R1"] - PARAMS["a1"] * np.cos(PARAMS["theta0"])
+# both spheres on the table: z + a1 cos(theta) = R1 and z + a2 cos(theta) = R2
+PARAMS["theta_two_point_deg"] = float(
+    np.degrees(np.arccos((PARAMS["R2"] - PARAMS["R1"]) / (PARAMS["a2"] - PARAMS["a1"])))
+)
 
+AIRBORNE = 1e-6  # m: the ball counts as off the table above this gap
 DEFAULT_RUNS = "moreau:2e-4,moreau:1e-4,moreau:5e-5,rattle:1e-3,rattle:5e-4"
 
 
@@ -222,8 +234,22 @@ def analyse(t, q, u, P_N, P_F):
     for ts in np.arange(0.5, t[-1] + 1e-9, 0.5):
         i = int(np.argmin(np.abs(t - ts)))
         samples[f"{ts:g}"] = float(np.degrees(theta[i]))
+    airborne = gap_ball > AIRBORNE
+    lift = np.nonzero(airborne)[0]
+    retouch = np.nonzero(ball_on[lift[0]:])[0] + lift[0] if len(lift) else []
+    both = np.nonzero(ball_on & stem_on)[0]
+    dt = np.diff(t)
+    stem_only = float(np.sum(dt[(stem_on & airborne)[1:]]))
     return dict(
         t_axis_horizontal=crossing(t, axis_z),
+        t_ball_liftoff=crossing(t, AIRBORNE - gap_ball),
+        t_ball_retouch=float(t[retouch[0]]) if len(retouch) else None,
+        t_both_contacts_first=float(t[both[0]]) if len(both) else None,
+        theta_deg_at_both_contacts_first=(
+            float(np.degrees(theta[both[0]])) if len(both) else None
+        ),
+        t_stem_last_contact=float(t[stem_idx[-1]]) if len(stem_idx) else None,
+        stem_only_duration=stem_only,
         t_stem_first_touch=float(t[stem_idx[0]]) if len(stem_idx) else None,
         t_stem_gap_first_nonpositive=crossing(t, gap_stem),
         t_ball_last_contact=float(t[ball_idx[-1]]) if len(ball_idx) else None,
