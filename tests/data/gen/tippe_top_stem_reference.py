@@ -62,6 +62,18 @@ Integrators (cardillo)
   the gap at the midpoint is <= 0, fixed-point prox iteration to 1e-10.
 * Rattle: cardillo's nonsmooth RATTLE (Capobianco et al.), atol 1e-10.
 
+Independent check of the first phase (ball_phase_ode in the JSON)
+-----------------------------------------------------------------
+While the ball alone touches, the contact keeps sliding (the Contensou slip
+s = |(v_t, Rbar omega_n)| >= Rbar |omega_n| > 0 while the top spins), so the
+set-valued law is single-valued there and the motion is a smooth ODE. This
+script integrates it itself (numpy/scipy only, not cardillo; DOP853 at rtol
+1e-10 and 1e-12) up to the stem's touchdown, the ball's lift-off or a stick,
+whichever first, and records the axis-horizontal time, the end of the phase,
+and the minimum normal force and slip (both must stay positive). Note: with
+Rbar = 0 (plain Coulomb) the slip vanishes at t = 0.036 s and the top rolls;
+the drilling term is what keeps this top sliding.
+
 Events (per run; times in s, linear interpolation between samples where a
 sign change is located, else the first sample where it holds)
 --------------------------------------------------------------------------
@@ -281,6 +293,108 @@ def analyse(t, q, u, P_N, P_F):
     )
 
 
+def ball_phase_ode(rtol=1e-12):
+    """Independent check of the first phase (ball alone on the table).
+
+    While only the ball touches and its contact slides (|gamma| > 0), the
+    set-valued law is single-valued: F_t = -mu N v_t/s, T_n = -mu N Rbar^2
+    omega_n/s, s = |(v_t, Rbar omega_n)|. Newton-Euler (body axes for the
+    rotation) with the gap's second derivative held at zero gives a smooth
+    ODE, integrated with scipy's DOP853 until the stem's gap reaches 0, the
+    normal force reaches 0 (lift-off) or s reaches 0 (stick), whichever first.
+    Returns the axis-horizontal time and how the phase ended, and the minima
+    of N and s along the way (both must stay > 0 for the ODE to be valid).
+    """
+    from scipy.integrate import solve_ivp
+
+    p = PARAMS
+    m, g, mu, rbar = p["m"], p["g"], p["mu"], p["Rbar"]
+    inertia = np.diag([p["I1"], p["I1"], p["I3"]])
+    c_ball = np.array([0.0, 0.0, p["a1"]])
+    c_stem = np.array([0.0, 0.0, p["a2"]])
+    ez = np.array([0.0, 0.0, 1.0])
+
+    def solve(y):
+        q, w, v = y[0:4], y[4:7], y[10:13]
+        r = rotation(q)
+        rho = r @ c_ball - p["R1"] * ez
+        omega = r @ w
+        u = v + np.cross(omega, rho)
+        slip = np.sqrt(u[0] ** 2 + u[1] ** 2 + (rbar * omega[2]) ** 2)
+        e = ez - mu * np.array([u[0], u[1], 0.0]) / slip
+        tau = -mu * rbar**2 * omega[2] / slip  # drilling torque per newton
+        moment_b = r.T @ (np.cross(rho, e) + tau * ez)
+        a_mat = np.zeros((7, 7))
+        b = np.zeros(7)
+        a_mat[0:3, 0:3] = m * np.eye(3)
+        a_mat[0:3, 6] = -e
+        b[0:3] = -m * g * ez
+        a_mat[3:6, 3:6] = inertia
+        a_mat[3:6, 6] = -moment_b
+        b[3:6] = np.cross(inertia @ w, w)
+        # d2/dt2 (z + [R c]_z) = 0
+        a_mat[6, 2] = 1.0
+        # [R (dw x c)]_z: row i of cross(eye, c) is e_i x c
+        a_mat[6, 3:6] = (r @ np.cross(np.eye(3), c_ball).T)[2]
+        b[6] = -(r @ np.cross(w, np.cross(w, c_ball)))[2]
+        sol = np.linalg.solve(a_mat, b)
+        return sol[0:3], sol[3:6], sol[6], slip
+
+    def rhs(_t, y):
+        q, w, v = y[0:4], y[4:7], y[10:13]
+        dv, dw, _n, _s = solve(y)
+        wq = np.array([0.0, *w])
+        dq = 0.5 * np.array(
+            [
+                q[0] * wq[0] - q[1:] @ wq[1:],
+                *(q[0] * wq[1:] + wq[0] * q[1:] + np.cross(q[1:], wq[1:])),
+            ]
+        )
+        return np.concatenate([dq, dw, v, dv])
+
+    def axis(_t, y):
+        return rotation(y[0:4])[2, 2]
+
+    def stem_gap(_t, y):
+        return y[9] + (rotation(y[0:4]) @ c_stem)[2] - p["R2"]
+
+    def normal(_t, y):
+        return solve(y)[2]
+
+    def slip(_t, y):
+        return solve(y)[3] - 1e-9
+
+    for ev in (stem_gap, normal, slip):
+        ev.terminal = True
+        ev.direction = -1
+    axis.direction = -1
+    q0 = np.array([np.cos(p["theta0"] / 2), np.sin(p["theta0"] / 2), 0.0, 0.0])
+    y0 = np.concatenate([q0, [0.0, 0.0, p["omega3_body0"]], [0.0, 0.0, p["z0"]], np.zeros(3)])
+    res = solve_ivp(
+        rhs, (0.0, p["t_end"]), y0, method="DOP853", rtol=rtol, atol=rtol * 1e-3,
+        events=(axis, stem_gap, normal, slip), dense_output=True,
+    )
+    ts = np.linspace(0.0, res.t[-1], 20001)
+    ns, ss = zip(*[solve(res.sol(t))[2:] for t in ts])
+    ended = [name for name, te in zip(("axis", "stem_touch", "lift_off", "stick"), res.t_events) if name != "axis" and len(te)]
+    inertia_d = np.array([p["I1"], p["I1"], p["I3"]])
+    energy = lambda y: 0.5 * m * y[10:13] @ y[10:13] + 0.5 * inertia_d @ y[4:7] ** 2 + m * g * y[9]
+    e_samples = np.array([energy(res.sol(t)) for t in ts])
+    return dict(
+        method=f"scipy solve_ivp DOP853, rtol {rtol:g}, atol {rtol * 1e-3:g}",
+        t_axis_horizontal=float(res.t_events[0][0]) if len(res.t_events[0]) else None,
+        t_end_of_phase=float(res.t[-1]),
+        phase_ended_by=ended[0] if ended else "t_end",
+        min_normal_force=float(min(ns)),
+        min_slip=float(min(ss)),
+        energy_max_rise_sampled=float(np.max(np.diff(e_samples))),
+        theta_deg_every_half_second={
+            f"{t:g}": float(np.degrees(np.arccos(np.clip(rotation(res.sol(t)[0:4])[2, 2], -1, 1))))
+            for t in np.arange(0.5, res.t[-1], 0.5)
+        },
+    )
+
+
 def versions():
     import scipy
 
@@ -330,6 +444,9 @@ def main():
             "solver", "dt", "t_axis_horizontal", "t_stem_first_touch",
             "t_ball_last_contact", "energy_max_rise")}), flush=True)
         print("   end:", json.dumps(ev["end"]), flush=True)
+    ode = [ball_phase_ode(rtol) for rtol in (1e-10, 1e-12)]
+    for o in ode:
+        print(json.dumps({k: o[k] for k in ("method", "t_axis_horizontal", "t_end_of_phase", "phase_ended_by")}), flush=True)
     doc = dict(
         description=(
             "Leine & Glocker (2003) tippe top with stem on the table z = 0, "
@@ -350,6 +467,7 @@ def main():
             "Rbar = 3 pi / 16 * R_contensou"
         ),
         code=versions(),
+        ball_phase_ode=ode,
         runs=runs,
     )
     OUT.write_text(json.dumps(doc, indent=1) + "\n")
