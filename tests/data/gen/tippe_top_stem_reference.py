@@ -71,8 +71,9 @@ script integrates it itself (numpy/scipy only, not cardillo; DOP853 at rtol
 1e-10 and 1e-12) up to the stem's touchdown, the ball's lift-off or a stick,
 whichever first, and records the axis-horizontal time, the end of the phase,
 and the minimum normal force and slip (both must stay positive). Note: with
-Rbar = 0 (plain Coulomb) the slip vanishes at t = 0.036 s and the top rolls;
-the drilling term is what keeps this top sliding.
+Rbar = 0 (plain Coulomb) the tangential slip first vanishes at t = 0.036 s
+(a stick/roll transition, where this ODE stops applying); with Contensou
+friction the drilling term keeps the contact sliding through the phase.
 
 Events (per run; times in s, linear interpolation between samples where a
 sign change is located, else the first sample where it holds)
