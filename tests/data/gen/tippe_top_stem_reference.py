@@ -52,7 +52,8 @@ cites Leine & Glocker, Eur. J. Mech. A/Solids 22 (2003) 193-216, Sect. 5)
       lowest point), omega_n the angular velocity's vertical component.
 * Initial state (L&G: "all zero except z0 = 1.2015e-2 m, theta0 = 0.1 rad,
   psi_dot0 = 180 rad/s"): orientation = rotation by theta0 about world x;
-  S at (0, 0, R1 - a1 cos theta0) = (0, 0, 0.0120149875...), at rest;
+  S at (0, 0, R1 - a1 cos theta0) = (0, 0, 0.0120149875...), at rest
+  (L&G and cardillo's example round z0 to 1.2015e-2 m: a 1.25e-8 m gap);
   angular velocity 180 rad/s about the BODY symmetry axis (body (0, 0, 180)).
   The ball touches the table, its contact point slides.
 * End time 8 s (cardillo's example; L&G's figures span 8 s).
