@@ -406,10 +406,12 @@ def versions():
         cardillo_commit=CARDILLO_COMMIT,
         cardillo_version="3.0.0 (setup.py at that commit)",
         cardillo_files=[
-            "examples/nonsmooth/tippetop.py (parameters, lines 29-53, 79-83)",
-            "cardillo/contacts/sphere2plane.py (Sphere2PlaneCoulombContensouMoeller, lines 291-490)",
-            "cardillo/solver/moreau.py (MoreauClassical, lines 554-)",
-            "cardillo/solver/rattle.py (Rattle)",
+            "examples/nonsmooth/tippetop.py (parameters lines 29-53, initial velocity 79-83, t_final 156)",
+            "cardillo/contacts/sphere2plane.py (Sphere2PlaneCoulombContensouMoeller line 291;"
+            " R_bar = 3 pi/16 R and A = diag(1, 1, R_bar) lines 309-310; gamma_F 452-458; W_F 479-486)",
+            "cardillo/math/prox.py (prox_sphere line 12: the ball |l| <= mu P_N)",
+            "cardillo/solver/moreau.py (MoreauClassical line 554, friction prox line 643)",
+            "cardillo/solver/rattle.py (Rattle line 11)",
         ],
         python=platform.python_version(),
         numpy=np.__version__,
