@@ -446,13 +446,20 @@ def main():
         t_end = float(end[0]) if end else args.t_end
         t, q, u, P_N, P_F, wall = simulate(solver, float(dt), t_end, args.cache)
         ev = analyse(t, q, u, P_N, P_F)
+        wall = None if not np.isfinite(wall) else round(wall, 1)  # strict JSON: no NaN
         ev.update(solver=solver, dt=float(dt), t_end=t_end, wall_seconds=wall)
         runs.append(ev)
         print(json.dumps({k: ev[k] for k in (
             "solver", "dt", "t_axis_horizontal", "t_stem_first_touch",
             "t_ball_last_contact", "energy_max_rise")}), flush=True)
         print("   end:", json.dumps(ev["end"]), flush=True)
-    ode = [ball_phase_ode(rtol) for rtol in (1e-10, 1e-12)]
+    ode_cache = args.cache / "ball_phase_ode.json" if args.cache is not None else None
+    if ode_cache is not None and ode_cache.exists():
+        ode = json.loads(ode_cache.read_text())
+    else:
+        ode = [ball_phase_ode(rtol) for rtol in (1e-10, 1e-12)]
+        if ode_cache is not None:
+            ode_cache.write_text(json.dumps(ode))
     for o in ode:
         print(json.dumps({k: o[k] for k in ("method", "t_axis_horizontal", "t_end_of_phase", "phase_ended_by")}), flush=True)
     doc = dict(
@@ -478,7 +485,7 @@ def main():
         ball_phase_ode=ode,
         runs=runs,
     )
-    OUT.write_text(json.dumps(doc, indent=1) + "\n")
+    OUT.write_text(json.dumps(doc, indent=1, allow_nan=False) + "\n")
     print("wrote", OUT)
 
 
