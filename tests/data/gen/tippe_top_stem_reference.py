@@ -4,7 +4,7 @@ Writes ../contact/tippe_top_stem_reference.json (relative to this script):
 the model's parameters, and for each run (integrator, step size) the event
 times and the final state listed under "Events" below.
 
-Install and run (Python 3.11; about 40 minutes on one core)
+Install and run (Python 3.11; about 30 minutes on one free core)
 -----------------------------------------------------------
 cardillo's Coulomb-Contensou sphere-plane contact and its tippe-top example
 were deleted from cardillo in October 2023 (commit 6ee0290f "Removed some
@@ -22,7 +22,10 @@ contacts."); the last commit that has both is 832f71fc (2023-10-26):
 installed: its setup.py pins meshio to a git fork that only its VTK export
 needs, PyPI's meshio imports fine.) `--cache DIR` keeps each run's trajectory
 in DIR/<solver>_<dt>_<T>.npz and reuses it; `--runs moreau:2e-4,...` picks
-runs. numpy < 2 is needed (cardillo of 2023 predates numpy 2).
+runs (`solver:dt:T` for another end time than --t-end). By default only
+Rattle at dt = 1e-3 runs the whole 8 s; the other runs stop at 2 s, past
+the stem's first touchdown (Moreau's fixed-point iteration is slow once the
+stem touches: 8 s at dt = 1e-4 had not finished after 14 CPU minutes). numpy < 2 is needed (cardillo of 2023 predates numpy 2).
 
 Model (as cardillo's examples/nonsmooth/tippetop.py at 832f71fc, which
 cites Leine & Glocker, Eur. J. Mech. A/Solids 22 (2003) 193-216, Sect. 5)
@@ -51,7 +54,8 @@ cites Leine & Glocker, Eur. J. Mech. A/Solids 22 (2003) 193-216, Sect. 5)
       lowest point), omega_n the angular velocity's vertical component.
 * Initial state (L&G: "all zero except z0 = 1.2015e-2 m, theta0 = 0.1 rad,
   psi_dot0 = 180 rad/s"): orientation = rotation by theta0 about world x;
-  S at (0, 0, R1 - a1 cos theta0) = (0, 0, 0.0120149875...), at rest;
+  S at (0, 0, R1 - a1 cos theta0) = (0, 0, 0.0120149875...), at rest
+  (L&G and cardillo's example round z0 to 1.2015e-2 m: a 1.25e-8 m gap);
   angular velocity 180 rad/s about the BODY symmetry axis (body (0, 0, 180)).
   The ball touches the table, its contact point slides.
 * End time 8 s (cardillo's example; L&G's figures span 8 s).
@@ -62,14 +66,34 @@ Integrators (cardillo)
   the gap at the midpoint is <= 0, fixed-point prox iteration to 1e-10.
 * Rattle: cardillo's nonsmooth RATTLE (Capobianco et al.), atol 1e-10.
 
+Independent check of the first phase (ball_phase_ode in the JSON)
+-----------------------------------------------------------------
+While the ball alone touches, the contact keeps sliding (the Contensou slip
+s = |(v_t, Rbar omega_n)| >= Rbar |omega_n| > 0 while the top spins), so the
+set-valued law is single-valued there and the motion is a smooth ODE. This
+script integrates it itself (numpy/scipy only, not cardillo; DOP853 at rtol
+1e-10 and 1e-12) up to the stem's touchdown, the ball's lift-off or a stick,
+whichever first, and records the axis-horizontal time, the end of the phase,
+and the minimum normal force and slip (both must stay positive). Note: with
+Rbar = 0 (plain Coulomb) the tangential slip first vanishes at t = 0.036 s
+(a stick/roll transition, where this ODE stops applying); with Contensou
+friction the drilling term keeps the contact sliding through the phase.
+
 Events (per run; times in s, linear interpolation between samples where a
 sign change is located, else the first sample where it holds)
 --------------------------------------------------------------------------
 * t_axis_horizontal: the symmetry axis' world z-component (stem direction)
   first drops to 0 (theta = 90 degrees).
 * t_stem_first_touch: first step with a positive stem-sphere percussion.
-* t_ball_last_contact: last step with a positive ball percussion (after it
-  the ball never touches again up to t_end); ball_contact_at_end.
+* t_ball_liftoff: the ball's gap first exceeds 1e-6 m (interpolated);
+  t_ball_retouch: the first step after that with a positive ball percussion.
+* t_both_contacts_first: first step with both percussions positive (ball and
+  stem on the table: then theta = theta_two_point_deg =
+  arccos((R2 - R1)/(a2 - a1)) = 140.2849 degrees, a geometric check);
+  t_stem_last_contact; stem_only_duration: the time spent on the stem with
+  the ball off the table.
+* t_ball_last_contact: last step with a positive ball percussion;
+  ball_contact_at_end, stem_contact_at_end.
 * theta at 0.5 s intervals (degrees), final state at t_end: theta, z_S,
   omega (world), spin about the vertical, energy; energy_max_rise: the
   largest increase of the total energy between consecutive steps (a
@@ -114,8 +138,13 @@ PARAMS = dict(
 )
 PARAMS["Rbar"] = 3 * np.pi / 16 * PARAMS["R_contensou"]
 PARAMS["z0"] = PARAMS["R1"] - PARAMS["a1"] * np.cos(PARAMS["theta0"])
+# both spheres on the table: z + a1 cos(theta) = R1 and z + a2 cos(theta) = R2
+PARAMS["theta_two_point_deg"] = float(
+    np.degrees(np.arccos((PARAMS["R2"] - PARAMS["R1"]) / (PARAMS["a2"] - PARAMS["a1"])))
+)
 
-DEFAULT_RUNS = "moreau:2e-4,moreau:1e-4,moreau:5e-5,rattle:1e-3,rattle:5e-4"
+AIRBORNE = 1e-6  # m: the ball counts as off the table above this gap
+DEFAULT_RUNS = "moreau:2e-4:2,moreau:1e-4:2,moreau:5e-5:2,rattle:1e-3,rattle:5e-4:2"
 
 
 def build():
@@ -222,8 +251,22 @@ def analyse(t, q, u, P_N, P_F):
     for ts in np.arange(0.5, t[-1] + 1e-9, 0.5):
         i = int(np.argmin(np.abs(t - ts)))
         samples[f"{ts:g}"] = float(np.degrees(theta[i]))
+    airborne = gap_ball > AIRBORNE
+    lift = np.nonzero(airborne)[0]
+    retouch = np.nonzero(ball_on[lift[0]:])[0] + lift[0] if len(lift) else []
+    both = np.nonzero(ball_on & stem_on)[0]
+    dt = np.diff(t)
+    stem_only = float(np.sum(dt[(stem_on & airborne)[1:]]))
     return dict(
         t_axis_horizontal=crossing(t, axis_z),
+        t_ball_liftoff=crossing(t, AIRBORNE - gap_ball),
+        t_ball_retouch=float(t[retouch[0]]) if len(retouch) else None,
+        t_both_contacts_first=float(t[both[0]]) if len(both) else None,
+        theta_deg_at_both_contacts_first=(
+            float(np.degrees(theta[both[0]])) if len(both) else None
+        ),
+        t_stem_last_contact=float(t[stem_idx[-1]]) if len(stem_idx) else None,
+        stem_only_duration=stem_only,
         t_stem_first_touch=float(t[stem_idx[0]]) if len(stem_idx) else None,
         t_stem_gap_first_nonpositive=crossing(t, gap_stem),
         t_ball_last_contact=float(t[ball_idx[-1]]) if len(ball_idx) else None,
@@ -255,6 +298,108 @@ def analyse(t, q, u, P_N, P_F):
     )
 
 
+def ball_phase_ode(rtol=1e-12):
+    """Independent check of the first phase (ball alone on the table).
+
+    While only the ball touches and its contact slides (|gamma| > 0), the
+    set-valued law is single-valued: F_t = -mu N v_t/s, T_n = -mu N Rbar^2
+    omega_n/s, s = |(v_t, Rbar omega_n)|. Newton-Euler (body axes for the
+    rotation) with the gap's second derivative held at zero gives a smooth
+    ODE, integrated with scipy's DOP853 until the stem's gap reaches 0, the
+    normal force reaches 0 (lift-off) or s reaches 0 (stick), whichever first.
+    Returns the axis-horizontal time and how the phase ended, and the minima
+    of N and s along the way (both must stay > 0 for the ODE to be valid).
+    """
+    from scipy.integrate import solve_ivp
+
+    p = PARAMS
+    m, g, mu, rbar = p["m"], p["g"], p["mu"], p["Rbar"]
+    inertia = np.diag([p["I1"], p["I1"], p["I3"]])
+    c_ball = np.array([0.0, 0.0, p["a1"]])
+    c_stem = np.array([0.0, 0.0, p["a2"]])
+    ez = np.array([0.0, 0.0, 1.0])
+
+    def solve(y):
+        q, w, v = y[0:4], y[4:7], y[10:13]
+        r = rotation(q)
+        rho = r @ c_ball - p["R1"] * ez
+        omega = r @ w
+        u = v + np.cross(omega, rho)
+        slip = np.sqrt(u[0] ** 2 + u[1] ** 2 + (rbar * omega[2]) ** 2)
+        e = ez - mu * np.array([u[0], u[1], 0.0]) / slip
+        tau = -mu * rbar**2 * omega[2] / slip  # drilling torque per newton
+        moment_b = r.T @ (np.cross(rho, e) + tau * ez)
+        a_mat = np.zeros((7, 7))
+        b = np.zeros(7)
+        a_mat[0:3, 0:3] = m * np.eye(3)
+        a_mat[0:3, 6] = -e
+        b[0:3] = -m * g * ez
+        a_mat[3:6, 3:6] = inertia
+        a_mat[3:6, 6] = -moment_b
+        b[3:6] = np.cross(inertia @ w, w)
+        # d2/dt2 (z + [R c]_z) = 0
+        a_mat[6, 2] = 1.0
+        # [R (dw x c)]_z: row i of cross(eye, c) is e_i x c
+        a_mat[6, 3:6] = (r @ np.cross(np.eye(3), c_ball).T)[2]
+        b[6] = -(r @ np.cross(w, np.cross(w, c_ball)))[2]
+        sol = np.linalg.solve(a_mat, b)
+        return sol[0:3], sol[3:6], sol[6], slip
+
+    def rhs(_t, y):
+        q, w, v = y[0:4], y[4:7], y[10:13]
+        dv, dw, _n, _s = solve(y)
+        wq = np.array([0.0, *w])
+        dq = 0.5 * np.array(
+            [
+                q[0] * wq[0] - q[1:] @ wq[1:],
+                *(q[0] * wq[1:] + wq[0] * q[1:] + np.cross(q[1:], wq[1:])),
+            ]
+        )
+        return np.concatenate([dq, dw, v, dv])
+
+    def axis(_t, y):
+        return rotation(y[0:4])[2, 2]
+
+    def stem_gap(_t, y):
+        return y[9] + (rotation(y[0:4]) @ c_stem)[2] - p["R2"]
+
+    def normal(_t, y):
+        return solve(y)[2]
+
+    def slip(_t, y):
+        return solve(y)[3] - 1e-9
+
+    for ev in (stem_gap, normal, slip):
+        ev.terminal = True
+        ev.direction = -1
+    axis.direction = -1
+    q0 = np.array([np.cos(p["theta0"] / 2), np.sin(p["theta0"] / 2), 0.0, 0.0])
+    y0 = np.concatenate([q0, [0.0, 0.0, p["omega3_body0"]], [0.0, 0.0, p["z0"]], np.zeros(3)])
+    res = solve_ivp(
+        rhs, (0.0, p["t_end"]), y0, method="DOP853", rtol=rtol, atol=rtol * 1e-3,
+        events=(axis, stem_gap, normal, slip), dense_output=True,
+    )
+    ts = np.linspace(0.0, res.t[-1], 20001)
+    ns, ss = zip(*[solve(res.sol(t))[2:] for t in ts])
+    ended = [name for name, te in zip(("axis", "stem_touch", "lift_off", "stick"), res.t_events) if name != "axis" and len(te)]
+    inertia_d = np.array([p["I1"], p["I1"], p["I3"]])
+    energy = lambda y: 0.5 * m * y[10:13] @ y[10:13] + 0.5 * inertia_d @ y[4:7] ** 2 + m * g * y[9]
+    e_samples = np.array([energy(res.sol(t)) for t in ts])
+    return dict(
+        method=f"scipy solve_ivp DOP853, rtol {rtol:g}, atol {rtol * 1e-3:g}",
+        t_axis_horizontal=float(res.t_events[0][0]) if len(res.t_events[0]) else None,
+        t_end_of_phase=float(res.t[-1]),
+        phase_ended_by=ended[0] if ended else "t_end",
+        min_normal_force=float(min(ns)),
+        min_slip=float(min(ss)),
+        energy_max_rise_sampled=float(np.max(np.diff(e_samples))),
+        theta_deg_every_half_second={
+            f"{t:g}": float(np.degrees(np.arccos(np.clip(rotation(res.sol(t)[0:4])[2, 2], -1, 1))))
+            for t in np.arange(0.5, res.t[-1], 0.5)
+        },
+    )
+
+
 def versions():
     import scipy
 
@@ -263,10 +408,12 @@ def versions():
         cardillo_commit=CARDILLO_COMMIT,
         cardillo_version="3.0.0 (setup.py at that commit)",
         cardillo_files=[
-            "examples/nonsmooth/tippetop.py (parameters, lines 29-53, 79-83)",
-            "cardillo/contacts/sphere2plane.py (Sphere2PlaneCoulombContensouMoeller, lines 291-490)",
-            "cardillo/solver/moreau.py (MoreauClassical, lines 554-)",
-            "cardillo/solver/rattle.py (Rattle)",
+            "examples/nonsmooth/tippetop.py (parameters lines 29-53, initial velocity 79-83, t_final 156)",
+            "cardillo/contacts/sphere2plane.py (Sphere2PlaneCoulombContensouMoeller line 291;"
+            " R_bar = 3 pi/16 R and A = diag(1, 1, R_bar) lines 309-310; gamma_F 452-458; W_F 479-486)",
+            "cardillo/math/prox.py (prox_sphere line 12: the ball |l| <= mu P_N)",
+            "cardillo/solver/moreau.py (MoreauClassical line 554, friction prox line 643)",
+            "cardillo/solver/rattle.py (Rattle line 11)",
         ],
         python=platform.python_version(),
         numpy=np.__version__,
@@ -295,15 +442,26 @@ def main():
     args = ap.parse_args()
     runs = []
     for spec in args.runs.split(","):
-        solver, dt = spec.split(":")
-        t, q, u, P_N, P_F, wall = simulate(solver, float(dt), args.t_end, args.cache)
+        solver, dt, *end = spec.split(":")
+        t_end = float(end[0]) if end else args.t_end
+        t, q, u, P_N, P_F, wall = simulate(solver, float(dt), t_end, args.cache)
         ev = analyse(t, q, u, P_N, P_F)
-        ev.update(solver=solver, dt=float(dt), wall_seconds=wall)
+        wall = None if not np.isfinite(wall) else round(wall, 1)  # strict JSON: no NaN
+        ev.update(solver=solver, dt=float(dt), t_end=t_end, wall_seconds=wall)
         runs.append(ev)
         print(json.dumps({k: ev[k] for k in (
             "solver", "dt", "t_axis_horizontal", "t_stem_first_touch",
             "t_ball_last_contact", "energy_max_rise")}), flush=True)
         print("   end:", json.dumps(ev["end"]), flush=True)
+    ode_cache = args.cache / "ball_phase_ode.json" if args.cache is not None else None
+    if ode_cache is not None and ode_cache.exists():
+        ode = json.loads(ode_cache.read_text())
+    else:
+        ode = [ball_phase_ode(rtol) for rtol in (1e-10, 1e-12)]
+        if ode_cache is not None:
+            ode_cache.write_text(json.dumps(ode))
+    for o in ode:
+        print(json.dumps({k: o[k] for k in ("method", "t_axis_horizontal", "t_end_of_phase", "phase_ended_by")}), flush=True)
     doc = dict(
         description=(
             "Leine & Glocker (2003) tippe top with stem on the table z = 0, "
@@ -324,9 +482,10 @@ def main():
             "Rbar = 3 pi / 16 * R_contensou"
         ),
         code=versions(),
+        ball_phase_ode=ode,
         runs=runs,
     )
-    OUT.write_text(json.dumps(doc, indent=1) + "\n")
+    OUT.write_text(json.dumps(doc, indent=1, allow_nan=False) + "\n")
     print("wrote", OUT)
 
 
