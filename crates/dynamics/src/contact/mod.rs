@@ -251,7 +251,7 @@ mod sphere_contact;
 mod touchdown;
 
 pub(crate) use self::adaptive::{
-    A as DOPRI_A, B_HAT as DOPRI_B_HAT, MAX_GROWTH, MIN_SHRINK, SAFETY,
+    A as DOPRI_A, B_HAT as DOPRI_B_HAT, Controlled, MAX_GROWTH, MIN_SHRINK, SAFETY,
 };
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub use self::contact_shape::ContactShape;
