@@ -107,9 +107,9 @@ pub enum Plan {
     /// contact model's error-controlled Dormand–Prince 5(4) steps
     /// ([`crate::GroundTop::try_advance_adaptive`]) within every step the
     /// world takes, landing on its grid: `dt` is only where the states are
-    /// read. Its accuracy is `tolerance`: 1e-10 without a world
-    /// [`crate::Tolerance`], 1e-3 × its attitude error with one (clamped
-    /// to [1e-13, 1e-6]); the world's methods do not change it.
+    /// read. Its accuracy is `tolerance`: 1e-11 without a world
+    /// [`crate::Tolerance`], 1e-4 × its attitude error with one (clamped
+    /// to [1e-13, 1e-8]); the world's methods do not change it.
     OnGround {
         /// The friction law at the contact.
         friction: crate::FrictionModel,
