@@ -2,7 +2,9 @@
 //! (`kreisel::dynamics::GroundTop`): one RK4 step (`GroundTop::try_step`)
 //! of Leine & Glocker's top with each friction model, and the whole run to
 //! the inversion at dt = 1e-4 s (27 095 steps, where the inversion time is
-//! converged to 7e-8 relative at ε = 1 mm/s; `examples/tippe_top_timing.rs`).
+//! converged to 7e-8 relative at ε = 1 mm/s; `examples/tippe_top_timing.rs`),
+//! and the top in a `World` stepped at 1/60 s (error-controlled steps
+//! within each frame, the default tolerance).
 //!
 //! ```text
 //! cargo bench --bench tippe_top
@@ -16,7 +18,7 @@ use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use glam::DVec3;
-use kreisel::dynamics::{Friction, GroundCheck};
+use kreisel::dynamics::{Friction, GroundCheck, World};
 
 #[allow(dead_code)]
 #[path = "../tests/common/tippe_top.rs"]
@@ -105,5 +107,38 @@ fn to_inversion(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, step, to_inversion);
+/// The tippe top in a `World` stepped at a game frame, 1/60 s: 240 frames
+/// (4 s, through the inversion), each one `World::advance_steps(1)` —
+/// error-controlled steps within the frame at the default tolerance
+/// (issue 26). Throughput: frames; real-time factor = (1/60 s) / (time
+/// per frame).
+fn world_frames(c: &mut Criterion) {
+    let mut group = c.benchmark_group("tippe_top_world_dt_1_60");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(3))
+        .throughput(Throughput::Elements(FRAMES));
+    for (name, friction) in frictions() {
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let mut world = World::try_new(DVec3::new(0.0, 0.0, -tippe_top::G), 1.0 / 60.0)
+                    .unwrap();
+                let id = world
+                    .add(tippe_top::world_builder(friction).try_build().unwrap())
+                    .unwrap();
+                for _ in 0..FRAMES {
+                    world.advance_steps(1).unwrap();
+                }
+                world.state(id).unwrap()
+            })
+        });
+    }
+    group.finish();
+}
+
+/// Frames of 1/60 s in [`world_frames`]: 4 s.
+const FRAMES: u64 = 240;
+
+criterion_group!(benches, step, to_inversion, world_frames);
 criterion_main!(benches);

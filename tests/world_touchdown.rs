@@ -13,7 +13,7 @@ mod common;
 
 use glam::{DQuat, DVec3};
 use kreisel::dynamics::{
-    Body, BodyBuilder, ContactShape, DynamicsError, Friction, MAX_OTHER_CONTACTS, Plan,
+    AdaptiveTolerance, Body, BodyBuilder, ContactShape, DynamicsError, Friction, MAX_OTHER_CONTACTS, Plan,
     SphereContact, World,
 };
 
@@ -64,6 +64,7 @@ fn stem_touchdown(scenario: &str, friction: Friction) {
         Some(&Plan::OnGround {
             friction: friction.model(),
             watched: 1,
+            tolerance: AdaptiveTolerance::new(1e-11, 1e-11),
         })
     );
     let err = world.advance_to(10.0).unwrap_err();

@@ -165,9 +165,11 @@ Motion:
   A heavy top with them is driven: the same splitting about the pivot, with
   gravity kicked exactly alongside the loads (a force turns the top about
   the pivot); auto: splitting8 sub-stepped within its stability limit.
-  A body with [body.contact] is moved by the contact model's RK4 every dt
-  (whatever the method or tolerance): its centre of mass and rotation
-  under gravity, the normal force and friction at the contact point; the
+  A body with [body.contact] is moved by the contact model (whatever the
+  method): its centre of mass and rotation under gravity, the normal force
+  and friction at the contact point, in error-controlled Dormand-Prince
+  5(4) steps within every dt (dt is only where rows are read) at rtol =
+  atol = 1e-11, or 1e-4 x tolerance (in [1e-13, 1e-8]) with tolerance; the
   run stops with an error at a lift-off (normal force zero), a disk lying
   flat, an indeterminate contact, or a watched [[body.contact]] touching
   down (its time located within the step; the impact is not modelled):
@@ -783,7 +785,7 @@ mod tests {
             "disc: symmetric free body: exact, closed form",
             "handle: asymmetric free body: exact, Jacobi elliptic solution",
             "top: Lagrange top on a pivot: exact, closed form",
-            "tippe: body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction viscous",
+            "tippe: body on the ground: ground-top dopri5 (order 5), error-controlled steps at rtol 1e-11, atol 1e-11 within every dt, landing on it (contact with the plane z = 0, friction viscous",
         ];
         assert_eq!(lines.len(), starts.len());
         for (line, start) in lines.iter().zip(starts) {
@@ -799,9 +801,9 @@ mod tests {
             lines[4].starts_with("top: heavy top on a pivot: rk4 (order 4)"),
             "{lines:?}"
         );
-        // A body on the ground keeps its contact model's RK4.
+        // A body on the ground keeps its contact model's error control.
         assert!(
-            lines[5].starts_with("tippe: body on the ground: ground-top rk4"),
+            lines[5].starts_with("tippe: body on the ground: ground-top dopri5"),
             "{lines:?}"
         );
     }

@@ -120,7 +120,7 @@ pub enum DynamicsError {
     /// the step is too large for its motion, or its friction too stiff for
     /// an explicit step; the state is the one before the step.
     #[error(
-        "the ground contact's check failed at t = {time} s: {violation} (steps of {step} s are too large for this motion: use a smaller dt)"
+        "the ground contact's check failed at t = {time} s: {violation} (steps of {step} s are too large for this motion: use a smaller dt or tolerance)"
     )]
     GroundCheckFailed {
         /// The time of the state that failed, s.

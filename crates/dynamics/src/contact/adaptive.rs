@@ -125,6 +125,9 @@ pub struct AdaptiveTolerance {
     atol: f64,
 }
 
+// Both are finite (checked by `try_new`): equality is an equivalence.
+impl Eq for AdaptiveTolerance {}
+
 impl AdaptiveTolerance {
     /// Relative tolerance `rtol` and scaled absolute tolerance `atol`.
     ///
@@ -185,6 +188,16 @@ impl AdaptiveTolerance {
     pub fn atol(&self) -> f64 {
         self.atol
     }
+}
+
+/// How [`GroundTop::advance_controlled`] runs: the accuracy and the first
+/// step (`None`: chosen by the starting-step rule).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Controlled {
+    /// The accuracy asked.
+    pub(crate) tolerance: AdaptiveTolerance,
+    /// The first step to try, s (a previous run's last proposal).
+    pub(crate) first_step: Option<f64>,
 }
 
 /// What an adaptive run did.
@@ -306,12 +319,37 @@ impl GroundTop {
         tolerance: AdaptiveTolerance,
         mut observe: impl FnMut(f64, &GroundTopState),
     ) -> Result<AdaptiveStats, DynamicsError> {
+        let run = Controlled {
+            tolerance,
+            first_step: None,
+        };
+        self.advance_controlled(state, (t0, t_end), run, |t, s| {
+            observe(t, s);
+            Ok(())
+        })
+        .map(|(stats, _)| stats)
+    }
+
+    /// [`GroundTop::try_advance_adaptive`] with the first step `run.first_step`
+    /// (`None`: Hairer's starting step) and an observer that may stop the
+    /// run with an error (returned as it is, `state` at the step it saw).
+    /// Also returns the step the controller would take next (the one before
+    /// the last step was shortened to land on `t_end`; `None` when nothing
+    /// was stepped): a caller that goes on from `t_end` starts there.
+    pub(crate) fn advance_controlled(
+        &self,
+        state: &mut GroundTopState,
+        (t0, t_end): (f64, f64),
+        run: Controlled,
+        mut observe: impl FnMut(f64, &GroundTopState) -> Result<(), DynamicsError>,
+    ) -> Result<(AdaptiveStats, Option<f64>), DynamicsError> {
+        let tolerance = run.tolerance;
         if !(t0.is_finite() && t_end.is_finite() && t_end >= t0) {
             return Err(DynamicsError::InvalidInterval { t0, t_end });
         }
         let mut stats = AdaptiveStats::default();
         if t_end == t0 {
-            return Ok(stats);
+            return Ok((stats, run.first_step));
         }
         check_start(state, t_end - t0)?;
         let h_min = MIN_STEP_RELATIVE * t0.abs().max(t_end.abs()).max(1.0);
@@ -327,11 +365,18 @@ impl GroundTop {
 
         let mut k1 = self.rates(t0, state);
         stats.evaluations += 1;
-        let mut h = self.starting_step(state, t0, &k1, t_end - t0, &norm);
-        stats.evaluations += 1;
+        let mut h = match run.first_step {
+            Some(h) if h.is_finite() && h > 0.0 => h,
+            _ => {
+                stats.evaluations += 1;
+                self.starting_step(state, t0, &k1, t_end - t0, &norm)
+            }
+        };
         let mut t = t0;
         let mut rejected_last = false;
         loop {
+            // The controller's step, before it is shortened to land on t_end.
+            let planned = h;
             let last = h >= t_end - t;
             if last {
                 h = t_end - t;
@@ -368,11 +413,14 @@ impl GroundTop {
             t = if last { t_end } else { t + h };
             k1 = end;
             stats.accepted += 1;
-            observe(t, state);
-            if last {
-                return Ok(stats);
-            }
+            observe(t, state)?;
             let growth = (SAFETY * err.max(1e-10).powf(-0.2)).clamp(MIN_SHRINK, MAX_GROWTH);
+            if last {
+                // A shortened last step says little about the next: the
+                // planned one carries on (grown as the error allows).
+                let next = planned.max(h * growth);
+                return Ok((stats, Some(next)));
+            }
             h *= if rejected_last {
                 growth.min(1.0)
             } else {

@@ -1,12 +1,17 @@
 //! Bodies on the ground plane in a [`World`] ([`Support::Ground`],
 //! [`crate::Plan::OnGround`]): the world's gravity must point along −z;
-//! each body is a [`GroundTop`] stepped by its RK4 on the world's grid.
+//! each body is a [`GroundTop`] moved by its error-controlled
+//! Dormand–Prince 5(4) steps within every step the world takes.
 //!
 //! ```text
 //! add:       GroundTop(mass, inertia about the centre of mass (body axes), shape, friction, g = −gravity_z)
 //!            state touching the plane: z_G = −ρ_z, ż_G = −(ω × ρ)_z, (x_G, y_G), (ẋ_G, ẏ_G) given
 //!            (rolling: v_G = −ω × ρ)
-//! step h:    n = ⌈h/dt⌉ equal sub-steps (1 on the grid), each GroundTop::try_step
+//! step h:    dopri5 steps from t to t + h, each chosen so that its local error meets
+//!            rtol = atol = tol (GroundTop::try_advance_adaptive), the last one landing on
+//!            t + h; the controller's next step carried over to the next world step
+//!            tol = GROUND_TOLERANCE = 1e-11                     without a world Tolerance
+//!                = clamp(1e-4 · attitude, 1e-13, 1e-8)           with Tolerance(attitude, horizon)
 //! read:      q, ω_body = qᵀ ω, L about the centre of mass (world axes), r_G, v_G,
 //!            E = ½ m |v_G|² + ½ L·ω + m g z_G           (GroundTop::energy)
 //! setters:   attitude / ω / angular impulse re-place the body on the plane
@@ -16,21 +21,28 @@
 //!            after every step (gᵢ = 0: ContactTouchdown, located in the step)
 //! ```
 //!
-//! On the grid (`advance_steps`, `advance_to`) every step is one
-//! [`GroundTop::try_step`] of `dt` (the last of `advance_to` shorter), so a
-//! body's trajectory is the contact model's own, bit for bit. A lift-off
+//! The world's `dt` is only the grid the states are read on: the steps
+//! inside it are the error control's (issue 26). At the default tolerance
+//! the viscous tippe top passes the horizontal at the independent
+//! generator's time to 1e-8 and the rattleback reverses at its time to
+//! 1e-8 at `dt` = 1/60 s, 1e-3 s and 1e-5 s alike
+//! (`tests/world_ground_adaptive.rs`). A lift-off
 //! ([`DynamicsError::ContactLost`], with its time located inside the
-//! step), a disk lying flat ([`DynamicsError::DiskFlat`]) or Painlevé's
-//! case ([`DynamicsError::ContactIndeterminate`]) is the world's failure
-//! ([`DynamicsError::BodyFailed`]); the body holds the state the model
-//! left (at lift-off: the state where the normal force reached zero).
+//! step), a disk lying flat ([`DynamicsError::DiskFlat`]), Painlevé's
+//! case ([`DynamicsError::ContactIndeterminate`]) or a step the controller
+//! cannot make small enough ([`DynamicsError::StepTooSmall`]) is the
+//! world's failure ([`DynamicsError::BodyFailed`]); the body holds the
+//! state the model left (at lift-off: the state where the normal force
+//! reached zero).
 //!
-//! Every sub-step is checked by the body's [`GroundCheck`] (|q|, the
+//! Every accepted step is checked by the body's [`GroundCheck`] (|q|, the
 //! contact point on the plane, the centre of mass above it, the energy
 //! not rising under friction nor drifting without it, beyond
-//! [`crate::GROUND_CHECK_TOLERANCE`]): a step too large for the motion —
-//! a game frame of 1/60 s for a spinning top — is the world's failure
-//! with the source [`DynamicsError::GroundCheckFailed`] and its time, the
+//! [`crate::GROUND_CHECK_TOLERANCE`]), not only the state at the end of
+//! the world's step: a drift that the error estimate missed is caught at
+//! the step that made it, and a state that recovers by the frame's end
+//! does not hide it. A failure is the world's, with the source
+//! [`DynamicsError::GroundCheckFailed`] and the accepted step's time, the
 //! body left at the last state that passed. A setter starts the checks
 //! again from the new state; applied loads switch the energy check off.
 //!
@@ -48,12 +60,13 @@
 
 use glam::{DQuat, DVec2, DVec3};
 
-use super::clock::WHOLE_STEPS_TOLERANCE;
 use super::plan::Motion;
 use super::state::Reading;
 use super::{Body, BodyId, BodyState, Entry, Plan, Support, World};
+use crate::contact::Controlled;
 use crate::{
-    ContactShape, DynamicsError, Friction, GroundCheck, GroundTop, GroundTopState, PrincipalState,
+    AdaptiveTolerance, ContactShape, DynamicsError, Friction, GroundCheck, GroundTop,
+    GroundTopState, PrincipalState,
 };
 
 /// A body on the ground as the world moves it: its contact model, its
@@ -66,6 +79,52 @@ pub(crate) struct GroundMotion {
     body_from_principal: DQuat,
     /// The guard, started where the body was last placed.
     check: GroundCheck,
+    /// The accuracy of the error-controlled steps.
+    pub(crate) tolerance: AdaptiveTolerance,
+    /// The step the controller proposed last (the next step's first try).
+    next_step: Option<f64>,
+}
+
+/// The accuracy of a ground body's steps in a world without a
+/// [`crate::Tolerance`]: `rtol = atol` of [`AdaptiveTolerance`] (what a
+/// tolerance of 1e-7 rad asks).
+///
+/// Measured (`tests/world_ground_adaptive.rs`): at this tolerance the
+/// viscous tippe top passes the horizontal at the independent generator's
+/// time to 8e-12 relative and the rattleback reverses at the generator's
+/// time to 6e-10, whatever `dt` the world is stepped at (1/60 s, 1e-3 s,
+/// 1e-5 s); at 1e-10 the rattleback was 6e-9 off, too close to the 1e-8
+/// the tests ask.
+pub(crate) const GROUND_TOLERANCE: f64 = 1e-11;
+
+/// How the world's [`crate::Tolerance`] (an attitude error over a horizon)
+/// becomes the local accuracy of a ground body's steps:
+/// `rtol = atol = TOLERANCE_TO_LOCAL · attitude`, clamped to
+/// [[`MIN_LOCAL_TOLERANCE`], [`MAX_LOCAL_TOLERANCE`]].
+///
+/// Measured (`tests/world_ground_adaptive.rs`, the tippe top viscous over
+/// 6 s and sliding over 3 s against the generator, at dt = 1/60 s): for
+/// every tolerance from 1e-2 to 1e-9 rad the worst attitude error stayed
+/// below half the tolerance (0.49 × at 1e-4 rad, sliding). At 1e-3 ×
+/// attitude it was about 3 × the tolerance.
+pub(crate) const TOLERANCE_TO_LOCAL: f64 = 1e-4;
+
+/// The tightest local tolerance: below it the steps' rounding, not their
+/// truncation, sets the error.
+pub(crate) const MIN_LOCAL_TOLERANCE: f64 = 1e-13;
+
+/// The loosest local tolerance: at 1e-6 the viscous tippe top's |q|
+/// drifted by 1e-4 over 3.9 s (the guard's bound); at 1e-8 its attitude
+/// error stays below 3e-5 rad.
+pub(crate) const MAX_LOCAL_TOLERANCE: f64 = 1e-8;
+
+/// The accuracy of a ground body's steps under the world's `tolerance`.
+pub(crate) fn local_tolerance(tolerance: Option<crate::Tolerance>) -> AdaptiveTolerance {
+    let tol = tolerance.map_or(GROUND_TOLERANCE, |t| {
+        (TOLERANCE_TO_LOCAL * t.attitude()).clamp(MIN_LOCAL_TOLERANCE, MAX_LOCAL_TOLERANCE)
+    });
+    // In (0, 1) by the clamp: never an error.
+    AdaptiveTolerance::try_new(tol, tol).unwrap_or(AdaptiveTolerance::new(GROUND_TOLERANCE, GROUND_TOLERANCE))
 }
 
 /// `g` of a world whose gravity is `(0, 0, −g)`, `g > 0`.
@@ -81,16 +140,6 @@ pub(super) fn gravity_down(gravity: DVec3) -> Result<f64, DynamicsError> {
             reason: "must point along −z, (0, 0, −g) with g > 0, for a body on the ground",
         })
     }
-}
-
-/// The number of equal sub-steps of at most `dt` in a step of `h` (a
-/// step within [`WHOLE_STEPS_TOLERANCE`] of `k dt` takes `k`).
-fn substeps(h: f64, dt: f64) -> u64 {
-    if h <= dt {
-        return 1;
-    }
-    // Saturating: a step of 10¹⁸ dt is the caller's to wait for.
-    ((h / dt) - WHOLE_STEPS_TOLERANCE).ceil().max(1.0) as u64
 }
 
 /// The state of `top` touching the plane at attitude `q` spinning at
@@ -145,7 +194,7 @@ impl GroundMotion {
     /// `gravity`) and its state at attitude `q` spinning at `omega_world`.
     fn try_new(
         body: &Body,
-        gravity: DVec3,
+        (gravity, tolerance): (DVec3, AdaptiveTolerance),
         q: DQuat,
         omega_world: DVec3,
     ) -> Result<Self, DynamicsError> {
@@ -169,36 +218,63 @@ impl GroundMotion {
             top,
             state,
             body_from_principal: body.rigid_body().body_from_principal(),
+            tolerance,
+            next_step: None,
         })
     }
 
-    /// One step of `h` from time `t`: equal sub-steps of at most `dt`,
-    /// each checked by the body's [`GroundCheck`].
+    /// One step of `h` from time `t`: error-controlled Dormand–Prince
+    /// steps ([`GroundTop::try_advance_adaptive`] at the body's tolerance)
+    /// that land on `t + h`, the controller's last step carried over to
+    /// the next call; every accepted step checked by the body's
+    /// [`GroundCheck`].
     ///
     /// # Errors
-    /// The errors of [`GroundTop::try_step`] (lift-off, a further shape's
-    /// touchdown, a disk flat, Painlevé, divergence), with their time;
-    /// [`DynamicsError::GroundCheckFailed`] for a sub-step whose state
-    /// fails the guard (the state is left at the sub-step's start).
-    pub(crate) fn step(&mut self, t: f64, h: f64, dt: f64) -> Result<(), DynamicsError> {
-        let n = substeps(h, dt);
-        let sub = h / n as f64;
-        for j in 0..n {
-            let start = self.state;
-            let t_j = t + j as f64 * sub;
-            self.top.try_step(&mut self.state, t_j, sub)?;
-            if let Err(e) = self.check.check(&self.top, &self.state, t_j + sub, sub) {
-                self.state = start;
-                return Err(e);
+    /// The errors of [`GroundTop::try_advance_adaptive`] (lift-off, a
+    /// further shape's touchdown, a disk flat, Painlevé, divergence, a step
+    /// below the smallest), with their time;
+    /// [`DynamicsError::GroundCheckFailed`] for an accepted step whose
+    /// state fails the guard (the state is left at the last one that
+    /// passed).
+    pub(crate) fn step(&mut self, t: f64, h: f64) -> Result<(), DynamicsError> {
+        let run = Controlled {
+            tolerance: self.tolerance,
+            first_step: self.next_step,
+        };
+        let (top, check) = (&self.top, &mut self.check);
+        let mut passed = self.state;
+        let mut t_passed = t;
+        let result = top.advance_controlled(&mut self.state, (t, t + h), run, |time, s| {
+            check.check(top, s, time, time - t_passed)?;
+            (passed, t_passed) = (*s, time);
+            Ok(())
+        });
+        match result {
+            Ok((_, next)) => {
+                self.next_step = next;
+                Ok(())
+            }
+            Err(e) => {
+                if matches!(e, DynamicsError::GroundCheckFailed { .. }) {
+                    self.state = passed;
+                }
+                self.next_step = None;
+                Err(e)
             }
         }
-        Ok(())
+    }
+
+    /// Sets the accuracy of the steps (the world's tolerance changed).
+    pub(crate) fn set_tolerance(&mut self, tolerance: AdaptiveTolerance) {
+        self.tolerance = tolerance;
+        self.next_step = None;
     }
 
     /// Starts the guard again from the current state (after a setter or
     /// new inputs: the energy it compares with has changed).
     pub(crate) fn restart_check(&mut self) {
         self.check = GroundCheck::new(&self.top, &self.state);
+        self.next_step = None;
     }
 
     /// The rotational state as the other plans hold it: principal axes,
@@ -233,6 +309,15 @@ impl GroundMotion {
     }
 }
 
+/// The plan of a body on the ground moved by `ground`.
+fn ground_plan(ground: &GroundMotion) -> Plan {
+    Plan::OnGround {
+        friction: ground.top.friction().model(),
+        watched: ground.top.other_contacts().len(),
+        tolerance: ground.tolerance,
+    }
+}
+
 /// The contact model of `body` with `shape` and `friction` under `gravity`,
 /// with the body's inputs.
 fn ground_top(
@@ -258,11 +343,9 @@ impl World {
             });
         }
         let omega_world = q.normalize() * body.omega_body();
-        let ground = GroundMotion::try_new(&body, self.gravity, q, omega_world)?;
-        let plan = Plan::OnGround {
-            friction: ground.top.friction().model(),
-            watched: ground.top.other_contacts().len(),
-        };
+        let tolerance = local_tolerance(self.tolerance);
+        let ground = GroundMotion::try_new(&body, (self.gravity, tolerance), q, omega_world)?;
+        let plan = ground_plan(&ground);
         let baseline = ground.principal_state();
         let (position, velocity) = (ground.state.com_world, ground.state.velocity_world);
         let mass = body.mass();
@@ -281,6 +364,17 @@ impl World {
         let index = self.entries.len() - 1;
         self.place(index);
         Ok(BodyId(index))
+    }
+
+    /// Gives body `index`, on the ground, the accuracy of the world's
+    /// tolerance (its plan says it); nothing for another body.
+    pub(super) fn retune_ground(&mut self, index: usize) {
+        let tolerance = local_tolerance(self.tolerance);
+        let entry = &mut self.entries[index];
+        if let Motion::Ground(ground) = &mut entry.motion {
+            ground.set_tolerance(tolerance);
+            entry.plan = ground_plan(ground);
+        }
     }
 
     /// Gives body `index`, on the ground, the rotational state `state` now:
@@ -324,16 +418,6 @@ impl World {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn a_step_is_cut_into_sub_steps_of_at_most_dt() {
-        assert_eq!(substeps(0.5, 1.0), 1);
-        assert_eq!(substeps(1.0, 1.0), 1);
-        assert_eq!(substeps(1.0 + 1e-9, 1.0), 1);
-        assert_eq!(substeps(1.5, 1.0), 2);
-        assert_eq!(substeps(3.0, 1.0), 3);
-        assert_eq!(substeps(0.3, 0.1), 3);
-    }
 
     #[test]
     fn gravity_must_point_down() {

@@ -21,9 +21,9 @@
 //!   loads.
 //! - Bodies on the ground plane `z = 0` ([`Support::Ground`],
 //!   [`Plan::OnGround`]; the world's gravity must point along −z) take
-//!   steps of `dt` on the same grid by their contact model's RK4
-//!   ([`crate::GroundTop::try_step`], bit for bit its trajectory); a longer
-//!   [`World::step`] is cut into equal sub-steps of at most `dt`. A
+//!   error-controlled steps of their contact model within every step of
+//!   the grid ([`crate::GroundTop::try_advance_adaptive`], at a tolerance
+//!   the world's [`Tolerance`] sets): `dt` is only where they are read. A
 //!   lift-off, a disk lying flat or Painlevé's case is the world's failure
 //!   with its time. Further shapes that do not touch
 //!   ([`BodyBuilder::other_contacts`], a tippe top's stem ball) are
@@ -31,8 +31,8 @@
 //!   time, which shape and its approach speed
 //!   ([`crate::DynamicsError::ContactTouchdown`]; the impact is not
 //!   modelled). Their inputs enter the contact model, read at the world's
-//!   time ([`crate::GroundTop::try_with_inputs`]); neither the methods nor
-//!   the tolerance change their plan (`ground.rs`).
+//!   time ([`crate::GroundTop::try_with_inputs`]); the methods do not
+//!   change their plan (`ground.rs`).
 //! - Bodies on the table `z = 0` ([`Support::Table`], [`Plan::OnTable`];
 //!   gravity along −z) with any number of contact shapes, started above
 //!   or touching it: a [`crate::TableMotion`] each (unilateral contacts,
@@ -665,15 +665,16 @@ impl World {
     }
 
     /// Remakes every plan from the current states (a body on the ground
-    /// keeps its own: no method or tolerance changes it; a body on the
-    /// table keeps its run: only the tolerance changes it,
+    /// keeps its own, only its accuracy follows the tolerance; a body on
+    /// the table keeps its run: only the tolerance changes it,
     /// [`World::set_tolerance`]).
     fn replan_all(&mut self) -> Result<(), DynamicsError> {
         for index in 0..self.entries.len() {
-            if matches!(
-                self.entries[index].motion,
-                Motion::Ground(_) | Motion::Table(_)
-            ) {
+            if matches!(self.entries[index].motion, Motion::Ground(_)) {
+                self.retune_ground(index);
+                continue;
+            }
+            if matches!(self.entries[index].motion, Motion::Table(_)) {
                 continue;
             }
             let state = self.rotation(index);

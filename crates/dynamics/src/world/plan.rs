@@ -12,7 +12,7 @@
 //! pivot                               heavy top:   the heavy-top method, every dt (auto sub-steps)
 //! free, with applied inputs           forced:      a torque splitting, every dt
 //! pivot, with applied inputs          driven top:  the splitting with gravity kicked too, every dt
-//! on the ground (a contact shape)     on ground:   the contact model's RK4, every dt (never more)
+//! on the ground (a contact shape)     on ground:   the contact model's dopri5, error-controlled within every dt
 //! on the table (contact shapes)       on table:    event-driven dopri5, its own steps within each move
 //! ```
 
@@ -106,16 +106,20 @@ pub enum Plan {
         method: ForcedSplitting,
     },
     /// A body on the ground plane ([`crate::Support::Ground`]): the
-    /// contact model's fixed-step RK4 ([`crate::GroundTop::try_step`])
-    /// every `dt`, a longer step ([`crate::World::step`]) cut into equal
-    /// sub-steps of at most `dt`. Neither the world's methods nor its
-    /// [`crate::Tolerance`] change it.
+    /// contact model's error-controlled Dormand–Prince 5(4) steps
+    /// ([`crate::GroundTop::try_advance_adaptive`]) within every step the
+    /// world takes, landing on its grid: `dt` is only where the states are
+    /// read. Its accuracy is `tolerance`: 1e-11 without a world
+    /// [`crate::Tolerance`], 1e-4 × its attitude error with one (clamped
+    /// to [1e-13, 1e-8]); the world's methods do not change it.
     OnGround {
         /// The friction law at the contact.
         friction: crate::FrictionModel,
         /// How many further contact shapes are watched for touchdown
         /// ([`crate::BodyBuilder::other_contacts`]).
         watched: usize,
+        /// The accuracy of the steps.
+        tolerance: crate::AdaptiveTolerance,
     },
     /// A body above or on the table ([`crate::Support::Table`]): its
     /// [`crate::TableMotion`], Dormand–Prince 5(4) with error control
@@ -305,16 +309,21 @@ impl fmt::Display for Plan {
             ),
             Plan::OnGround {
                 friction,
-                watched: 0,
-            } => write!(
-                f,
-                "body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction {friction}; lift-off stops the run)"
-            ),
-            Plan::OnGround { friction, watched } => write!(
-                f,
-                "body on the ground: ground-top rk4 (order 4) every dt, sub-steps of at most dt (contact with the plane z = 0, friction {friction}; {watched} further contact{} watched; lift-off or a touchdown stops the run)",
-                if *watched == 1 { "" } else { "s" }
-            ),
+                watched,
+                tolerance,
+            } => {
+                write!(
+                    f,
+                    "body on the ground: ground-top dopri5 (order 5), error-controlled steps at rtol {:e}, atol {:e} within every dt, landing on it (contact with the plane z = 0, friction {friction}; ",
+                    tolerance.rtol(),
+                    tolerance.atol()
+                )?;
+                match watched {
+                    0 => write!(f, "lift-off stops the run)"),
+                    1 => write!(f, "1 further contact watched; lift-off or a touchdown stops the run)"),
+                    n => write!(f, "{n} further contacts watched; lift-off or a touchdown stops the run)"),
+                }
+            }
             Plan::OnTable { contacts } => write!(
                 f,
                 "body on the table: event-driven dopri5 (order 5) with error control, its own steps within each dt (unilateral contact of {contacts} shape{} with the plane z = 0, Coulomb-Contensou friction, Newton impacts; impacts, lift-off, stick-slip and rest are events and the run goes on)",

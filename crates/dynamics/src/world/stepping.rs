@@ -442,14 +442,13 @@ impl Walker {
                 self.walk(&mut step)
             }
             Job::Ground(ground) => {
-                let dt = self.clock.dt();
                 let mut step = |k: u64, h: f64| {
                     let t = if k == 1 {
                         self.clock.time()
                     } else {
                         self.time_of(k - 1)
                     };
-                    ground.step(t, h, dt)
+                    ground.step(t, h)
                 };
                 self.walk(&mut step)
             }
