@@ -110,7 +110,8 @@ sign change is located, else the first sample where it holds)
 #   0.972211, 0.972576 and 1.3636, 1.3672, 1.3691: first-order convergence to
 #   the ODE's values (errors halve with dt). Rattle: 0.973634 / 1.417 at 1e-3,
 #   0.972221 / 1.3715 at 5e-4.
-# * the ball leaves the table at the stem's touchdown (within 1-2 ms); at 2 s
+# * the ball leaves the table right after the stem touches (5, 2.3, 1.1 ms
+#   later at Moreau 2e-4, 1e-4, 5e-5: simultaneous in the limit); at 2 s
 #   the top spins on its stem, theta ~ 172 deg, E ~ 4.58 mJ (from 12.05 mJ),
 #   vertical spin ~ 97 rad/s (Moreau, converging at first order).
 # * Rattle 1e-3 to 8 s (coarsest, late times not converged): on the stem
