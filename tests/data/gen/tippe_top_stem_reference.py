@@ -103,6 +103,25 @@ sign change is located, else the first sample where it holds)
   (<= 1 up to the prox iteration's tolerance); the smallest gaps.
 """
 
+# What the committed JSON shows (cardillo 832f71fc, this machine, 2026-11-28):
+# * ball phase: the ODE gives t_axis_horizontal = 0.97294717 s and the stem's
+#   touchdown at 1.37104325 s with the ball still pressing (min N = 0.0332 N,
+#   min slip 0.0432 m/s); Moreau at dt = 2e-4, 1e-4, 5e-5 gives 0.971494,
+#   0.972211, 0.972576 and 1.3636, 1.3672, 1.3691: first-order convergence to
+#   the ODE's values (errors halve with dt). Rattle: 0.973634 / 1.417 at 1e-3,
+#   0.972221 / 1.3715 at 5e-4.
+# * the ball leaves the table right after the stem touches (5, 2.3, 1.1 ms
+#   later at Moreau 2e-4, 1e-4, 5e-5: simultaneous in the limit); at 2 s
+#   the top spins on its stem, theta ~ 172 deg, E ~ 4.58 mJ (from 12.05 mJ),
+#   vertical spin ~ 97 rad/s (Moreau, converging at first order).
+# * Rattle 1e-3 to 8 s (coarsest, late times not converged): on the stem
+#   alone until 4.68 s (theta up to 178.5 deg), then the ball touches again,
+#   both on the table at 4.744 s (theta = 140.28 deg, the two-point angle),
+#   the stem leaves at 5.55 s and the top ends on its ball at theta = 98 deg,
+#   E = 1.05 mJ, vertical spin 10.3 rad/s.
+# * energy: Rattle never rises; Moreau (midpoint) rises by at most 3.7e-8,
+#   9.2e-9, 2.3e-9 J per step at 2e-4, 1e-4, 5e-5 (ball phase), i.e. O(dt^2).
+
 import argparse
 import json
 import os
