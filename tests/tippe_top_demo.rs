@@ -233,7 +233,7 @@ fn headless_demo_prints_the_library_times_and_writes_chart_and_gif() {
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
     assert_eq!(&bytes[12..16], b"IHDR");
     let size = |at: usize| u32::from_be_bytes(bytes[at..at + 4].try_into().unwrap());
-    assert_eq!((size(16), size(20)), (900, 730));
+    assert_eq!((size(16), size(20)), (900, 760));
     assert!(bytes.len() > 20_000, "{} bytes", bytes.len());
 
     let file = std::fs::File::open(&gif).unwrap();

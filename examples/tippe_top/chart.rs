@@ -91,7 +91,7 @@ fn mark_time(axes: &Axes, fig: &mut Figure, t: Option<f64>) {
 
 /// The chart, `title` above it.
 pub fn run_figure(samples: &[Sample], marks: &Marks<'_>, title: &str) -> Figure {
-    let mut fig = Figure::new(900, 730);
+    let mut fig = Figure::new(900, 760);
     let x_range = (0.0, marks.duration);
     let phases = phases(marks);
 
@@ -100,7 +100,7 @@ pub fn run_figure(samples: &[Sample], marks: &Marks<'_>, title: &str) -> Figure 
             left: 100.0,
             top: 40.0,
             width: 770.0,
-            height: 230.0,
+            height: 240.0,
         },
         x_range,
         y_range: (0.0, 180.0),
@@ -143,9 +143,9 @@ pub fn run_figure(samples: &[Sample], marks: &Marks<'_>, title: &str) -> Figure 
     let energy = Axes {
         frame: Rect {
             left: 100.0,
-            top: 355.0,
+            top: 370.0,
             width: 770.0,
-            height: 165.0,
+            height: 180.0,
         },
         x_range,
         y_range: range_of(samples.iter().map(|s| s.energy)),
@@ -165,7 +165,7 @@ pub fn run_figure(samples: &[Sample], marks: &Marks<'_>, title: &str) -> Figure 
     let strip = Axes {
         frame: Rect {
             left: 100.0,
-            top: 605.0,
+            top: 640.0,
             width: 770.0,
             height: 60.0,
         },
