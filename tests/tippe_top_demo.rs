@@ -147,8 +147,7 @@ fn headless_demo_prints_the_library_times_and_writes_chart_and_gif() {
     let last_lift = |r: &TableMotion| {
         r.events()
             .iter()
-            .filter(|e| e.contact == Some(1) && e.kind == TableEventKind::LiftOff)
-            .last()
+            .rfind(|e| e.contact == Some(1) && e.kind == TableEventKind::LiftOff)
             .map(|e| e.time)
             .unwrap()
     };
@@ -199,8 +198,7 @@ fn headless_demo_prints_the_library_times_and_writes_chart_and_gif() {
     let settled = run
         .events()
         .iter()
-        .filter(|e| matches!(e.kind, TableEventKind::Impact { .. }) && e.time < back.time + 0.5)
-        .last()
+        .rfind(|e| matches!(e.kind, TableEventKind::Impact { .. }) && e.time < back.time + 0.5)
         .unwrap();
     assert!(
         line.contains("rocks between ball and stem")

@@ -1,6 +1,7 @@
 //! The window (minifb, X11, software rendering): the side view and the
 //! tilt chart of [`super::drawing`], the simulation advanced in real time
-//! (the engine adapting its steps inside each frame) until `--duration` (the physics printed then), then held until closed.
+//! (the engine adapting its steps inside each frame) until `--duration`
+//! (the physics printed then), then held until closed.
 //! Keys: q or Esc quit.
 
 use std::io::Write;

@@ -140,16 +140,26 @@ fn contact_lines(sim: &Simulation, end: f64) -> Vec<(f64, String)> {
                     _ => None,
                 })
                 .fold(0.0, f64::max);
+            let struck = [0, 1].map(|i| {
+                burst.iter().any(|e| {
+                    e.contact == Some(i) && matches!(e.kind, TableEventKind::Impact { .. })
+                })
+            });
+            let (first_name, motion) = match struck {
+                [true, true] => (
+                    burst.first().and_then(|e| e.contact).unwrap_or(0),
+                    "it rocks between ball and stem",
+                ),
+                [false, true] => (1, "it bounces on the stem"),
+                _ => (0, "it bounces on the ball"),
+            };
             lines.push((
                 t0,
                 format!(
-                    "{}: {} strikes the table: it rocks between ball and stem, the impacts \
-                     ({} at most) accumulating by t ≈ {t1:.4} s: {after}",
+                    "{}: the {} strikes the table: {motion}, the impacts ({} at most) \
+                     accumulating by t ≈ {t1:.4} s: {after}",
                     time_words(t0),
-                    burst
-                        .first()
-                        .and_then(|e| e.contact)
-                        .map_or("the top", |i| if i == 0 { "the ball" } else { "the stem" }),
+                    CONTACT_NAMES[first_name],
                     speed_words(fastest)
                 ),
             ));
@@ -228,8 +238,9 @@ pub fn result_lines(sim: &Simulation, options: &Options) -> Vec<String> {
         "it never rose between the observed instants".to_owned()
     } else {
         format!(
-            "its largest rise between the observed instants: {:.0e} E₀ (rounding)",
-            sim.energy_rise / sim.energy0
+            "its largest rise between the observed instants: {:.0e} E₀ (tolerance {:e})",
+            sim.energy_rise / sim.energy0,
+            options.tolerance
         )
     };
     lines.push(format!(
