@@ -226,6 +226,16 @@ fn headless_demo_prints_the_library_times_and_writes_chart_and_gif() {
         format!("{ratio:.4}")
     );
     assert!(ratio < 0.9, "{line}");
+    // Friction and impacts only take energy away.
+    assert!(
+        line.ends_with("it never rose between the observed instants"),
+        "{line}"
+    );
+    // Contensou's drilling torque changes Jellett's λ even while the ball
+    // alone touches (what turns this top over).
+    let line = line_starting(&printed, "Jellett's λ");
+    let drift = number_after(line, "max |Δλ|/|λ| = ");
+    assert!(line.contains("the ball alone (") && drift > 0.1, "{line}");
 
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
