@@ -43,7 +43,7 @@ pub struct Options {
     pub restitution: f64,
     /// Relative (and scaled absolute) tolerance of the engine's adaptive
     /// steps (1e-13 to 1e-4).
-    #[arg(long, value_name = "TOL", default_value_t = 1e-10)]
+    #[arg(long, value_name = "TOL", default_value = "1e-10")]
     pub tolerance: f64,
     /// Frames per second of simulated time in the GIF and the window's
     /// chart (the GIF is shown at a quarter of real speed; the engine
