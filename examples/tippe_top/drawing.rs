@@ -56,8 +56,10 @@ pub struct FrameData<'a> {
     pub tilt_history: &'a [(f64, f64)],
     /// The run's length, s (the chart's x range).
     pub duration: f64,
-    /// The inversion instant, once passed.
-    pub inverted_at: Option<f64>,
+    /// The axis' first horizontal passage, once passed.
+    pub horizontal_at: Option<f64>,
+    /// Whether the ball and the stem touch the table.
+    pub touching: [bool; 2],
 }
 
 /// The camera: screen right and the direction towards the viewer (both
@@ -278,10 +280,22 @@ pub fn frame_figure(data: &FrameData<'_>) -> Figure {
         )
         .colored(THETA_LINE),
     );
-    if let Some(t) = data.inverted_at {
+    let on = match data.touching {
+        [true, true] => "on the ball and the stem",
+        [true, false] => "on the ball",
+        [false, true] => "on the stem",
+        [false, false] => "in the air",
+    };
+    fig.text(Text::new(
+        Point::new(12.0, 64.0),
+        on.to_owned(),
+        13.0,
+        Anchor::Start,
+    ));
+    if let Some(t) = data.horizontal_at {
         fig.text(Text::new(
-            Point::new(12.0, 64.0),
-            format!("inverted at {t:.3} s"),
+            Point::new(12.0, 82.0),
+            format!("horizontal at {t:.3} s"),
             13.0,
             Anchor::Start,
         ));

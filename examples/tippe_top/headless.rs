@@ -9,16 +9,18 @@ use std::path::{Path, PathBuf};
 use kreisel_plot::ImageFormat;
 
 use super::DemoError;
-use super::chart::{Sample, run_figure};
+use super::chart::{Marks, Sample, run_figure};
 use super::drawing::{FrameData, HEIGHT, WIDTH, frame_pixels};
 use super::options::Options;
 use super::report::result_lines;
 use super::shared::gif_out;
 use super::shared::output_file::{PendingFile, write_whole};
 use super::simulation::{Simulation, tilt};
+use kreisel::dynamics::{TableEvent, TableEventKind};
 
-/// Samples of the run kept for the chart and the GIF's tilt trace (about).
-const SAMPLES: f64 = 2000.0;
+/// Samples of the run kept for the chart and the GIF's tilt trace, besides
+/// the frames.
+pub const SAMPLES: usize = 4000;
 
 /// The GIF, streamed to a temporary file beside the target as the frames
 /// come, renamed over it when complete.
@@ -70,13 +72,33 @@ impl GifRecorder {
     }
 }
 
-/// Runs `sim` to `options.duration` (or lift-off), prints the physics and
-/// writes the files asked for.
+/// The run's observation instants: `samples` chart samples and the frames
+/// at `1/fps` s, in time order, each once (the end included), with whether
+/// it is a frame.
+pub fn grid(duration: f64, samples: usize, fps: f64) -> Vec<(f64, bool)> {
+    let frames = (duration * fps + 1e-9).floor() as usize;
+    let mut times: Vec<(f64, bool)> = (0..=samples)
+        .map(|k| (duration * k as f64 / samples as f64, false))
+        .chain((0..=frames).map(|j| (j as f64 / fps, true)))
+        .collect();
+    times.push((duration, true));
+    times.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut merged: Vec<(f64, bool)> = Vec::with_capacity(times.len());
+    for (t, frame) in times {
+        match merged.last_mut() {
+            Some(last) if last.0 == t => last.1 |= frame,
+            _ => merged.push((t, frame)),
+        }
+    }
+    merged
+}
+
+/// Runs `sim` to `options.duration`, prints the physics and writes the
+/// files asked for.
 ///
 /// # Errors
-/// [`DemoError::PlotFormat`], [`DemoError::Write`] before the run for an
-/// output that cannot be written; the library's errors; [`DemoError::Gif`],
-/// [`DemoError::Plot`], [`DemoError::Write`] after it.
+/// The library's errors; [`DemoError::Gif`], [`DemoError::Plot`],
+/// [`DemoError::Write`] for the outputs.
 pub fn run(options: &Options, mut sim: Simulation, out: &mut dyn Write) -> Result<(), DemoError> {
     // Checked by Options::validate: a known format in an existing directory.
     let plot_format = options.plot.as_deref().and_then(ImageFormat::from_path);
@@ -85,40 +107,31 @@ pub fn run(options: &Options, mut sim: Simulation, out: &mut dyn Write) -> Resul
         .as_deref()
         .map(|p| GifRecorder::new(p, options.fps))
         .transpose()?;
-    let steps = (options.duration / options.dt).round().max(1.0) as u64;
-    let sample_every = ((steps as f64 / SAMPLES).round() as u64).max(1);
-    let frame_every = ((1.0 / (options.fps * options.dt)).round() as u64).max(1);
     let mut samples: Vec<Sample> = Vec::new();
     let mut tilts: Vec<(f64, f64)> = Vec::new();
-    for i in 0..=steps {
-        let last = i == steps || sim.stopped();
-        if i % sample_every == 0 || last {
-            let theta_deg = tilt(&sim.state).to_degrees();
-            samples.push(Sample {
-                t: sim.time,
-                theta_deg,
-                energy: sim.top.energy(&sim.state) / sim.energy0,
-                jellett: sim.jellett_change(),
-            });
-            tilts.push((sim.time, theta_deg));
-        }
+    for (t, frame) in grid(options.duration, SAMPLES, options.fps) {
+        sim.advance_to(t)?;
+        let theta_deg = tilt(sim.state()).to_degrees();
+        samples.push(Sample {
+            t,
+            theta_deg,
+            energy: sim.energy_ratio(),
+        });
+        tilts.push((t, theta_deg));
         if let Some(g) = gif.as_mut()
-            && (i % frame_every == 0 || last)
+            && frame
         {
             g.push(&FrameData {
-                state: &sim.state,
-                time: sim.time,
+                state: sim.state(),
+                time: t,
                 tilt_history: &tilts,
                 duration: options.duration,
-                inverted_at: sim.events.inverted_at,
+                horizontal_at: sim.horizontal_at(),
+                touching: sim.touching(),
             })?;
         }
-        if last {
-            break;
-        }
-        sim.step()?;
     }
-    for line in result_lines(&sim) {
+    for line in result_lines(&sim, options) {
         writeln!(out, "{line}")?;
     }
     if let Some(g) = gif {
@@ -131,19 +144,41 @@ pub fn run(options: &Options, mut sim: Simulation, out: &mut dyn Write) -> Resul
         )?;
     }
     if let (Some(path), Some(format)) = (&options.plot, plot_format) {
-        let title = match sim.events.inverted_at {
-            Some(t) => format!(
-                "Leine & Glocker's tippe top, friction {}: inverted at t = {t:.4} s",
-                options.friction_name()
-            ),
-            None => format!(
-                "Leine & Glocker's tippe top, friction {}",
-                options.friction_name()
-            ),
+        let impacts = impacts(sim.events());
+        let marks = Marks {
+            duration: options.duration,
+            horizontal_at: sim.horizontal_at(),
+            touching: &sim.touching_history,
+            impacts: &impacts,
         };
-        let figure = run_figure(&samples, options.duration, sim.events.inverted_at, &title);
+        let title = format!(
+            "Leine & Glocker's tippe top with its stem: μ = {}, Contensou radius {} mm",
+            options.mu, options.contensou_radius
+        );
+        let figure = run_figure(&samples, &marks, &title);
         write_whole(path, &format.render(&figure)?)?;
         writeln!(out, "wrote {}", path.display())?;
     }
     Ok(())
+}
+
+/// The impacts among `events`: time and contact.
+fn impacts(events: &[TableEvent]) -> Vec<(f64, usize)> {
+    events
+        .iter()
+        .filter(|e| matches!(e.kind, TableEventKind::Impact { .. }))
+        .filter_map(|e| e.contact.map(|c| (e.time, c)))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn grid_holds_every_frame_and_sample_once_in_order() {
+        let g = super::grid(1.0, 4, 10.0);
+        assert_eq!(g.len(), 11 + 2);
+        assert!(g.windows(2).all(|w| w[0].0 < w[1].0));
+        assert_eq!(g.iter().filter(|(_, f)| *f).count(), 11);
+        assert_eq!(g.last(), Some(&(1.0, true)));
+    }
 }

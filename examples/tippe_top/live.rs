@@ -1,6 +1,7 @@
 //! The window (minifb, X11, software rendering): the side view and the
 //! tilt chart of [`super::drawing`], the simulation advanced in real time
-//! until `--duration` (the physics printed then), then held until closed.
+//! (the engine adapting its steps inside each frame) until `--duration`
+//! (the physics printed then), then held until closed.
 //! Keys: q or Esc quit.
 
 use std::io::Write;
@@ -57,30 +58,28 @@ pub fn run(
         Err(reason) => return Ok(Outcome::NoWindow(reason)),
     };
     window.set_target_fps(60);
-    let mut tilts = vec![(0.0, tilt(&sim.state).to_degrees())];
-    let mut owed = 0.0;
+    let mut tilts = vec![(0.0, tilt(sim.state()).to_degrees())];
     let mut reported = false;
     let mut last = Instant::now();
     while window.is_open() && !window.is_key_down(Key::Escape) && !window.is_key_down(Key::Q) {
         let now = Instant::now();
-        owed += (now - last).as_secs_f64().min(MAX_FRAME_TIME);
+        let owed = (now - last).as_secs_f64().min(MAX_FRAME_TIME);
         last = now;
-        while owed >= sim.dt && sim.time < options.duration && !sim.stopped() {
-            sim.step()?;
-            owed -= sim.dt;
-        }
-        if tilts.last().is_some_and(|&(t, _)| t < sim.time) {
-            tilts.push((sim.time, tilt(&sim.state).to_degrees()));
+        // The engine adapts its own steps inside the frame.
+        sim.advance_to((sim.time() + owed).min(options.duration))?;
+        if tilts.last().is_some_and(|&(t, _)| t < sim.time()) {
+            tilts.push((sim.time(), tilt(sim.state()).to_degrees()));
         }
         let pixels = frame_pixels(&FrameData {
-            state: &sim.state,
-            time: sim.time,
+            state: sim.state(),
+            time: sim.time(),
             tilt_history: &tilts,
             duration: options.duration,
-            inverted_at: sim.events.inverted_at,
+            horizontal_at: sim.horizontal_at(),
+            touching: sim.touching(),
         })?;
-        if !reported && (sim.time >= options.duration || sim.stopped()) {
-            for line in result_lines(&sim) {
+        if !reported && sim.time() >= options.duration {
+            for line in result_lines(&sim, options) {
                 writeln!(out, "{line}")?;
             }
             out.flush()?;
@@ -92,7 +91,7 @@ pub fn run(
         }
     }
     if !reported {
-        for line in result_lines(&sim) {
+        for line in result_lines(&sim, options) {
             writeln!(out, "{line}")?;
         }
     }

@@ -1,12 +1,13 @@
-//! # The tippe top: spun with its stem up, it turns itself over
+//! # The tippe top: spun with its stem up, it turns itself over onto its stem
 //!
 //! Leine & Glocker's tippe top (Eur. J. Mech. A/Solids 22 (2003) 193): a
 //! ball of radius R = 15 mm whose centre of mass lies a = 3 mm below its
-//! centre, m = 6 g, I₁ = 8e-7, I₃ = 7e-7 kg m², started at a tilt of
-//! 0.1 rad spinning at 180 rad/s. Friction at the contact point makes the
-//! axis rise through the horizontal until the top spins on its stem side;
-//! Jellett's λ = L·(r_G − r_P) stays constant through it all while the
-//! energy falls.
+//! centre, m = 6 g, I₁ = 8e-7, I₃ = 7e-7 kg m², and a stem ending in a ball
+//! of radius 5 mm whose centre is 16 mm from the centre of mass; started on
+//! its ball at a tilt of 0.1 rad spinning at 180 rad/s. Coulomb friction
+//! (μ = 0.3) with Contensou's drilling friction (a contact patch of radius
+//! 0.5 mm) makes the axis rise through the horizontal until the stem lands;
+//! the top then spins on its stem.
 //!
 //! ```text
 //! cargo run --release --example tippe_top                  # window (or headless without a display)
@@ -15,22 +16,27 @@
 //! cargo run --release --example tippe_top -- --help        # every option
 //! ```
 //!
-//! The simulation is the library's [`kreisel::dynamics::GroundTop`]
-//! stepped by its RK4 (`--dt`, default 1e-5 s) with `--friction`
-//! (default `sliding`: Coulomb μ = 0.3 regularised at 1 mm/s, at which
-//! Leine & Glocker report the inversion at 2.7 s); the demo only observes.
-//! It prints the setup, then `inverted at t = X s` — the first time the
-//! symmetry axis passes the horizontal going down, located inside its RK4
-//! step by bisection on the step size — when the stem's ball reaches the
-//! floor (the library's touchdown event, `DynamicsError::ContactTouchdown`,
-//! located by bisection on the step; the stem's contact is not modelled,
-//! the demo goes on with the ball alone), the end state against the
-//! spin a full inversion ends with (from λ), and the energy and λ budgets.
+//! The simulation is the library's nonsmooth engine,
+//! [`kreisel::dynamics::TableMotion`]: the ball and the stem's ball are
+//! unilateral contacts (Signorini), friction is set-valued (stick and slip
+//! on the cone), a contact that closes with speed is an impact (Newton's
+//! law, `--restitution`, plastic by default), and the engine adapts its
+//! own steps (`--tolerance`, default 1e-10) between events it locates to
+//! rounding. The demo only observes, at its output grid (chart samples
+//! and frames at `1/--fps` s) and at each of the library's events. It
+//! prints the setup, then one line per event of interest with its time —
+//! the axis passing the horizontal (located by bisection on the library's
+//! run), the stem's landing, the ball lifting off, touching down again,
+//! the rocking impacts — (`--events` adds the library's full list), the
+//! end state, and the budgets: the energy never rises; Jellett's
+//! λ = −L·ρ about the touching sphere is constant only while that sphere
+//! alone touches and without drilling friction (`--contensou-radius 0`).
 //!
-//! `--plot` charts θ(t), E(t)/E₀ and the relative change of λ (PNG or SVG
-//! by the file's extension); `--gif` animates the top seen from the side
-//! (a red and a yellow marker on the ball's equator show the spin; at
-//! 180 rad/s they are sampled stroboscopically) beside θ(t).
+//! `--plot` charts θ(t) on bands shaded by which contacts touch, E(t)/E₀
+//! and a strip of the contacts with the impacts ticked (PNG or SVG by the
+//! file's extension); `--gif` animates the top seen from the side (a red
+//! and a yellow marker on the ball's equator show the spin; at 180 rad/s
+//! they are sampled stroboscopically) beside θ(t).
 
 use std::ffi::OsString;
 use std::io::Write;
@@ -143,8 +149,8 @@ where
         }
     };
     options.validate()?;
-    let (top, start) = simulation::leine_glocker(options.friction()?)?;
-    let sim = simulation::Simulation::new(top, start, options.dt)?;
+    let run = simulation::leine_glocker(options.law()?, options.tolerance)?;
+    let sim = simulation::Simulation::new(run);
     for line in report::setup_lines(&options) {
         writeln!(out, "{line}")?;
     }

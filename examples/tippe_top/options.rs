@@ -3,15 +3,15 @@
 use std::path::PathBuf;
 
 use clap::Parser;
-use kreisel::dynamics::Friction;
+use kreisel::dynamics::ContactLaw;
 use kreisel_plot::ImageFormat;
 
 use super::DemoError;
 
-/// The tippe top of Leine & Glocker (2003) on a table: spun with its stem
-/// up, it turns itself over onto its stem. Opens a window when there is a
-/// display (q or Esc quits), else runs headless. Always prints the physics,
-/// one line each.
+/// The tippe top of Leine & Glocker (2003) on a table, ball and stem: spun
+/// with its stem up, it turns itself over onto its stem. Opens a window
+/// when there is a display (q or Esc quits), else runs headless. Always
+/// prints the physics, one line each.
 #[derive(Debug, Clone, Parser)]
 #[command(name = "tippe_top", version, about, long_about = None, allow_negative_numbers = true)]
 pub struct Options {
@@ -21,49 +21,43 @@ pub struct Options {
     /// Write an animated GIF of the top seen from the side (headless).
     #[arg(long, value_name = "FILE")]
     pub gif: Option<PathBuf>,
-    /// Write the chart of θ(t), the energy and Jellett's λ (.png or .svg; headless).
+    /// Write the chart of θ(t), the energy and the contacts (.png or .svg; headless).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
-    /// Simulated time, s (up to 1000).
-    #[arg(long, value_name = "S", default_value_t = 4.0)]
+    /// Print every event of the library's run (impacts, lift-offs,
+    /// touchdowns, stick, slip), one line each, after the events of interest.
+    #[arg(long)]
+    pub events: bool,
+    /// Simulated time, s (up to 60).
+    #[arg(long, value_name = "S", default_value_t = 8.0)]
     pub duration: f64,
-    /// Friction at the contact: sliding (regularised Coulomb), viscous, rolling (no slip), none.
-    #[arg(long, value_enum, default_value_t = FrictionChoice::Sliding)]
-    pub friction: FrictionChoice,
-    /// Friction coefficient: Coulomb's μ for sliding, s/m for viscous.
+    /// Coulomb's friction coefficient μ at the ball and the stem.
     #[arg(long, value_name = "MU", default_value_t = 0.3)]
     pub mu: f64,
-    /// Regularisation ε of sliding friction, m/s (slip speeds well above it
-    /// feel Coulomb's μ N).
-    #[arg(long, value_name = "M_PER_S", default_value_t = 1e-3)]
-    pub slip_velocity: f64,
-    /// RK4 time step, s (1e-7 to 1e-3).
-    #[arg(long, value_name = "S", default_value_t = 1e-5)]
-    pub dt: f64,
-    /// Frames per second of the GIF (each frame is 1/fps s of simulated
-    /// time, shown at a quarter of real speed).
+    /// Radius of Contensou's contact patch (drilling friction), mm (0: point
+    /// contacts, no drilling friction).
+    #[arg(long, value_name = "MM", default_value_t = 0.5)]
+    pub contensou_radius: f64,
+    /// Newton's restitution coefficient e of the impacts (0: plastic).
+    #[arg(long, value_name = "E", default_value_t = 0.0)]
+    pub restitution: f64,
+    /// Relative (and scaled absolute) tolerance of the engine's adaptive
+    /// steps (1e-13 to 1e-4).
+    #[arg(long, value_name = "TOL", default_value = "1e-10")]
+    pub tolerance: f64,
+    /// Frames per second of simulated time in the GIF and the window's
+    /// chart (the GIF is shown at a quarter of real speed; the engine
+    /// adapts its own steps between frames).
     #[arg(long, value_name = "N", default_value_t = 40.0)]
     pub fps: f64,
 }
 
-/// The friction models the demo offers (the library's
-/// [`kreisel::dynamics::FrictionModel`]s that [`kreisel::dynamics::GroundTop`] steps).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum FrictionChoice {
-    /// Regularised Coulomb friction: F = −μ N v/√(|v|² + ε²).
-    Sliding,
-    /// Viscous friction: F = −μ N v (μ in s/m).
-    Viscous,
-    /// Rolling without slipping (the contact point at rest; conservative).
-    Rolling,
-    /// No friction.
-    None,
-}
-
 /// The longest run accepted, s.
-pub const MAX_DURATION: f64 = 1000.0;
-/// The shortest and longest steps accepted, s.
-pub const DT_RANGE: (f64, f64) = (1e-7, 1e-3);
+pub const MAX_DURATION: f64 = 60.0;
+/// The loosest and tightest tolerances accepted.
+pub const TOLERANCE_RANGE: (f64, f64) = (1e-13, 1e-4);
+/// The largest Contensou radius accepted, mm (a third of the stem's ball).
+pub const MAX_CONTENSOU_RADIUS: f64 = 1.5;
 
 /// `Err(DemoError::Option)` unless `ok`.
 fn check(ok: bool, name: &'static str, value: f64, range: &'static str) -> Result<(), DemoError> {
@@ -86,19 +80,13 @@ impl Options {
             self.duration > 0.0 && self.duration <= MAX_DURATION,
             "--duration",
             self.duration,
-            "in (0, 1000] s",
+            "in (0, 60] s",
         )?;
         check(
-            self.dt >= DT_RANGE.0 && self.dt <= DT_RANGE.1,
-            "--dt",
-            self.dt,
-            "in [1e-7, 1e-3] s",
-        )?;
-        check(
-            self.dt <= self.duration,
-            "--dt",
-            self.dt,
-            "at most --duration",
+            self.tolerance >= TOLERANCE_RANGE.0 && self.tolerance <= TOLERANCE_RANGE.1,
+            "--tolerance",
+            self.tolerance,
+            "in [1e-13, 1e-4]",
         )?;
         check(
             self.fps >= 1.0 && self.fps <= 1000.0,
@@ -113,10 +101,16 @@ impl Options {
             "finite and not negative",
         )?;
         check(
-            self.slip_velocity.is_finite() && self.slip_velocity > 0.0,
-            "--slip-velocity",
-            self.slip_velocity,
-            "positive and finite",
+            self.contensou_radius >= 0.0 && self.contensou_radius <= MAX_CONTENSOU_RADIUS,
+            "--contensou-radius",
+            self.contensou_radius,
+            "in [0, 1.5] mm",
+        )?;
+        check(
+            (0.0..=1.0).contains(&self.restitution),
+            "--restitution",
+            self.restitution,
+            "in [0, 1]",
         )?;
         if let Some(path) = &self.gif {
             let ext = path.extension().and_then(|e| e.to_str());
@@ -135,40 +129,31 @@ impl Options {
         Ok(())
     }
 
-    /// The friction model with its parameters.
+    /// The contact law of the ball and the stem.
     ///
     /// # Errors
     /// [`DemoError::Dynamics`] for parameters the library refuses.
-    pub fn friction(&self) -> Result<Friction, DemoError> {
-        Ok(match self.friction {
-            FrictionChoice::None => Friction::None,
-            FrictionChoice::Viscous => Friction::try_viscous(self.mu)?,
-            FrictionChoice::Sliding => Friction::try_sliding(self.mu, self.slip_velocity)?,
-            FrictionChoice::Rolling => Friction::Rolling,
-        })
+    pub fn law(&self) -> Result<ContactLaw, DemoError> {
+        Ok(ContactLaw::try_new(self.mu)?
+            .try_with_restitution(self.restitution)?
+            .try_with_contensou_radius(self.contensou_radius * 1e-3)?)
     }
 
-    /// The friction model's name (`sliding`, `viscous`, `rolling`, `none`).
-    pub fn friction_name(&self) -> &'static str {
-        match self.friction {
-            FrictionChoice::Sliding => "sliding",
-            FrictionChoice::Viscous => "viscous",
-            FrictionChoice::Rolling => "rolling",
-            FrictionChoice::None => "none",
-        }
-    }
-
-    /// The friction in words, for the printed setup.
-    pub fn friction_words(&self) -> String {
-        match self.friction {
-            FrictionChoice::None => "none".to_owned(),
-            FrictionChoice::Rolling => "rolling without slipping".to_owned(),
-            FrictionChoice::Viscous => format!("viscous, μ = {} s/m", self.mu),
-            FrictionChoice::Sliding => format!(
-                "sliding (regularised Coulomb), μ = {}, slip_velocity = {} mm/s",
-                self.mu,
-                self.slip_velocity * 1e3
-            ),
-        }
+    /// The contact law in words, for the printed setup.
+    pub fn law_words(&self) -> String {
+        let drilling = if self.contensou_radius > 0.0 {
+            format!(
+                "Contensou's drilling friction on a patch of radius {} mm",
+                self.contensou_radius
+            )
+        } else {
+            "point contacts (no drilling friction)".to_owned()
+        };
+        let impacts = if self.restitution == 0.0 {
+            "plastic impacts (e = 0)".to_owned()
+        } else {
+            format!("impacts with restitution e = {}", self.restitution)
+        };
+        format!("Coulomb friction μ = {}, {drilling}, {impacts}", self.mu)
     }
 }

@@ -1,12 +1,14 @@
-//! The tippe top of Leine & Glocker (2003) on the library's
-//! [`GroundTop`], stepped by its RK4 with lift-off and the stem ball's
-//! touchdown reported, and what the demo observes along the way: the tilt
-//! θ, the energy, Jellett's λ, the inversion instant and the instant the
-//! stem's ball reaches the floor.
+//! The tippe top of Leine & Glocker (2003) with its stem, run by the
+//! library's nonsmooth engine ([`TableMotion`]: ball and stem as unilateral
+//! contacts, Coulomb–Contensou friction, impacts), and what the demo
+//! observes along the way: the tilt θ, the energy, Jellett's λ about the
+//! touching sphere, the axis' passage through the horizontal, and the
+//! library's own events.
 
 use glam::{DMat3, DQuat, DVec2, DVec3};
 use kreisel::dynamics::{
-    ContactShape, DynamicsError, Friction, GroundTop, GroundTopState, SphereContact,
+    AdaptiveTolerance, ContactLaw, ContactMode, ContactShape, DynamicsError, Friction, GroundTop,
+    GroundTopState, SphereContact, TableBody, TableContact, TableEvent, TableMotion,
 };
 
 /// Mass, kg (Leine & Glocker, Eur. J. Mech. A/Solids 22 (2003) 193).
@@ -19,8 +21,7 @@ pub const I3: f64 = 7e-7;
 pub const BALL_RADIUS: f64 = 0.015;
 /// Distance from the centre of mass to the ball's centre, towards the stem, m.
 pub const BALL_OFFSET: f64 = 0.003;
-/// Radius of the stem's ball, m (drawn, and watched for touchdown: its
-/// contact force is not modelled).
+/// Radius of the stem's ball, m.
 pub const STEM_RADIUS: f64 = 0.005;
 /// Distance from the centre of mass to the stem ball's centre, m.
 pub const STEM_OFFSET: f64 = 0.016;
@@ -30,30 +31,41 @@ pub const THETA0: f64 = 0.1;
 pub const SPIN0: f64 = 180.0;
 /// Gravity, m/s².
 pub const GRAVITY: f64 = 9.81;
+/// The contacts' names, in the library's order (contact #0, #1).
+pub const CONTACT_NAMES: [&str; 2] = ["ball", "stem"];
 
-/// Bisection steps that locate the inversion inside an RK4 step (2⁻⁵⁰ of it).
-const BISECTIONS: usize = 50;
+/// Bisections that locate the horizontal passage between two observed
+/// instants (2⁻⁶⁰ of the interval: to rounding).
+const BISECTIONS: usize = 60;
 
-/// Leine & Glocker's top with `friction`, tilted by θ₀ about x, spinning
-/// at ω₀ about its axis, touching the floor: centre of mass at rest, or,
-/// rolling, moving so that the contact point is at rest. The stem's ball
-/// is watched for touchdown ([`GroundTop::try_with_other_contacts`]).
+/// Leine & Glocker's top with its ball and its stem's ball on the table,
+/// each contact with `law`, tilted by θ₀ about x, spinning at ω₀ about its
+/// axis, its centre of mass at rest, the ball touching: the library's
+/// nonsmooth run at `tolerance` (relative and absolute).
 ///
 /// # Errors
-/// [`DynamicsError::InvalidContact`] for bad friction parameters.
-pub fn leine_glocker(friction: Friction) -> Result<(GroundTop, GroundTopState), DynamicsError> {
+/// The library's: a tolerance it refuses, the first events' errors.
+pub fn leine_glocker(law: ContactLaw, tolerance: f64) -> Result<TableMotion, DynamicsError> {
+    let inertia = DMat3::from_diagonal(DVec3::new(I1, I1, I3));
     let ball = SphereContact::try_new(BALL_RADIUS, DVec3::new(0.0, 0.0, BALL_OFFSET))?;
     let stem = SphereContact::try_new(STEM_RADIUS, DVec3::new(0.0, 0.0, STEM_OFFSET))?;
-    let inertia = DMat3::from_diagonal(DVec3::new(I1, I1, I3));
-    let top = GroundTop::try_new(MASS, inertia, ball, friction, GRAVITY)?
-        .try_with_other_contacts(&[ContactShape::Sphere(stem)])?;
+    let contacts = [ball, stem]
+        .map(|s| TableContact {
+            shape: ContactShape::Sphere(s),
+            law,
+        })
+        .to_vec();
+    let body = TableBody::try_new(MASS, inertia, contacts, GRAVITY)?;
+    // The start on the ball: GroundTop's placement (the ball touching, the
+    // centre of mass at rest).
+    let placer = GroundTop::try_new(MASS, inertia, ball, Friction::None, GRAVITY)?;
     let q = DQuat::from_rotation_x(THETA0);
-    let omega = q * DVec3::new(0.0, 0.0, SPIN0);
-    let start = match friction {
-        Friction::Rolling => top.try_rolling_state_on_ground(q, omega)?,
-        _ => top.try_state_on_ground(q, omega, DVec2::ZERO)?,
-    };
-    Ok((top, start))
+    let start = placer.try_state_on_ground(q, q * DVec3::new(0.0, 0.0, SPIN0), DVec2::ZERO)?;
+    TableMotion::try_new(
+        body,
+        start,
+        AdaptiveTolerance::try_new(tolerance, tolerance)?,
+    )
 }
 
 /// The symmetry axis (towards the stem) in world axes.
@@ -66,147 +78,175 @@ pub fn tilt(state: &GroundTopState) -> f64 {
     axis(state).z.clamp(-1.0, 1.0).acos()
 }
 
-/// What has happened so far.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Events {
-    /// The first time the axis passed the horizontal going down, s.
-    pub inverted_at: Option<f64>,
-    /// The time the stem's ball reached the floor (the library's
-    /// [`DynamicsError::ContactTouchdown`]) and the tilt then, s and rad.
-    pub stem_touch: Option<(f64, f64)>,
-    /// When the ball left the floor (the run stops there), s.
-    pub lift_off: Option<f64>,
+/// Which contacts touch the table (closed: slipping or sticking).
+pub fn touching(modes: &[ContactMode]) -> [bool; 2] {
+    [0, 1].map(|i| modes.get(i).is_some_and(|m| *m != ContactMode::Open))
 }
 
-/// A run in progress: the state, the time, the events and the drift of
-/// the invariants.
+/// The largest relative change of Jellett's λ about one sphere while it
+/// alone touched, and how long it touched alone.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct JellettWatch {
+    /// λ when this sphere began to touch alone (None: not touching alone).
+    pub start: Option<f64>,
+    /// max |λ − λ_start| / |λ_start| over the phases where it touched alone.
+    pub drift: f64,
+    /// Time it touched alone, s.
+    pub time_alone: f64,
+}
+
+/// A run in progress: the library's motion, the instants observed so far
+/// and the budgets of the energy and of Jellett's λ.
 #[derive(Debug, Clone)]
 pub struct Simulation {
-    /// The top, watching its stem's ball.
-    pub top: GroundTop,
-    /// The same top on its ball alone, stepped once the stem has touched
-    /// down (the demo goes on without modelling the stem's contact).
-    pub ball_only: GroundTop,
-    /// The current state.
-    pub state: GroundTopState,
-    /// The current time, s.
-    pub time: f64,
-    /// The step, s.
-    pub dt: f64,
-    /// What has happened so far.
-    pub events: Events,
-    /// The energy and Jellett's λ at t = 0.
+    /// The library's run.
+    pub run: TableMotion,
+    /// The energy at t = 0, J.
     pub energy0: f64,
-    /// See [`Simulation::energy0`].
-    pub jellett0: f64,
-    /// max |λ − λ₀| / |λ₀| so far.
-    pub jellett_drift: f64,
-    /// The largest one-step rise of the energy so far, relative to E₀
-    /// (negative: it fell in every step).
+    /// The largest rise of the energy between two observed instants, J
+    /// (−∞ before the first).
     pub energy_rise: f64,
-    steps: u64,
+    /// The times the axis passed the horizontal (either way: nutating, it
+    /// goes back and forth before it stays below) while inverting, until
+    /// the stem first touches, s.
+    pub horizontal: Vec<f64>,
+    /// Jellett's λ about the ball (#0) and the stem (#1).
+    pub jellett: [JellettWatch; 2],
+    /// Observed instants: (t, which contacts touch) after each, for the
+    /// chart's strip.
+    pub touching_history: Vec<(f64, [bool; 2])>,
+    /// The energy at the last observed instant, J.
+    last_energy: f64,
+    /// The time of the last observed instant, s.
+    last_time: f64,
 }
 
 impl Simulation {
-    /// A run of `top` from `start` at t = 0 in steps of `dt`.
-    ///
-    /// # Errors
-    /// None in practice (an empty list of further contacts is accepted).
-    pub fn new(top: GroundTop, start: GroundTopState, dt: f64) -> Result<Self, DynamicsError> {
-        Ok(Self {
-            ball_only: top.clone().try_with_other_contacts(&[])?,
-            state: start,
-            time: 0.0,
-            dt,
-            events: Events::default(),
-            energy0: top.energy(&start),
-            jellett0: top.jellett(&start),
-            top,
-            jellett_drift: 0.0,
+    /// Starts observing `run` (at t = 0).
+    pub fn new(run: TableMotion) -> Self {
+        let energy0 = run.body().energy(run.state());
+        let mut sim = Self {
+            energy0,
             energy_rise: f64::NEG_INFINITY,
-            steps: 0,
-        })
+            horizontal: Vec::new(),
+            jellett: [JellettWatch::default(); 2],
+            touching_history: Vec::new(),
+            last_energy: energy0,
+            last_time: 0.0,
+            run,
+        };
+        sim.observe();
+        sim
     }
 
-    /// Whether the ball has left the floor (nothing more to step).
-    pub fn stopped(&self) -> bool {
-        self.events.lift_off.is_some()
+    /// The time reached, s.
+    pub fn time(&self) -> f64 {
+        self.run.time()
     }
 
-    /// The relative change of Jellett's λ now: (λ − λ₀)/|λ₀|.
-    pub fn jellett_change(&self) -> f64 {
-        (self.top.jellett(&self.state) - self.jellett0) / self.jellett0.abs()
+    /// The state now.
+    pub fn state(&self) -> &GroundTopState {
+        self.run.state()
     }
 
-    /// The top being stepped: watching the stem until it touches down,
-    /// the ball alone after.
-    fn active(&self) -> &GroundTop {
-        if self.events.stem_touch.is_none() {
-            &self.top
-        } else {
-            &self.ball_only
-        }
+    /// E/E₀ now.
+    pub fn energy_ratio(&self) -> f64 {
+        self.run.body().energy(self.run.state()) / self.energy0
     }
 
-    /// One RK4 step of `dt` (nothing after a lift-off). The inversion is
-    /// located inside the step by bisection on the step size: the RK4 step
-    /// of size τ from the step's start (the method's own continuation) is
-    /// bisected for the sign change of the axis' height. When the library
-    /// reports the stem's touchdown, its time and the tilt there are
-    /// recorded and the step is taken again from its start on the ball
-    /// alone (the same RK4 step: the trajectory is the ball-only one).
+    /// The first time the axis passed the horizontal, s.
+    pub fn horizontal_at(&self) -> Option<f64> {
+        self.horizontal.first().copied()
+    }
+
+    /// Which contacts touch now.
+    pub fn touching(&self) -> [bool; 2] {
+        touching(&self.run.modes())
+    }
+
+    /// The library's events so far.
+    pub fn events(&self) -> &[TableEvent] {
+        self.run.events()
+    }
+
+    /// Advances to `t` (exactly), stopping at each of the library's events
+    /// on the way to observe the state there.
     ///
     /// # Errors
-    /// The library's errors other than a lift-off (which is recorded in
-    /// [`Events::lift_off`] and stops the run) and the stem's touchdown.
-    pub fn step(&mut self) -> Result<(), DynamicsError> {
-        if self.stopped() {
-            return Ok(());
-        }
-        let before = self.state;
-        let (t0, e_before) = (self.time, self.top.energy(&before));
-        let mut state = self.state;
-        let mut result = self.active().try_step(&mut state, t0, self.dt);
-        self.state = state;
-        if let Err(DynamicsError::ContactTouchdown { time, .. }) = result {
-            self.events.stem_touch = Some((time, tilt(&self.state)));
-            self.state = before;
-            result = self.ball_only.try_step(&mut self.state, t0, self.dt);
-        }
-        match result {
-            Ok(()) => {}
-            Err(DynamicsError::ContactLost { time, .. }) => {
-                self.events.lift_off = Some(time);
-                return Ok(());
+    /// The library's errors (a step that cannot be made accurate, an
+    /// indeterminate contact problem).
+    pub fn advance_to(&mut self, t: f64) -> Result<(), DynamicsError> {
+        while self.run.time() < t {
+            let before = self.run.clone();
+            self.run.try_advance_until_event(t)?;
+            // The inversion's passages: until the stem first touches.
+            let inverting = !self.touching_history.iter().any(|(_, c)| c[1]);
+            if inverting && (axis(before.state()).z > 0.0) != (axis(self.run.state()).z > 0.0) {
+                self.horizontal
+                    .push(horizontal_passage(before, self.run.time())?);
             }
-            Err(e) => return Err(e),
-        }
-        self.steps += 1;
-        self.time = self.steps as f64 * self.dt;
-        let e = self.top.energy(&self.state);
-        self.energy_rise = self.energy_rise.max((e - e_before) / self.energy0);
-        self.jellett_drift = self.jellett_drift.max(self.jellett_change().abs());
-        if self.events.inverted_at.is_none() && axis(&before).z > 0.0 && axis(&self.state).z <= 0.0
-        {
-            self.events.inverted_at = Some(t0 + self.crossing_in(&before, t0)?);
+            self.observe();
         }
         Ok(())
     }
 
-    /// The τ ∈ (0, dt] where the axis' height along the RK4 step from
-    /// `before` (at `t0`) reaches zero: positive at 0, not positive at dt.
-    fn crossing_in(&self, before: &GroundTopState, t0: f64) -> Result<f64, DynamicsError> {
-        let (mut lo, mut hi) = (0.0, self.dt);
-        for _ in 0..BISECTIONS {
-            let mid = 0.5 * (lo + hi);
-            let mut s = *before;
-            self.ball_only.try_step(&mut s, t0, mid)?;
-            if axis(&s).z > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
+    /// Books the state now: the energy's rise, Jellett's λ, the contacts.
+    fn observe(&mut self) {
+        let (t, state) = (self.run.time(), *self.run.state());
+        let energy = self.run.body().energy(&state);
+        if t > self.last_time || self.touching_history.is_empty() {
+            self.energy_rise = self.energy_rise.max(energy - self.last_energy);
+        }
+        let touching = self.touching();
+        for (i, watch) in self.jellett.iter_mut().enumerate() {
+            let lambda = self.run.body().jellett(&state, i);
+            let alone = touching[i] && !touching[1 - i];
+            // Measured at the instants where it still touches alone (an
+            // event that ends the phase may change λ: an impact does).
+            match (watch.start, alone) {
+                (Some(start), true) => {
+                    watch.drift = watch.drift.max(((lambda - start) / start).abs());
+                    watch.time_alone += t - self.last_time;
+                }
+                (Some(_), false) => watch.start = None,
+                (None, true) => watch.start = Some(lambda),
+                (None, false) => {}
             }
         }
-        Ok(0.5 * (lo + hi))
+        if self
+            .touching_history
+            .last()
+            .is_none_or(|&(_, c)| c != touching)
+        {
+            self.touching_history.push((t, touching));
+        }
+        self.last_energy = energy;
+        self.last_time = t;
     }
+}
+
+/// The instant in `(before.time(), t_end]` where the axis passes the
+/// horizontal (its height positive at one end, not at the other), by
+/// bisection: each trial is the library's run from `before` to the trial
+/// time.
+///
+/// # Errors
+/// The library's.
+fn horizontal_passage(before: TableMotion, t_end: f64) -> Result<f64, DynamicsError> {
+    let (mut lo, mut hi) = (before.time(), t_end);
+    let above_at_start = axis(before.state()).z > 0.0;
+    for _ in 0..BISECTIONS {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let mut trial = before.clone();
+        trial.try_advance_to(mid)?;
+        if (axis(trial.state()).z > 0.0) == above_at_start {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(hi)
 }
