@@ -652,7 +652,11 @@ impl TableMotion {
                 self.time,
             )?;
             for &(i, approach, rebound, approached) in &outcome.speeds {
-                if approached && approach > v_res {
+                // An impact is a shape that was off the table striking it;
+                // a closed contact that takes part (its drift towards the
+                // table ~ the tolerance) is no event of its own.
+                let was_open = self.modes[i].mode == ContactMode::Open;
+                if was_open && approached && approach > v_res {
                     struck[i] = true;
                     self.events.push(TableEvent {
                         time: self.time,
