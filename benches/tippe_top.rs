@@ -122,8 +122,8 @@ fn world_frames(c: &mut Criterion) {
     for (name, friction) in frictions() {
         group.bench_function(name, |b| {
             b.iter(|| {
-                let mut world = World::try_new(DVec3::new(0.0, 0.0, -tippe_top::G), 1.0 / 60.0)
-                    .unwrap();
+                let mut world =
+                    World::try_new(DVec3::new(0.0, 0.0, -tippe_top::G), 1.0 / 60.0).unwrap();
                 let id = world
                     .add(tippe_top::world_builder(friction).try_build().unwrap())
                     .unwrap();

@@ -215,7 +215,10 @@ fn stiff_friction_in_the_world_is_followed_without_an_energy_rise() {
         before = e;
         drift = drift.max((jellett(&world, id) / l0 - 1.0).abs());
     }
-    eprintln!("μ = 1000 to {} s: largest energy rise {rise:.1e}, λ drift {drift:.1e}", world.time());
+    eprintln!(
+        "μ = 1000 to {} s: largest energy rise {rise:.1e}, λ drift {drift:.1e}",
+        world.time()
+    );
     assert!(rise <= 0.0, "E rose by {rise:e} of E₀");
     assert!(drift < 1e-9, "λ drifted by {drift:e}");
 }

@@ -144,7 +144,10 @@ fn a_driven_ground_body_follows_the_loaded_contact_model() {
         world.advance_steps(6).unwrap();
         reference_to(&plain, &mut reference, t0, world.time());
         let (d_plain, _) = gap(&world.state(id).unwrap(), &plain, &reference);
-        eprintln!("{}: driven {d:.1e}, then plain {d_plain:.1e}", friction.model());
+        eprintln!(
+            "{}: driven {d:.1e}, then plain {d_plain:.1e}",
+            friction.model()
+        );
         assert!(d < FOLLOWS && d_plain < FOLLOWS, "{d:e}, {d_plain:e}");
     }
 }

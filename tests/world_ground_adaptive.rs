@@ -48,12 +48,7 @@ fn generator_row(file: &str, name: &str) -> Vec<f64> {
 /// `t_ref − BRACKET`, asserting that `f` of body `id` keeps its sign there
 /// (no earlier crossing), then reads `f` at `t_ref ∓ BRACKET` and returns
 /// the crossing between them (linear interpolation).
-fn crossing_near(
-    world: &mut World,
-    id: BodyId,
-    t_ref: f64,
-    f: impl Fn(&World) -> f64,
-) -> f64 {
+fn crossing_near(world: &mut World, id: BodyId, t_ref: f64, f: impl Fn(&World) -> f64) -> f64 {
     let sign = f(world).signum();
     let dt = world.dt();
     while world.time() + dt < t_ref - BRACKET {
@@ -69,7 +64,10 @@ fn crossing_near(
     let f0 = f(world);
     world.advance_to(t1).unwrap();
     let f1 = f(world);
-    assert!(f0 * sign > 0.0 && f1 * sign < 0.0, "no crossing within ±{BRACKET} s of {t_ref} s: {f0}, {f1}");
+    assert!(
+        f0 * sign > 0.0 && f1 * sign < 0.0,
+        "no crossing within ±{BRACKET} s of {t_ref} s: {f0}, {f1}"
+    );
     t0 + (t1 - t0) * f0 / (f0 - f1)
 }
 
@@ -91,7 +89,9 @@ fn the_viscous_tippe_top_passes_the_horizontal_at_the_generators_time_at_any_dt(
         let id = world.add(body).unwrap();
         let t = crossing_near(&mut world, id, t_ref, |w| axis_z(w, id));
         let error = t / t_ref - 1.0;
-        eprintln!("viscous tippe top, dt {dt:e}: horizontal at {t:.12} s vs {t_ref:.12} s ({error:.1e})");
+        eprintln!(
+            "viscous tippe top, dt {dt:e}: horizontal at {t:.12} s vs {t_ref:.12} s ({error:.1e})"
+        );
         assert!(error.abs() < 1e-8, "dt {dt}: {t} vs {t_ref}");
     }
 }
@@ -135,7 +135,11 @@ fn the_rattleback_reverses_at_the_generators_time_at_any_dt() {
 fn the_world_tolerance_reaches_bodies_on_the_ground() {
     let mut world = World::try_new(GRAVITY, 1.0 / 60.0).unwrap();
     let id = world
-        .add(world_builder(Friction::try_viscous(MU).unwrap()).try_build().unwrap())
+        .add(
+            world_builder(Friction::try_viscous(MU).unwrap())
+                .try_build()
+                .unwrap(),
+        )
         .unwrap();
     let tolerance_of = |world: &World| match world.plan(id) {
         Some(Plan::OnGround { tolerance, .. }) => *tolerance,
@@ -147,11 +151,18 @@ fn the_world_tolerance_reaches_bodies_on_the_ground() {
         .unwrap();
     assert_eq!(tolerance_of(&world), AdaptiveTolerance::new(1e-10, 1e-10));
     let text = world.plan(id).unwrap().to_string();
-    assert!(text.contains("error-controlled steps at rtol 1e-10"), "{text}");
+    assert!(
+        text.contains("error-controlled steps at rtol 1e-10"),
+        "{text}"
+    );
     // Clamped: no looser than 1e-8, no tighter than 1e-13.
-    world.set_tolerance(Some(Tolerance::new(1.0, 10.0))).unwrap();
+    world
+        .set_tolerance(Some(Tolerance::new(1.0, 10.0)))
+        .unwrap();
     assert_eq!(tolerance_of(&world), AdaptiveTolerance::new(1e-8, 1e-8));
-    world.set_tolerance(Some(Tolerance::new(1e-12, 10.0))).unwrap();
+    world
+        .set_tolerance(Some(Tolerance::new(1e-12, 10.0)))
+        .unwrap();
     assert_eq!(tolerance_of(&world), AdaptiveTolerance::new(1e-13, 1e-13));
     world.set_tolerance(None).unwrap();
     assert_eq!(tolerance_of(&world), AdaptiveTolerance::new(1e-11, 1e-11));
@@ -204,7 +215,9 @@ fn a_world_tolerance_bounds_the_attitude_error_of_bodies_on_the_ground() {
                 let dq = s.world_from_body.normalize().conjugate() * q.normalize();
                 worst = worst.max(2.0 * dq.xyz().length().asin());
             }
-            eprintln!("{scenario}: tolerance {attitude:e} rad over {horizon} s: worst {worst:.1e} rad");
+            eprintln!(
+                "{scenario}: tolerance {attitude:e} rad over {horizon} s: worst {worst:.1e} rad"
+            );
             assert!(worst <= attitude, "{scenario}, {attitude:e}: {worst:e}");
         }
     }

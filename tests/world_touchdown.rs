@@ -13,8 +13,8 @@ mod common;
 
 use glam::{DQuat, DVec3};
 use kreisel::dynamics::{
-    AdaptiveTolerance, Body, BodyBuilder, ContactShape, DynamicsError, Friction, MAX_OTHER_CONTACTS, Plan,
-    SphereContact, World,
+    AdaptiveTolerance, Body, BodyBuilder, ContactShape, DynamicsError, Friction,
+    MAX_OTHER_CONTACTS, Plan, SphereContact, World,
 };
 
 use common::tippe_top::{

@@ -60,3 +60,13 @@ def test_a_step_that_resolves_the_motion_runs(tmp_path):
     assert result["t"][-1] == pytest.approx(0.5)
     # the centre of mass stays above the table, the attitude a unit quaternion
     assert (result["z"] > 0.0).all()
+
+
+def test_friction_too_stiff_for_a_fixed_step_runs_without_an_energy_rise(tmp_path):
+    # mu = 1000: fixed RK4 steps gained energy (issue 25: a stop); the
+    # error-controlled steps follow the stiff field (slowly: the first 0.1 s).
+    path = scene(tmp_path, mu="1000", duration="0.1", output_interval="0.01")
+    result = kreisel.simulate(path)
+    energy = result["energy"]
+    assert len(energy) == 11
+    assert (energy[1:] <= energy[:-1]).all()

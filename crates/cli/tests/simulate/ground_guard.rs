@@ -35,7 +35,11 @@ fn generator_sample(t: f64) -> ([f64; 3], [f64; 4]) {
     let row: Vec<f64> = text
         .lines()
         .filter_map(|l| l.strip_prefix("sample,"))
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect::<Vec<f64>>())
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse().unwrap())
+                .collect::<Vec<f64>>()
+        })
         .find(|x| x[0] == t)
         .expect("the generator's sample");
     ([row[1], row[2], row[3]], [row[7], row[8], row[9], row[10]])
@@ -71,8 +75,12 @@ fn a_game_frame_runs_to_the_generators_state_and_final_tilt() {
     assert_eq!(run.stdout.lines().count(), 1 + 181);
     let row = last_row(&run.stdout);
     let (r, q) = generator_sample(3.0);
-    let dr = (0..3).map(|i| (row[1 + i] - r[i]).abs()).fold(0.0, f64::max);
-    let dq = (0..4).map(|i| (row[4 + i] - q[i]).abs()).fold(0.0, f64::max);
+    let dr = (0..3)
+        .map(|i| (row[1 + i] - r[i]).abs())
+        .fold(0.0, f64::max);
+    let dq = (0..4)
+        .map(|i| (row[4 + i] - q[i]).abs())
+        .fold(0.0, f64::max);
     eprintln!("1/60 s at t = {}: |Δr| {dr:.1e} m, |Δq| {dq:.1e}", row[0]);
     assert!((row[0] - 3.0).abs() < 1e-12, "{}", row[0]);
     assert!(dr < 1e-9 && dq < 1e-7, "{dr:e} m, {dq:e}");
@@ -100,13 +108,34 @@ fn a_game_frame_runs_to_the_generators_state_and_final_tilt() {
     assert!(tilt_a.to_degrees() > 120.0, "{}", tilt_a.to_degrees());
 }
 
-// Measured: see the eprintln line.
+/// μ = 1000: fixed RK4 steps gained 0.32 % energy over the scene (exit 0,
+/// before the guard), then stopped at t = 1e-4 s ("the energy rose"). The
+/// error-controlled steps follow the stiff field at its explicit stability
+/// limit (steps of about 1e-7 s: slow, the first 0.1 s here) without an
+/// energy rise.
 #[test]
-fn friction_too_stiff_for_an_explicit_step_follows_or_stops_typed() {
-    let path = tippe("guard_stiff.toml", &[("mu", "1000")]);
+fn friction_too_stiff_for_a_fixed_step_runs_without_an_energy_rise() {
+    let path = tippe(
+        "guard_stiff.toml",
+        &[
+            ("mu", "1000"),
+            ("duration", "0.1"),
+            ("output_interval", "0.01"),
+        ],
+    );
     let run = simulate_file(&path, &["--columns", "t,energy"]);
-    let message = run.stderr.lines().last().unwrap_or_default();
-    eprintln!("mu = 1000: exit {:?}, {message}", run.code);
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let energies: Vec<f64> = run
+        .stdout
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(1).unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(energies.len(), 11);
+    assert!(
+        energies.windows(2).all(|w| w[1] <= w[0]),
+        "the energy rose: {energies:?}"
+    );
 }
 
 #[test]

@@ -124,7 +124,8 @@ pub(crate) fn local_tolerance(tolerance: Option<crate::Tolerance>) -> AdaptiveTo
         (TOLERANCE_TO_LOCAL * t.attitude()).clamp(MIN_LOCAL_TOLERANCE, MAX_LOCAL_TOLERANCE)
     });
     // In (0, 1) by the clamp: never an error.
-    AdaptiveTolerance::try_new(tol, tol).unwrap_or(AdaptiveTolerance::new(GROUND_TOLERANCE, GROUND_TOLERANCE))
+    AdaptiveTolerance::try_new(tol, tol)
+        .unwrap_or(AdaptiveTolerance::new(GROUND_TOLERANCE, GROUND_TOLERANCE))
 }
 
 /// `g` of a world whose gravity is `(0, 0, −g)`, `g > 0`.

@@ -320,8 +320,14 @@ impl fmt::Display for Plan {
                 )?;
                 match watched {
                     0 => write!(f, "lift-off stops the run)"),
-                    1 => write!(f, "1 further contact watched; lift-off or a touchdown stops the run)"),
-                    n => write!(f, "{n} further contacts watched; lift-off or a touchdown stops the run)"),
+                    1 => write!(
+                        f,
+                        "1 further contact watched; lift-off or a touchdown stops the run)"
+                    ),
+                    n => write!(
+                        f,
+                        "{n} further contacts watched; lift-off or a touchdown stops the run)"
+                    ),
                 }
             }
             Plan::OnTable { contacts } => write!(
