@@ -267,6 +267,17 @@ pub enum DynamicsError {
         /// The kinetic energy the impact law gave, J.
         after: f64,
     },
+    /// The set-valued contact problem of a body on the table at an event
+    /// has no solution the block solver finds (the slip direction at a
+    /// contact that starts to slip, or the sweeps over several contacts,
+    /// did not settle).
+    #[error(
+        "the contact problem at t = {time} s has no solution the solver finds (the slip direction or the sweeps over the contacts did not settle)"
+    )]
+    ContactUnsolved {
+        /// The time, s.
+        time: f64,
+    },
     /// The contact modes of a body on the table change again and again at
     /// one instant without the motion advancing (no consistent mode).
     #[error("the contact modes at t = {time} s change {count} times without the motion advancing")]

@@ -251,8 +251,7 @@ mod sphere_contact;
 mod touchdown;
 
 pub(crate) use self::adaptive::{
-    A as DOPRI_A, B_HAT as DOPRI_B_HAT, C as DOPRI_C, Controlled, MAX_GROWTH, MIN_SHRINK,
-    SAFETY,
+    A as DOPRI_A, B_HAT as DOPRI_B_HAT, C as DOPRI_C, Controlled, MAX_GROWTH, MIN_SHRINK, SAFETY,
 };
 pub use self::adaptive::{AdaptiveStats, AdaptiveTolerance};
 pub(crate) use self::applied_loads::AppliedLoads;

@@ -213,7 +213,9 @@ const MAX_SWEEPS: usize = 2000;
 ///
 /// # Errors
 /// [`DynamicsError::ContactIndeterminate`] for a slipping block whose
-/// normal coefficient is not positive, or no convergence.
+/// normal coefficient is not positive (Painlevé);
+/// [`DynamicsError::ContactUnsolved`] when the sweeps or a slip direction
+/// do not settle.
 pub(crate) fn solve_blocks(
     blocks: &[Block],
     y_free: &[[f64; 4]],
@@ -254,7 +256,7 @@ pub(crate) fn solve_blocks(
             return Ok(x);
         }
     }
-    Err(indeterminate(f64::NAN))
+    Err(unsolved())
 }
 
 /// One block exactly: separation, sticking, or slipping on the cone.
@@ -269,7 +271,7 @@ fn solve_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Result<[f64; 4], 
         return Ok(x);
     }
     if let Some(d) = b.slipping {
-        return slip_along(b, g, y0, d).ok_or_else(|| indeterminate(f64::NAN));
+        return slip_along(b, g, y0, d);
     }
     // Sticking: y = 0 in every component.
     let mut a = [0.0; 16];
@@ -293,9 +295,7 @@ fn solve_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Result<[f64; 4], 
         // Slipping: start from the direction opposite the sticking force.
         let mut d = -t.normalize_or_zero();
         for _ in 0..MAX_SWEEPS {
-            let Some(xs) = slip_along(b, g, y0, d) else {
-                return Err(indeterminate(f64::NAN));
-            };
+            let xs = slip_along(b, g, y0, d)?;
             let y_t = tangential(g, y0, &xs, n);
             let next = y_t.normalize_or_zero();
             if next == DVec3::ZERO || (next - d).length() <= 1e-14 {
@@ -305,26 +305,84 @@ fn solve_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Result<[f64; 4], 
             // directions when the block is far from isotropic.
             d = (d + next).normalize_or(next);
         }
+        // The direction did not settle (a block far from isotropic):
+        // the projected iteration instead, slower but steady.
+        return prox_block(b, g, y0).ok_or_else(unsolved);
     }
-    Err(indeterminate(f64::NAN))
+    // A singular sticking block: no friction response to solve with.
+    Err(indeterminate(0.0))
+}
+
+/// The block by the projected iteration of Alart & Curnier's
+/// augmented Lagrangian form (Studer & Glocker's successive inclusions):
+///
+/// ```text
+/// x_N ← max(0, x_N − r_N y_N),   x_T ← proj_{|x_T| ≤ μ x_N}(x_T − r_T y_T),   y = y0 + G x
+/// r_N = 1/G_NN,  r_T = 1/trace(G_TT)
+/// ```
+///
+/// until the change is below rounding; `None` when it does not settle.
+fn prox_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Option<[f64; 4]> {
+    let n = b.size;
+    let r_n = 1.0 / g[0][0];
+    let r_t = 1.0 / (1..n).map(|k| g[k][k]).sum::<f64>();
+    let mut x = [0.0; 4];
+    for _ in 0..200_000 {
+        let y = |x: &[f64; 4], r: usize| y0[r] + (0..n).map(|k| g[r][k] * x[k]).sum::<f64>();
+        let x_n = (x[0] - r_n * y(&x, 0)).max(0.0);
+        let mut next = x;
+        next[0] = x_n;
+        let mut t = DVec3::ZERO;
+        for c in 0..n - 1 {
+            t[c] = x[1 + c] - r_t * y(&next, 1 + c);
+        }
+        let limit = b.mu * x_n;
+        if t.length() > limit {
+            t = t.normalize_or_zero() * limit;
+        }
+        for c in 0..n - 1 {
+            next[1 + c] = t[c];
+        }
+        let change = (0..n).map(|k| (next[k] - x[k]).abs()).fold(0.0, f64::max);
+        let size = (0..n).map(|k| next[k].abs()).fold(0.0, f64::max);
+        x = next;
+        if change <= SWEEP_TOLERANCE * size.max(f64::MIN_POSITIVE) {
+            return Some(x);
+        }
+    }
+    None
+}
+
+/// [`DynamicsError::ContactUnsolved`] (its time NaN: the caller knows it).
+fn unsolved() -> DynamicsError {
+    DynamicsError::ContactUnsolved { time: f64::NAN }
 }
 
 /// The block slipping along `d`: `x_T = −μ x_N d`, `y_N = 0`.
-fn slip_along(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4], d: DVec3) -> Option<[f64; 4]> {
+///
+/// # Errors
+/// [`DynamicsError::ContactIndeterminate`] with the normal coefficient
+/// `κ = G_NN − μ G_NT d` when it is not positive (Painlevé).
+fn slip_along(
+    b: &Block,
+    g: &[[f64; 4]; 4],
+    y0: &[f64; 4],
+    d: DVec3,
+) -> Result<[f64; 4], DynamicsError> {
     let n = b.size;
     let mut kappa = g[0][0];
     for c in 0..n - 1 {
         kappa -= b.mu * g[0][1 + c] * d[c];
     }
     if kappa.is_nan() || kappa <= 0.0 {
-        return None;
+        return Err(indeterminate(kappa));
     }
     let mut x = [0.0; 4];
     x[0] = (-y0[0] / kappa).max(0.0);
     for c in 0..n - 1 {
         x[1 + c] = -b.mu * x[0] * d[c];
     }
-    Some(x)
+    Ok(x)
 }
 
 /// The friction components of `y = y0 + G x` for one block.

@@ -140,6 +140,7 @@ pub(crate) fn at_time(e: DynamicsError, time: f64) -> DynamicsError {
         DynamicsError::ContactIndeterminate { compliance, .. } => {
             DynamicsError::ContactIndeterminate { time, compliance }
         }
+        DynamicsError::ContactUnsolved { .. } => DynamicsError::ContactUnsolved { time },
         other => other,
     }
 }
