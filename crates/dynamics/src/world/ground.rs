@@ -119,13 +119,17 @@ pub(crate) const MIN_LOCAL_TOLERANCE: f64 = 1e-13;
 pub(crate) const MAX_LOCAL_TOLERANCE: f64 = 1e-8;
 
 /// The accuracy of a ground body's steps under the world's `tolerance`.
-pub(crate) fn local_tolerance(tolerance: Option<crate::Tolerance>) -> AdaptiveTolerance {
+///
+/// # Errors
+/// None in practice: the clamp keeps it within (0, 1), which
+/// [`AdaptiveTolerance::try_new`] accepts.
+pub(crate) fn local_tolerance(
+    tolerance: Option<crate::Tolerance>,
+) -> Result<AdaptiveTolerance, DynamicsError> {
     let tol = tolerance.map_or(GROUND_TOLERANCE, |t| {
         (TOLERANCE_TO_LOCAL * t.attitude()).clamp(MIN_LOCAL_TOLERANCE, MAX_LOCAL_TOLERANCE)
     });
-    // In (0, 1) by the clamp: never an error.
     AdaptiveTolerance::try_new(tol, tol)
-        .unwrap_or(AdaptiveTolerance::new(GROUND_TOLERANCE, GROUND_TOLERANCE))
 }
 
 /// `g` of a world whose gravity is `(0, 0, −g)`, `g > 0`.
@@ -344,7 +348,7 @@ impl World {
             });
         }
         let omega_world = q.normalize() * body.omega_body();
-        let tolerance = local_tolerance(self.tolerance);
+        let tolerance = local_tolerance(self.tolerance)?;
         let ground = GroundMotion::try_new(&body, (self.gravity, tolerance), q, omega_world)?;
         let plan = ground_plan(&ground);
         let baseline = ground.principal_state();
@@ -369,13 +373,17 @@ impl World {
 
     /// Gives body `index`, on the ground, the accuracy of the world's
     /// tolerance (its plan says it); nothing for another body.
-    pub(super) fn retune_ground(&mut self, index: usize) {
-        let tolerance = local_tolerance(self.tolerance);
+    ///
+    /// # Errors
+    /// As [`local_tolerance`].
+    pub(super) fn retune_ground(&mut self, index: usize) -> Result<(), DynamicsError> {
+        let tolerance = local_tolerance(self.tolerance)?;
         let entry = &mut self.entries[index];
         if let Motion::Ground(ground) = &mut entry.motion {
             ground.set_tolerance(tolerance);
             entry.plan = ground_plan(ground);
         }
+        Ok(())
     }
 
     /// Gives body `index`, on the ground, the rotational state `state` now:

@@ -671,7 +671,7 @@ impl World {
     fn replan_all(&mut self) -> Result<(), DynamicsError> {
         for index in 0..self.entries.len() {
             if matches!(self.entries[index].motion, Motion::Ground(_)) {
-                self.retune_ground(index);
+                self.retune_ground(index)?;
                 continue;
             }
             if matches!(self.entries[index].motion, Motion::Table(_)) {
