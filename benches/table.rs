@@ -34,7 +34,7 @@ fn tippe_top_frames(c: &mut Criterion) {
         .sample_size(10)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(3));
-    for rtol in [1e-8, 1e-10] {
+    for rtol in [1e-8, 1e-9, 1e-10] {
         group.bench_function(format!("rtol_{rtol:e}"), |b| {
             b.iter(|| {
                 let mut run = table_motion(contensou_law(), black_box(rtol));
