@@ -16,17 +16,18 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use glam::{DMat3, DQuat, DVec3};
-use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactShape, GroundTopState, SphereContact, TableBody,
-    TableContact, TableMotion,
-};
 
 #[allow(dead_code)]
 #[path = "../tests/common/tippe_top.rs"]
 mod tippe_top;
 
 use tippe_top::{contensou_law, table_motion};
+
+#[allow(dead_code)]
+#[path = "../tests/common/bouncing_ball.rs"]
+mod bouncing_ball;
+
+use bouncing_ball::dropped_ball;
 
 fn tippe_top_frames(c: &mut Criterion) {
     let mut group = c.benchmark_group("table_tippe_top_stem_8s_at_1_60");
@@ -51,25 +52,9 @@ fn tippe_top_frames(c: &mut Criterion) {
 fn ball_to_rest(c: &mut Criterion) {
     let mut group = c.benchmark_group("table_ball_e0.9_to_rest");
     group.sample_size(20);
-    let shape = ContactShape::Sphere(SphereContact::try_new(0.1, DVec3::ZERO).unwrap());
-    let law = ContactLaw::new(0.0).try_with_restitution(0.9).unwrap();
-    let body = TableBody::try_new(
-        0.5,
-        DMat3::from_diagonal(DVec3::splat(0.002)),
-        vec![TableContact { shape, law }],
-        9.81,
-    )
-    .unwrap();
-    let start = GroundTopState {
-        com_world: DVec3::new(0.0, 0.0, 1.0),
-        velocity_world: DVec3::ZERO,
-        world_from_body: DQuat::IDENTITY,
-        l_world: DVec3::ZERO,
-    };
     group.bench_function("rtol_1e-12", |b| {
         b.iter(|| {
-            let tol = AdaptiveTolerance::new(1e-12, 1e-12);
-            let mut run = TableMotion::try_new(body.clone(), start, tol).unwrap();
+            let mut run = dropped_ball(black_box(1e-12));
             run.try_advance_to(10.0).unwrap();
             assert!(run.is_resting());
             run

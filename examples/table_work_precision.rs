@@ -24,17 +24,19 @@
 use std::io::Write;
 use std::time::Instant;
 
-use glam::{DMat3, DQuat, DVec3};
-use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactShape, GroundTopState, SphereContact, TableBody,
-    TableContact, TableEventKind, TableMotion,
-};
+use kreisel::dynamics::{TableEventKind, TableMotion};
 
 #[allow(dead_code)]
 #[path = "../tests/common/tippe_top.rs"]
 mod tippe_top;
 
 use tippe_top::{contensou_law, distance, flat, table_motion};
+
+#[allow(dead_code)]
+#[path = "../tests/common/bouncing_ball.rs"]
+mod bouncing_ball;
+
+use bouncing_ball::dropped_ball;
 
 /// Tolerances (rtol = atol).
 const TOLERANCES: [f64; 7] = [1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12];
@@ -51,24 +53,9 @@ struct Point {
 
 /// The ball's run to 10 s: its impacts' and accumulation point's error.
 fn ball(rtol: f64) -> Point {
-    let (g, r, e) = (9.81, 0.1, 0.9);
-    let shape = ContactShape::Sphere(SphereContact::try_new(r, DVec3::ZERO).unwrap());
-    let law = ContactLaw::new(0.0).try_with_restitution(e).unwrap();
-    let body = TableBody::try_new(
-        0.5,
-        DMat3::from_diagonal(DVec3::splat(0.002)),
-        vec![TableContact { shape, law }],
-        g,
-    )
-    .unwrap();
-    let start = GroundTopState {
-        com_world: DVec3::new(0.0, 0.0, 1.0),
-        velocity_world: DVec3::ZERO,
-        world_from_body: DQuat::IDENTITY,
-        l_world: DVec3::ZERO,
-    };
+    let (g, r, e) = (bouncing_ball::G, bouncing_ball::R, bouncing_ball::E);
     let clock = Instant::now();
-    let mut run = TableMotion::try_new(body, start, AdaptiveTolerance::new(rtol, rtol)).unwrap();
+    let mut run = dropped_ball(rtol);
     run.try_advance_to(10.0).unwrap();
     let wall_ms = clock.elapsed().as_secs_f64() * 1e3;
     let d = 1.0 - r;

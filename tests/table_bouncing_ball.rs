@@ -8,35 +8,14 @@
 //! `eⁿ v₁` to `R + e²ⁿ d`, strikes again `2 eⁿ v₁/g` later; the bounces
 //! accumulate at `t∞ = t₁ + 2 e v₁/(g (1 − e))`.
 
-use glam::{DMat3, DQuat, DVec3};
-use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactShape, GroundTopState, SphereContact, TableBody,
-    TableContact, TableEventKind, TableMotion,
-};
+mod common;
 
-const G: f64 = 9.81;
-const R: f64 = 0.1;
-const H0: f64 = 1.0;
-const E: f64 = 0.9;
+use kreisel::dynamics::{TableEventKind, TableMotion};
+
+use common::bouncing_ball::{E, G, H0, R, dropped_ball};
 
 fn ball_run(rtol: f64) -> TableMotion {
-    let shape = ContactShape::Sphere(SphereContact::try_new(R, DVec3::ZERO).unwrap());
-    let law = ContactLaw::new(0.0).try_with_restitution(E).unwrap();
-    let m = 0.5;
-    let body = TableBody::try_new(
-        m,
-        DMat3::from_diagonal(DVec3::splat(0.4 * m * R * R)),
-        vec![TableContact { shape, law }],
-        G,
-    )
-    .unwrap();
-    let start = GroundTopState {
-        com_world: DVec3::new(0.0, 0.0, H0),
-        velocity_world: DVec3::ZERO,
-        world_from_body: DQuat::IDENTITY,
-        l_world: DVec3::ZERO,
-    };
-    TableMotion::try_new(body, start, AdaptiveTolerance::new(rtol, rtol)).unwrap()
+    dropped_ball(rtol)
 }
 
 /// `(t₁, v₁)`.

@@ -2,6 +2,7 @@
 //! and meshes of primitive solids ([`shapes`]).
 #![allow(dead_code)]
 
+pub mod bouncing_ball;
 pub mod contact;
 pub mod free_body;
 pub mod heavy_top;
