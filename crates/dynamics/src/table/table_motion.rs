@@ -34,7 +34,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::contact_frame::ContactFrame;
+use super::contact_frame::{ContactFrame, ContactRow};
 use super::contact_problem::{Block, ContactMode, Mode, ModeForces, mode_forces, solve_blocks};
 use super::impact::{at_time, impact, stop_slip};
 use super::{TableBody, TableEvent, TableEventKind};
@@ -375,11 +375,11 @@ impl TableMotion {
                     if mode.mode == ContactMode::Sticking && friction > r1.mu * n {
                         return true;
                     }
-                    if mode.mode == ContactMode::Slipping && r1.friction_dimensions > 0 {
-                        let d0 = super::contact_problem::slip_direction(r0.slip(), mode, floor);
-                        if r1.slip().dot(d0) < 0.0 {
-                            return true;
-                        }
+                    if mode.mode == ContactMode::Slipping
+                        && r1.friction_dimensions > 0
+                        && slip_progress(r0, r1, mode, floor) < 0.0
+                    {
+                        return true;
                     }
                 }
             }
@@ -550,8 +550,7 @@ impl TableMotion {
                     (n.min(r1.mu * n - end.forces.friction[i].length())) / weight
                 }
                 ContactMode::Slipping if r1.friction_dimensions > 0 => {
-                    let d0 = super::contact_problem::slip_direction(r0.slip(), mode, floor);
-                    (n / weight).min(r1.slip().dot(d0) / self.speed)
+                    (n / weight).min(slip_progress(r0, r1, mode, floor) / self.speed)
                 }
                 ContactMode::Slipping => n / weight,
             };
@@ -825,6 +824,22 @@ impl TableMotion {
             });
         }
     }
+}
+
+/// How far a slipping contact's slip at the trial's end `r1` lies along
+/// its direction at the start `r0`: `γ_T(τ) · d₀`, negative once the slip
+/// has reversed (the contact may stick). A slip that has just started
+/// (`|γ_T(0)|` below `floor`, its direction the mode's) is measured from
+/// its start value, the residual the sticking phase left: that residual is
+/// not a reversal.
+fn slip_progress(r0: &ContactRow, r1: &ContactRow, mode: &Mode, floor: f64) -> f64 {
+    let d0 = super::contact_problem::slip_direction(r0.slip(), mode, floor);
+    let residual = if r0.slip().length() > floor {
+        DVec3::ZERO
+    } else {
+        r0.slip()
+    };
+    (r1.slip() - residual).dot(d0)
 }
 
 /// Whether a gap's cubic Hermite over a step of length `h` (from `g0, ġ0`
