@@ -80,6 +80,9 @@ impl ContactLaw {
     /// For `mu` negative or not finite ([`ContactLaw::try_new`] returns
     /// the error instead).
     pub fn new(mu: f64) -> Self {
+        // The documented panic of the `new` half of the `new`/`try_new`
+        // pair, for coefficients written in code; no input path (scene,
+        // World) calls `new`.
         Self::try_new(mu).expect("friction coefficient must be finite and ≥ 0")
     }
 

@@ -325,25 +325,26 @@ impl TableMotion {
         }
         let s0 = self.current.state;
         let mut k = [self.current.derivative; 7];
-        for i in 1..7 {
-            let stage = combine(&s0, &k[..i], &DOPRI_A[i][..i], h);
-            let snap = self.snapshot(stage, self.time + DOPRI_C[i] * h)?;
+        let mut stage = |k: &[Derivative], i: usize| {
+            let state = combine(&s0, &k[..i], &DOPRI_A[i][..i], h);
             self.stats.evaluations += 1;
-            k[i] = snap.derivative;
-            if i == 6 {
-                // FSAL: stage 7 is the fifth-order solution itself.
-                let (y0, y1) = (flat(&s0), flat(&snap.state));
-                let low = flat(&combine(&s0, &k, &DOPRI_B_HAT, h));
-                let mut error: f64 = 0.0;
-                for c in 0..13 {
-                    let bound = self.tolerance.atol() * self.scales[c]
-                        + self.tolerance.rtol() * y0[c].abs().max(y1[c].abs());
-                    error = error.max((y1[c] - low[c]).abs() / bound);
-                }
-                return Ok(Trial { end: snap, error });
-            }
+            self.snapshot(state, self.time + DOPRI_C[i] * h)
+        };
+        for i in 1..6 {
+            k[i] = stage(&k, i)?.derivative;
         }
-        unreachable!("the loop returns at its last stage")
+        // FSAL: stage 7 is the fifth-order solution itself.
+        let end = stage(&k, 6)?;
+        k[6] = end.derivative;
+        let (y0, y1) = (flat(&s0), flat(&end.state));
+        let low = flat(&combine(&s0, &k, &DOPRI_B_HAT, h));
+        let mut error: f64 = 0.0;
+        for c in 0..13 {
+            let bound = self.tolerance.atol() * self.scales[c]
+                + self.tolerance.rtol() * y0[c].abs().max(y1[c].abs());
+            error = error.max((y1[c] - low[c]).abs() / bound);
+        }
+        Ok(Trial { end, error })
     }
 
     /// Whether an event happened between the current snapshot and `end`
