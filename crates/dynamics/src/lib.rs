@@ -117,8 +117,8 @@ pub use stability::{
 };
 pub use state::PrincipalState;
 pub use table::{
-    ContactLaw, ContactMode, DISK_FLAT_TILT, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableBody,
-    TableContact, TableEvent, TableEventKind, TableMotion,
+    AirLayer, ContactLaw, ContactMode, DISK_FLAT_TILT, FACE_LANDING, TABLE_ACCUMULATION,
+    TABLE_RESOLUTION, TableBody, TableContact, TableEvent, TableEventKind, TableMotion,
 };
 pub use world::{
     Body, BodyBuilder, BodyId, BodyState, Choice, DEFAULT_TABLE_TOLERANCE, Plan, Support,

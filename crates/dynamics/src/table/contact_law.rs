@@ -2,6 +2,7 @@
 //! set-valued Coulomb–Contensou friction, Newton's restitution at an
 //! impact, Garwin's tangential restitution.
 
+use super::AirLayer;
 use crate::DynamicsError;
 
 /// Friction and restitution of one contact with the table.
@@ -46,6 +47,7 @@ pub struct ContactLaw {
     restitution: f64,
     tangential_restitution: f64,
     contensou_radius: f64,
+    air_layer: Option<AirLayer>,
 }
 
 /// A typed error for a law's parameter outside its domain.
@@ -98,6 +100,7 @@ impl ContactLaw {
             restitution: 0.0,
             tangential_restitution: 0.0,
             contensou_radius: 0.0,
+            air_layer: None,
         })
     }
 
@@ -150,6 +153,27 @@ impl ContactLaw {
             contensou_radius,
             ..self
         })
+    }
+
+    /// The law with Moffatt's air layer under the shape, which must be a
+    /// disk rim ([`super::TableBody::try_new`] checks).
+    ///
+    /// ```
+    /// use kreisel_dynamics::{AirLayer, ContactLaw};
+    /// let air = AirLayer::try_new(1.8e-5, 1e-6)?;
+    /// assert_eq!(ContactLaw::new(0.5).with_air_layer(air).air_layer(), Some(air));
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    pub fn with_air_layer(self, air_layer: AirLayer) -> Self {
+        Self {
+            air_layer: Some(air_layer),
+            ..self
+        }
+    }
+
+    /// The air layer under the shape, if any.
+    pub fn air_layer(&self) -> Option<AirLayer> {
+        self.air_layer
     }
 
     /// The friction coefficient `μ`.

@@ -176,3 +176,59 @@ pub(crate) fn stop_slip(body: &TableBody, state: &GroundTopState, i: usize) -> G
         ..*state
     }
 }
+
+/// The impact of a disk rim `i` rocking through flat: its far rim point
+/// `B` (now the lowest) strikes while the near point `A` (the contact
+/// until now) still touches — both take part at once, as two point
+/// contacts of the rim's law ([`impact`] on the pair; struck one at a
+/// time, each impulse would drive the other point into the table).
+///
+/// ```text
+/// ρ_B = the rim's lowest point,  ρ_A = 2 A c − ρ_B   (c the disk's centre; the diameter through B)
+/// ```
+///
+/// The outcome names contact `i` for both points.
+///
+/// # Errors
+/// Those of [`impact`].
+pub(crate) fn rim_flip_impact(
+    body: &TableBody,
+    state: &GroundTopState,
+    i: usize,
+    resolution_speed: f64,
+    time: f64,
+) -> Result<ImpactOutcome, DynamicsError> {
+    let rim = body.contacts()[i];
+    let crate::ContactShape::Disk(disk) = rim.shape else {
+        return impact(body, state, &[i], resolution_speed, time);
+    };
+    let q = state.world_from_body.normalize();
+    let rho_b = disk.contact_from_com_world(q);
+    let rho_a = 2.0 * (q * disk.center_body()) - rho_b;
+    // A point contact at A: a small sphere whose lowest point is A while
+    // the disk lies flat (its centre above A along the upward axis).
+    let n = q * disk.normal_body();
+    let up = if n.z >= 0.0 { n } else { -n };
+    let r = 1e-6 * disk.radius();
+    let point_a = crate::SphereContact::try_new(r, q.conjugate() * (rho_a + r * up))?;
+    let pair = TableBody::try_new(
+        body.mass(),
+        body.inertia_body(),
+        vec![
+            rim,
+            super::TableContact {
+                shape: crate::ContactShape::Sphere(point_a),
+                law: rim.law,
+            },
+        ],
+        body.gravity(),
+    )?;
+    let mut outcome = impact(&pair, state, &[0, 1], resolution_speed, time)?;
+    for s in &mut outcome.speeds {
+        s.0 = i;
+    }
+    for a in &mut outcome.accumulations {
+        a.0 = i;
+    }
+    Ok(outcome)
+}

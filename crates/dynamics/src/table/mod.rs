@@ -44,17 +44,22 @@
 //! [`crate::ExactSolution`]); applied inputs ([`TableBody::try_with_inputs`])
 //! act beside the contacts (the flight is then integrated).
 
+mod air_layer;
 mod contact_frame;
 mod contact_law;
 mod contact_problem;
 mod dense;
+mod face;
 mod impact;
 mod table_body;
 mod table_event;
 mod table_motion;
 
+pub use self::air_layer::AirLayer;
 pub use self::contact_law::ContactLaw;
 pub use self::contact_problem::ContactMode;
 pub use self::table_body::{TableBody, TableContact};
 pub use self::table_event::{TableEvent, TableEventKind};
-pub use self::table_motion::{DISK_FLAT_TILT, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableMotion};
+pub use self::table_motion::{
+    DISK_FLAT_TILT, FACE_LANDING, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableMotion,
+};

@@ -76,6 +76,15 @@ impl TableBody {
                 reason: "a body on the table needs 1 to 8 contact shapes",
             });
         }
+        for c in &contacts {
+            if c.law.air_layer().is_some() && !matches!(c.shape, ContactShape::Disk(_)) {
+                return Err(DynamicsError::InvalidContact {
+                    parameter: "air_viscosity",
+                    value: c.law.air_layer().map_or(0.0, |a| a.viscosity()),
+                    reason: "an air layer lies under a disk rim only",
+                });
+            }
+        }
         Ok(Self {
             mass,
             inertia_body,
@@ -122,11 +131,34 @@ impl TableBody {
     }
 
     /// The applied torque about the centre of mass and force through it,
-    /// world axes, at time `t` in `state` (zero without inputs).
+    /// world axes, at time `t` in `state`: the inputs' and the air
+    /// layers' ([`super::AirLayer`]; zero without either).
     pub fn applied_world(&self, t: f64, state: &GroundTopState) -> (DVec3, DVec3) {
-        self.loads
+        let (mut torque, force) = self
+            .loads
             .as_ref()
-            .map_or((DVec3::ZERO, DVec3::ZERO), |l| l.at(t, state))
+            .map_or((DVec3::ZERO, DVec3::ZERO), |l| l.at(t, state));
+        if self.has_air_layer() {
+            let omega = self.omega_world(state);
+            for (i, c) in self.contacts.iter().enumerate() {
+                if let (ContactShape::Disk(d), Some(air)) = (c.shape, c.law.air_layer()) {
+                    let gap = self.gap(state, i);
+                    torque += air.torque_world(&d, state.world_from_body, omega, gap);
+                }
+            }
+        }
+        (torque, force)
+    }
+
+    /// Whether a contact has an air layer.
+    fn has_air_layer(&self) -> bool {
+        self.contacts.iter().any(|c| c.law.air_layer().is_some())
+    }
+
+    /// Whether anything besides gravity and the table acts: inputs or an
+    /// air layer (the flight is then integrated, not exact).
+    pub fn has_loads(&self) -> bool {
+        self.loads.is_some() || self.has_air_layer()
     }
 
     /// The mass `m`, kg.

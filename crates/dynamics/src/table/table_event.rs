@@ -48,6 +48,9 @@ pub enum TableEventKind {
     Stick,
     /// The friction force reached the cone: the contact slips.
     Slip,
+    /// A disk rim's axis reached the vertical: the disk lies on its face
+    /// (a plastic landing), sliding and spinning on it until it stops.
+    LandsFlat,
     /// The body is at rest on the table.
     Rest,
 }
@@ -74,6 +77,7 @@ impl fmt::Display for TableEvent {
             TableEventKind::LiftOff => f.write_str("lifts off"),
             TableEventKind::Stick => f.write_str("sticks"),
             TableEventKind::Slip => f.write_str("slips"),
+            TableEventKind::LandsFlat => f.write_str("lands flat on its face"),
             TableEventKind::Rest => f.write_str("comes to rest"),
         }
     }

@@ -36,7 +36,8 @@ use glam::{DQuat, DVec3};
 
 use super::contact_frame::{ContactFrame, ContactRow};
 use super::contact_problem::{Block, ContactMode, Mode, ModeForces, mode_forces, solve_blocks};
-use super::impact::{at_time, impact, stop_slip};
+use super::face::FaceSlide;
+use super::impact::{at_time, impact, rim_flip_impact, stop_slip};
 use super::{TableBody, TableEvent, TableEventKind};
 use crate::contact::{DOPRI_A, DOPRI_B_HAT, DOPRI_C, Flight, MAX_GROWTH, MIN_SHRINK, SAFETY};
 use crate::{AdaptiveStats, AdaptiveTolerance, ContactShape, DynamicsError, GroundTopState};
@@ -60,6 +61,14 @@ pub const TABLE_ACCUMULATION: f64 = 1e-4;
 /// The sine of the smallest tilt of a disk rim's axis from the vertical
 /// the rim contact follows ([`DynamicsError::DiskFlat`] below it).
 pub const DISK_FLAT_TILT: f64 = 1e-6;
+
+/// The speed, relative to the body's speed scale, below which a disk
+/// rim that reaches flat lands on its face (a plastic landing): its face's
+/// normal velocities `|v_z| + a |ω × n|` below it. Faster, the rim rocks
+/// on through flat (its far point strikes, `impact::rim_flip_impact`).
+/// The last rocking the landing stops holds below 10⁻⁴ of the body's
+/// energy scale `m g ℓ`.
+pub const FACE_LANDING: f64 = 1e-2;
 
 /// The smallest step, relative to `max(|t|, τ)` (`τ = √(ℓ/g)`).
 const MIN_STEP_RELATIVE: f64 = 1e-14;
@@ -136,6 +145,8 @@ pub struct TableMotion {
     /// The latest accumulation point of bounces, s (the body rests no
     /// earlier).
     accumulation: f64,
+    /// A disk on its face, once one lands flat.
+    face: Option<FaceSlide>,
     stats: AdaptiveStats,
 }
 
@@ -232,6 +243,7 @@ impl TableMotion {
             resting: false,
             flight: None,
             accumulation: f64::NEG_INFINITY,
+            face: None,
             stats: AdaptiveStats::default(),
         };
         run.settle()?;
@@ -258,9 +270,20 @@ impl TableMotion {
         self.modes.iter().map(|m| m.mode).collect()
     }
 
-    /// Each contact's normal force now, N (0 when open).
+    /// Each contact's normal force now, N (0 when open; a disk on its
+    /// face carries `m g`).
     pub fn normal_forces(&self) -> Vec<f64> {
-        self.current.forces.normal[..self.modes.len()].to_vec()
+        let mut normal = self.current.forces.normal[..self.modes.len()].to_vec();
+        if let Some(face) = &self.face {
+            normal.iter_mut().for_each(|n| *n = 0.0);
+            normal[face.contact] = self.body.mass() * self.body.gravity();
+        }
+        normal
+    }
+
+    /// The disk contact whose face the body lies on, if it does.
+    pub fn lying_flat_on(&self) -> Option<usize> {
+        self.face.as_ref().map(|f| f.contact)
     }
 
     /// The events so far, in time order.
@@ -273,9 +296,16 @@ impl TableMotion {
         self.resting
     }
 
-    /// Steps accepted and rejected, evaluations of the vector field.
+    /// Steps accepted and rejected, evaluations of the vector field (the
+    /// slide on a face included).
     pub fn stats(&self) -> AdaptiveStats {
-        self.stats
+        let mut stats = self.stats;
+        if let Some(face) = &self.face {
+            stats.accepted += face.stats.accepted;
+            stats.rejected += face.stats.rejected;
+            stats.evaluations += face.stats.evaluations;
+        }
+        stats
     }
 
     /// The resolution speed `v_res`, m/s: [`TABLE_RESOLUTION`] times the
@@ -369,16 +399,19 @@ impl TableMotion {
                 }
                 ContactMode::Sticking | ContactMode::Slipping => {
                     let n = end.forces.normal[i];
-                    if n < 0.0 {
+                    if n < 0.0 || self.rim_side(i, &end.state) < 0.0 {
                         return true;
                     }
                     let friction = end.forces.friction[i].length();
                     if mode.mode == ContactMode::Sticking && friction > r1.mu * n {
                         return true;
                     }
+                    // The slip reversed, or fell below the resolution (its
+                    // direction is then no longer resolved).
                     if mode.mode == ContactMode::Slipping
                         && r1.friction_dimensions > 0
-                        && slip_progress(r0, r1, mode, floor) < 0.0
+                        && (slip_progress(r0, r1, mode, floor) < 0.0
+                            || (r1.slip().length() <= floor && r0.slip().length() > floor))
                     {
                         return true;
                     }
@@ -446,6 +479,30 @@ impl TableMotion {
             if self.resting {
                 self.time = t_end;
                 break;
+            }
+            if let Some(face) = &mut self.face {
+                let stopped = face.advance(t_end)?;
+                self.time = face.time().max(self.time);
+                self.current.state = face.state();
+                if let Some(t) = stopped {
+                    self.time = t;
+                    self.modes[face.contact].mode = ContactMode::Sticking;
+                    self.events.push(TableEvent {
+                        time: t,
+                        contact: Some(face.contact),
+                        kind: TableEventKind::Stick,
+                    });
+                    self.resting = true;
+                    self.events.push(TableEvent {
+                        time: t,
+                        contact: None,
+                        kind: TableEventKind::Rest,
+                    });
+                    if stop_at_event {
+                        return Ok(true);
+                    }
+                }
+                continue;
             }
             let remaining = t_end - self.time;
             if let Some((_, flight)) = &self.flight {
@@ -521,7 +578,9 @@ impl TableMotion {
             in_place = 0;
             self.time = if last { t_end } else { self.time + h };
             self.current = trial.end;
-            self.check_disks()?;
+            if self.land_flat_disks()? && stop_at_event {
+                return Ok(true);
+            }
             if !last || growth < 1.0 {
                 self.h = h * growth;
             }
@@ -555,9 +614,45 @@ impl TableMotion {
                 }
                 ContactMode::Slipping => n / weight,
             };
-            value = value.min(v);
+            let side = match mode.mode {
+                ContactMode::Open => f64::INFINITY,
+                _ => self.rim_side(i, &end.state),
+            };
+            value = value.min(v).min(side);
         }
         value
+    }
+
+    /// The lone participant that is a disk rim lying flat (its axis within
+    /// [`DISK_FLAT_TILT`] of the vertical) and striking: a rim rocking
+    /// through flat, whose far point strikes.
+    fn flipping_rim(&self, participants: &[usize]) -> Option<usize> {
+        let [i] = participants else {
+            return None;
+        };
+        let ContactShape::Disk(d) = self.body.contacts()[*i].shape else {
+            return None;
+        };
+        let n = self.current.state.world_from_body.normalize() * d.normal_body();
+        let striking = self.current.frame.rows[*i].velocity[0] < -self.resolution_speed();
+        (striking && DVec3::Z.cross(n).length() < DISK_FLAT_TILT).then_some(*i)
+    }
+
+    /// For a disk rim: on which side of the rim its lowest point lies in
+    /// `state`, against the current one: `(n_z n_h)·d₀` with `d₀` the
+    /// current lowest point's horizontal direction — positive on the same
+    /// side, negative once the disk has rocked through flat (its far rim
+    /// point strikes). `+∞` for other shapes.
+    fn rim_side(&self, i: usize, state: &GroundTopState) -> f64 {
+        let ContactShape::Disk(d) = self.body.contacts()[i].shape else {
+            return f64::INFINITY;
+        };
+        let lowest = |q: DQuat| {
+            let n = q.normalize() * d.normal_body();
+            n.z * DVec3::new(n.x, n.y, 0.0)
+        };
+        let d0 = lowest(self.current.state.world_from_body).normalize_or_zero();
+        lowest(state.world_from_body).dot(d0)
     }
 
     /// The earliest length `τ ≤ h` by which an event has happened, to a
@@ -608,31 +703,79 @@ impl TableMotion {
         Ok((hi, end))
     }
 
-    /// [`DynamicsError::DiskFlat`] when a disk rim's axis is within
-    /// [`DISK_FLAT_TILT`] of the vertical: the rim's lowest point is then
-    /// ill-defined (it jumps across the rim) and the face, which would
-    /// carry the disk, is not a contact shape yet.
-    fn check_disks(&self) -> Result<(), DynamicsError> {
-        let q = self.current.state.world_from_body.normalize();
-        let flat = self.body.contacts().iter().any(|c| match c.shape {
-            ContactShape::Disk(d) => {
-                let n = q * d.normal_body();
-                DVec3::Z.cross(n).length() < DISK_FLAT_TILT
-            }
-            _ => false,
-        });
-        if flat {
-            Err(DynamicsError::DiskFlat { time: self.time })
-        } else {
-            Ok(())
+    /// Lands a disk on its face when a closed (or touching) rim's axis is
+    /// within [`DISK_FLAT_TILT`] of the vertical: the rim's lowest point is
+    /// then ill-defined and the face carries the disk (`face`): `true`
+    /// when it landed.
+    ///
+    /// # Errors
+    /// Those of the landing ([`DynamicsError::DiskFlat`] when the face
+    /// cannot hold the disk flat or inputs act).
+    fn land_flat_disks(&mut self) -> Result<bool, DynamicsError> {
+        if self.face.is_some() {
+            return Ok(true);
         }
+        let q = self.current.state.world_from_body.normalize();
+        let gap_tol = 1e-9 * self.length;
+        let omega = self.current.frame.omega;
+        let v_z = self.current.state.velocity_world.z.abs();
+        let v_land = FACE_LANDING * self.speed;
+        let flat = self
+            .body
+            .contacts()
+            .iter()
+            .enumerate()
+            .find(|(i, c)| match c.shape {
+                ContactShape::Disk(d) => {
+                    let n = q * d.normal_body();
+                    let touching = self.modes[*i].mode != ContactMode::Open
+                        || self.current.frame.rows[*i].gap <= gap_tol;
+                    // The face arrives slowly: its normal velocities below
+                    // FACE_LANDING of the speed scale.
+                    let slow = v_z + d.radius() * omega.cross(n).length() <= v_land;
+                    touching && slow && DVec3::Z.cross(n).length() < DISK_FLAT_TILT
+                }
+                _ => false,
+            });
+        let Some((i, _)) = flat else {
+            return Ok(false);
+        };
+        let face = FaceSlide::land(
+            &self.body,
+            &self.current.state,
+            i,
+            self.time,
+            self.tolerance,
+            self.speed,
+        )?;
+        self.current.state = face.state();
+        self.flight = None;
+        for (k, mode) in self.modes.iter_mut().enumerate() {
+            *mode = if k == i {
+                Mode {
+                    mode: ContactMode::Slipping,
+                    direction: DVec3::ZERO,
+                }
+            } else {
+                Mode::OPEN
+            };
+        }
+        self.face = Some(face);
+        self.events.push(TableEvent {
+            time: self.time,
+            contact: Some(i),
+            kind: TableEventKind::LandsFlat,
+        });
+        Ok(true)
     }
 
     /// At an event (or the start): impacts where a contact approaches,
     /// then each contact's mode from the acceleration-level problem,
     /// events recorded for every change, rest detected.
     fn settle(&mut self) -> Result<(), DynamicsError> {
-        self.check_disks()?;
+        if self.land_flat_disks()? {
+            return Ok(());
+        }
         let v_res = self.resolution_speed();
         let gap_tol = 1e-9 * self.length;
         let frame = &self.current.frame;
@@ -644,19 +787,30 @@ impl TableMotion {
             .any(|&i| frame.rows[i].velocity[0] < -v_res);
         let mut struck = vec![false; self.modes.len()];
         if impacting {
-            let outcome = impact(
-                &self.body,
-                &self.current.state,
-                &participants,
-                TABLE_ACCUMULATION * self.speed,
-                self.time,
-            )?;
+            let outcome = match self.flipping_rim(&participants) {
+                Some(i) => rim_flip_impact(
+                    &self.body,
+                    &self.current.state,
+                    i,
+                    TABLE_ACCUMULATION * self.speed,
+                    self.time,
+                )?,
+                None => impact(
+                    &self.body,
+                    &self.current.state,
+                    &participants,
+                    TABLE_ACCUMULATION * self.speed,
+                    self.time,
+                )?,
+            };
             for &(i, approach, rebound, approached) in &outcome.speeds {
                 // An impact is a shape that was off the table striking it;
                 // a closed contact that takes part (its drift towards the
                 // table ~ the tolerance) is no event of its own.
                 let was_open = self.modes[i].mode == ContactMode::Open;
-                if was_open && approached && approach > v_res {
+                // A rim rocking through flat: its far point strikes.
+                let flipped = approach > TABLE_ACCUMULATION * self.speed;
+                if (was_open || flipped) && approached && approach > v_res {
                     struck[i] = true;
                     self.events.push(TableEvent {
                         time: self.time,
@@ -710,7 +864,10 @@ impl TableMotion {
         self.current = self
             .snapshot(self.current.state, self.time)
             .map_err(|e| at_time(e, self.time))?;
-        let ballistic = self.body.inputs().is_none();
+        if self.land_flat_disks()? {
+            return Ok(());
+        }
+        let ballistic = !self.body.has_loads();
         self.flight = if ballistic && self.modes.iter().all(|m| m.mode == ContactMode::Open) {
             let g = self.body.gravity();
             let flight = Flight::try_new(self.body.inertia_body(), &self.current.state, g)
