@@ -13,7 +13,7 @@
 
 mod body;
 mod contact;
-mod events;
+pub mod events;
 mod figure;
 mod methods;
 mod output;
