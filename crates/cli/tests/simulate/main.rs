@@ -20,5 +20,6 @@ mod plot;
 mod rattleback;
 mod support;
 mod table;
+mod table_painleve;
 mod threads;
 mod tolerance;
