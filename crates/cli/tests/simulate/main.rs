@@ -21,5 +21,6 @@ mod rattleback;
 mod support;
 mod table;
 mod table_painleve;
+mod table_superball;
 mod threads;
 mod tolerance;
