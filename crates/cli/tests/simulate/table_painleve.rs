@@ -46,6 +46,28 @@ fn rod(mu: f64) -> String {
     )
 }
 
+/// Runs the scene at `path` with `--output` (an existing file) and
+/// `--events` (none yet): one error line, neither file written; the line.
+fn refused(path: &std::path::Path) -> String {
+    let output = path.with_extension("csv");
+    std::fs::write(&output, "kept\n").unwrap();
+    let events = path.with_extension("events.csv");
+    let _ = std::fs::remove_file(&events);
+    let run = simulate_file(
+        path,
+        &[
+            "--output",
+            output.to_str().unwrap(),
+            "--events",
+            events.to_str().unwrap(),
+        ],
+    );
+    let message = run.error_line(1).to_owned();
+    assert_eq!(std::fs::read_to_string(&output).unwrap(), "kept\n");
+    assert!(!events.exists(), "{}", events.display());
+    message
+}
+
 /// The compliance a message prints, 1/kg.
 fn compliance_in(message: &str) -> f64 {
     let after = message.split("(compliance ").nth(1).expect("compliance");
@@ -64,19 +86,7 @@ fn painleves_rod_beyond_the_bound_names_its_mu_at_its_line() {
     // Beyond it: one line at `mu` (line 20), nothing written.
     let mu = 2.0;
     let path = scratch("painleve_rod.toml", rod(mu));
-    let output = scratch("painleve_rod.csv", "kept\n");
-    let events = crate::support::scratch_dir().join("painleve_rod_events.csv");
-    let _ = std::fs::remove_file(&events);
-    let run = simulate_file(
-        &path,
-        &[
-            "--output",
-            output.to_str().unwrap(),
-            "--events",
-            events.to_str().unwrap(),
-        ],
-    );
-    let message = run.error_line(1);
+    let message = &refused(&path);
     let prefix = format!(
         "kreisel: error: {}:20: body `rod`: `contact.mu` = 2 of [[body.contact]] #1 is beyond the \
          Painlevé bound of its slip (the contact is indeterminate at t = 0 s",
@@ -89,8 +99,6 @@ fn painleves_rod_beyond_the_bound_names_its_mu_at_its_line() {
         "{printed} vs the closed form {}",
         kappa(mu)
     );
-    assert_eq!(std::fs::read_to_string(&output).unwrap(), "kept\n");
-    assert!(!events.exists());
 }
 
 /// Leine & Glocker's tippe top (ball and stem) at μ = 1000 with
@@ -108,19 +116,7 @@ fn an_indeterminate_contact_during_the_run_writes_nothing() {
         [[body.contact]]\nshape = \"sphere\"\nradius = 0.005\ncenter = [0.0, 0.0, 0.016]\n\
         friction = \"coulomb\"\nmu = 1000.0\ncontensou_radius = 5e-4\n";
     let path = scratch("painleve_tippe.toml", scene);
-    let output = scratch("painleve_tippe.csv", "kept\n");
-    let events = crate::support::scratch_dir().join("painleve_tippe_events.csv");
-    let _ = std::fs::remove_file(&events);
-    let run = simulate_file(
-        &path,
-        &[
-            "--output",
-            output.to_str().unwrap(),
-            "--events",
-            events.to_str().unwrap(),
-        ],
-    );
-    let message = run.error_line(1);
+    let message = &refused(&path);
     let prefix = format!(
         "kreisel: error: {}:18: body `tippe`: `contact.mu` = 1000 of [[body.contact]] #1 is \
          beyond the Painlevé bound of its slip (the contact is indeterminate at t = 0.00726",
@@ -128,6 +124,4 @@ fn an_indeterminate_contact_during_the_run_writes_nothing() {
     );
     assert!(message.starts_with(&prefix), "{message}\nexpected {prefix}");
     assert!(compliance_in(message) < 0.0, "{message}");
-    assert_eq!(std::fs::read_to_string(&output).unwrap(), "kept\n");
-    assert!(!events.exists());
 }
