@@ -9,8 +9,8 @@ use glam::{DQuat, DVec3};
 use kreisel_cli::simulate::Names;
 use kreisel_cli::simulate::events::{kind_name, merged};
 use kreisel_dynamics::{
-    ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, SphereContact,
-    TableContact, TableEvent, TableEventKind, World,
+    Body, ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, SphereContact,
+    Support, TableContact, TableEvent, TableEventKind, World,
 };
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -212,6 +212,22 @@ pub fn touching(contacts: &[TableContact], q: DQuat) -> DVec3 {
         .map(|c| c.shape.contact_from_com_world(q.normalize()).z)
         .fold(f64::INFINITY, f64::min);
     DVec3::new(0.0, 0.0, -lowest)
+}
+
+/// The contact of a body on the table that Painlevé's case at its start
+/// is about: the first that touches with friction (else the first), and
+/// its `mu`.
+pub fn sliding_at_start(body: &Body) -> (usize, f64) {
+    let Support::Table { position, .. } = body.support() else {
+        return (0, f64::NAN);
+    };
+    let q = body.world_from_body().normalize();
+    let contacts = body.table_contacts();
+    let index = contacts
+        .iter()
+        .position(|c| c.law.mu() > 0.0 && position.z + c.shape.contact_from_com_world(q).z <= 1e-12)
+        .unwrap_or(0);
+    (index, contacts.get(index).map_or(f64::NAN, |c| c.law.mu()))
 }
 
 /// The fields after `kind` of an event: the speeds of an impact, the

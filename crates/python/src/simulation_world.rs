@@ -274,7 +274,16 @@ impl PyWorld {
                 .try_build()
                 .and_then(|b| b.with_inputs(inputs))
                 .map_err(world_error)?;
+            let sliding = table::sliding_at_start(&body);
             let id = self.world.add(body).map_err(|e| match e {
+                e @ DynamicsError::ContactIndeterminate { .. } => {
+                    let (i, mu) = sliding;
+                    error(format!(
+                        "contacts[{i}].mu: {} is beyond the Painlevé bound of its slip ({e}): no \
+                         normal force keeps the sliding contact on the table",
+                        Shortest(mu)
+                    ))
+                }
                 DynamicsError::BodyInsideTable { contact, gap } => error(format!(
                     "position: contacts[{contact}] is below the table at the start (its lowest \
                      point at z = {} m): a body on the table starts above it or touching it",

@@ -214,3 +214,26 @@ def test_other_bad_table_bodies():
         sideways.add_body(1.0, moments=(0.004,) * 3, contacts=[law])
     assert str(e.value).startswith("gravity:"), str(e.value)
     assert len(world) == 0 and len(sideways) == 0
+
+
+def test_painleves_rod_beyond_the_bound_names_mu():
+    # Painlevé's rod (1 kg, 1 m, I = m L^2/12, a 1 mm ball at its lower end)
+    # leaning at atan 2 and sliding end first: the normal force's coefficient
+    # kappa = 1/m + (l c)^2/I - mu l c (l s + r)/I is negative beyond
+    # mu* = 4/3 (r -> 0); at mu = 2 the World refuses it, naming mu.
+    theta, l, r, inertia, mu = math.atan(2.0), 0.5, 0.001, 1.0 / 12.0, 2.0
+    s, c = math.sin(theta), math.cos(theta)
+    kappa = 1.0 + (l * c) ** 2 / inertia - mu * l * c * (l * s + r) / inertia
+    world = kreisel.World(0.01, gravity=(0.0, 0.0, -G))
+    half = theta / 2.0
+    end = dict(shape="sphere", radius=r, center=(-l, 0.0, 0.0), mu=mu)
+    with pytest.raises(kreisel.KreiselError) as e:
+        world.add_body(
+            1.0, moments=(0.001, inertia, inertia), attitude=(math.cos(half), 0.0, -math.sin(half), 0.0),
+            velocity=(-1.0, 0.0, 0.0), contacts=[end],
+        )  # fmt: skip
+    message = str(e.value)
+    assert message.startswith("contacts[0].mu: 2 is beyond the Painlevé bound of its slip"), message
+    printed = float(message.split("(compliance ")[1].split(" ")[0])
+    assert abs(printed - kappa) < 1e-12, (printed, kappa)
+    assert len(world) == 0
