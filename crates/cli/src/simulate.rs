@@ -13,7 +13,7 @@
 
 mod body;
 mod contact;
-mod events;
+pub mod events;
 mod figure;
 mod methods;
 mod output;
@@ -250,11 +250,13 @@ Errors: one line, SCENE:LINE: message, naming the key; exit status 1.
   standard output the rows before it have been written).
   Events end what the model describes: a lift-off, a disk lying flat, an
   indeterminate contact, a watched contact touching down (on the ground);
-  an indeterminate contact, contact modes that chatter, an impact the law
-  cannot resolve without gaining energy (on the table). The run stops
-  there with one line naming it, exit status 1; the --output file, the
-  --plot image and the --events file hold the motion up to the event (its
-  last row the last output time before it).
+  contact modes that chatter, an impact the law cannot resolve without
+  gaining energy (on the table). The run stops there with one line naming
+  it, exit status 1; the --output file, the --plot image and the --events
+  file hold the motion up to the event (its last row the last output time
+  before it). An indeterminate contact on the table (Painlevé's case: no
+  normal force keeps a sliding contact, its mu beyond the bound of the
+  slip) is bad input: one line at that contact's mu, nothing written.
   A free body stepped by a method beyond that method's step limit, dt
   times the fastest angular speed |L|/I1 the body can reach (--explain
   prints both), gets one warning line on standard error, and the run goes
@@ -435,7 +437,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     // are dropped: an existing --output or --plot file stays as it was).
     let stopped = match simulated {
         Ok(()) => None,
-        Err(stop) if stop.is_event() => Some(stop),
+        Err(stop) if stop.is_event(&scene) => Some(stop),
         Err(stop) => return Err(stop.into_error(&scene, scene_path, &name, &output)),
     };
     flushed.map_err(|source| write_error(&output, source))?;

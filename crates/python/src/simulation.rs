@@ -14,6 +14,7 @@ use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 
 use kreisel_cli::error::CliError;
+use kreisel_cli::simulate::scene::Scene;
 use kreisel_cli::simulate::{Column, States, prepare, run_rows};
 use kreisel_dynamics::BodyId;
 use numpy::PyArray1;
@@ -24,6 +25,8 @@ use pyo3::types::PyDict;
 use crate::arguments;
 use crate::errors::{cli_error, error, guard};
 
+#[path = "simulation_table.rs"]
+mod table;
 #[path = "simulation_world.rs"]
 mod world;
 
@@ -105,13 +108,14 @@ fn scene_source(scene: &Bound<'_, PyAny>) -> PyResult<(PathBuf, Option<String>)>
     Ok((path, None))
 }
 
-/// Reads, parses and runs the scene; the columns of every row.
+/// Reads, parses and runs the scene; the columns of every row, and the
+/// scene as the run left it (its bodies' events).
 fn run(
     path: &Path,
     text: Option<String>,
     method: Option<&str>,
     threads: Option<NonZeroUsize>,
-) -> Result<Columns, CliError> {
+) -> Result<(Columns, Scene), CliError> {
     let text = match text {
         Some(text) => text,
         None => kreisel_inertia::io::read_limited_text(path, "a scene file").map_err(|source| {
@@ -129,7 +133,7 @@ fn run(
     run_rows(&mut scene, path, &name, &mut |states, bodies| {
         columns.push(states, bodies);
     })?;
-    Ok(columns)
+    Ok((columns, scene))
 }
 
 /// Runs a scene of `kreisel simulate` (a path, or the TOML text) as the CLI
@@ -144,6 +148,15 @@ fn run(
 /// least 1) as ``--threads`` (the output does not depend on it). A scene given as text
 /// finds its mesh files relative to the working directory. The GIL is
 /// released while the scene runs.
+///
+/// With ``events=True`` it returns ``(rows, events)``: ``events`` the rows
+/// of the CLI's ``--events`` file, a list of tuples ``(time, body,
+/// contact, kind, approach_speed, rebound_speed, accumulation_time)`` in
+/// time order (bodies on the table only: impacts, touchdowns, lift-offs,
+/// stick, slip, rest; ``contact`` the ``[[body.contact]]`` table's number,
+/// 1 = the first, ``None`` for the whole body; the speeds, m/s, of an
+/// ``"impact"``, the ``accumulation_time``, s, of
+/// ``"impacts_accumulate"``, else ``None``), the numbers the file spells.
 ///
 /// Raises KreiselError with the CLI's one-line message: an unreadable
 /// scene, a bad key (naming its line), a body that diverges; for a bad
@@ -165,14 +178,18 @@ fn run(
 /// ([0.0, 0.5, 1.0], ['body1', 'body1', 'body1'])
 /// >>> float(rows["energy"][-1])
 /// 1.5
+/// >>> rows, events = kreisel.simulate("examples/scenes/bouncing_ball.toml", events=True)
+/// >>> events[0][1:4], round(events[0][0], 5)
+/// (('ball', 1, 'impact'), 0.42835)
 #[pyfunction]
-#[pyo3(signature = (scene, method=None, threads=None))]
+#[pyo3(signature = (scene, method=None, threads=None, *, events=false))]
 fn simulate<'py>(
     py: Python<'py>,
     scene: &Bound<'py, PyAny>,
     method: Option<&str>,
     threads: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
+    events: bool,
+) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
         let (path, text) = scene_source(scene)?;
         let threads = threads
@@ -185,7 +202,7 @@ fn simulate<'py>(
                     .ok_or_else(|| error(format!("threads: {n} is more than this machine counts")))
             })
             .transpose()?;
-        let columns = py
+        let (columns, ran) = py
             .detach(|| run(&path, text, method, threads))
             .map_err(cli_error)?;
         let dict = PyDict::new(py);
@@ -199,7 +216,12 @@ fn simulate<'py>(
                 dict.set_item(column.name(), PyArray1::from_vec(py, values))?;
             }
         }
-        Ok(dict)
+        if events {
+            let events = table::scene_events(py, &ran.world, &ran.bodies)?;
+            Ok((dict, events).into_pyobject(py)?.into_any())
+        } else {
+            Ok(dict.into_any())
+        }
     })
 }
 

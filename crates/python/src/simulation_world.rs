@@ -1,6 +1,6 @@
 //! `kreisel.World`: the engine's [`World`] as a Python object: add bodies
-//! (principal moments or an inertia tensor; attitude, spin; free or on a
-//! pivot; torques, forces, damping), change what is applied to them, move
+//! (principal moments or an inertia tensor; attitude, spin; free, on a
+//! pivot or on the table; torques, forces, damping), change what is applied to them, move
 //! the world (`step`, `advance_steps`, `advance_to`) and read the states as
 //! numpy arrays. Every number is the engine's; this file converts and
 //! names errors.
@@ -13,12 +13,16 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use kreisel_cli::numbers::Shortest;
+
+use super::table;
 use crate::arguments::{finite, int, integer, matrix3, named, numbers};
 use crate::errors::{error, guard};
 
 /// A world of rigid bodies that do not interact, each moved by the
 /// engine's best method for it (exact solutions for free bodies and
-/// Lagrange tops, stepping methods otherwise), all SI units and radians.
+/// Lagrange tops, stepping methods otherwise, the nonsmooth table for
+/// bodies with ``contacts``), all SI units and radians.
 ///
 /// ``World(dt, gravity=(0, 0, 0), method="auto")``: ``dt`` is the step of
 /// the stepping methods (s), ``gravity`` in world axes (m/s^2), ``method``
@@ -156,15 +160,37 @@ impl PyWorld {
     /// ``force`` (through the centre of mass, world axes), N m / N, and
     /// ``angular_damping`` (N m s) are applied from now on.
     ///
+    /// With ``contacts`` the body is on the table z = 0 (gravity along -z),
+    /// moved as ``friction = "coulomb"`` moves a scene's body: every contact
+    /// unilateral, Newton's impacts, set-valued Coulomb friction with
+    /// Contensou's drilling; it may start above the table (``position``,
+    /// default: above the origin, its lowest contact touching) and be
+    /// thrown (``velocity``); no pivot and no applied loads. ``contacts`` is a
+    /// list of dicts with the keys of a scene's ``[[body.contact]]`` table:
+    /// ``shape`` (``"sphere"``, ``"disk"``, ``"ellipsoid"``), ``radius``,
+    /// ``center`` (from the centre of mass, body axes, m), ``normal``
+    /// (disk), ``semi_axes`` (ellipsoid), ``mu`` (required, >= 0),
+    /// ``restitution`` and ``tangential_restitution`` (in [0, 1], default
+    /// 0), ``contensou_radius`` (m, default 0), ``friction`` (only
+    /// ``"coulomb"``). A bad value raises KreiselError naming its key
+    /// (``contacts[0].mu: ...``); a contact below the table names
+    /// ``position``. ``events(body)`` lists what happens.
+    ///
     /// >>> import kreisel
     /// >>> w = kreisel.World(dt=0.001, gravity=(0, 0, -9.81))
     /// >>> top = w.add_body(0.5, moments=(0.02, 0.02, 0.01), omega_body=(0, 0, 50),
     /// ...                  attitude=(0.99, 0.14, 0, 0), pivot=(0, 0, -0.05))
     /// >>> w.plan(top)
     /// 'Lagrange top on a pivot: exact, closed form ...'
-    #[pyo3(signature = (mass, moments=None, inertia=None, *, attitude=None, omega_body=None, position=None, velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=None))]
+    /// >>> ball = w.add_body(0.5, moments=(0.002,) * 3, position=(0, 0, 1.0),
+    /// ...                   contacts=[dict(shape="sphere", radius=0.1, mu=0.0, restitution=0.9)])
+    /// >>> w.advance_to(0.5)
+    /// >>> t, contact, kind, v_in, v_out, _ = w.events(ball)[0]
+    /// >>> round(t, 5), contact, kind, round(v_out / v_in, 12)
+    /// (0.42835, 0, 'impact', 0.9)
+    #[pyo3(signature = (mass, moments=None, inertia=None, *, attitude=None, omega_body=None, position=None, velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=None, contacts=None))]
     #[pyo3(
-        text_signature = "($self, mass, moments=None, inertia=None, *, attitude=None, omega_body=(0.0, 0.0, 0.0), position=(0.0, 0.0, 0.0), velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=0.0)"
+        text_signature = "($self, mass, moments=None, inertia=None, *, attitude=None, omega_body=(0.0, 0.0, 0.0), position=(0.0, 0.0, 0.0), velocity=None, pivot=None, torque=None, torque_body=None, force=None, angular_damping=0.0, contacts=None)"
     )]
     #[allow(clippy::too_many_arguments)] // the Python keywords, one each
     fn add_body(
@@ -181,6 +207,7 @@ impl PyWorld {
         torque_body: Arg<'_, '_>,
         force: Arg<'_, '_>,
         angular_damping: Arg<'_, '_>,
+        contacts: Arg<'_, '_>,
     ) -> PyResult<usize> {
         guard(|| {
             let mass = finite("mass", mass)?;
@@ -205,22 +232,65 @@ impl PyWorld {
             let builder = builder
                 .world_from_body(attitude)
                 .omega_body(vector("omega_body", omega_body)?);
+            let given_position = position;
             let position = vector("position", position)?;
-            let builder = match (pivot, velocity) {
-                (Some(_), Some(_)) => {
+            let loads = [
+                ("torque", torque),
+                ("torque_body", torque_body),
+                ("force", force),
+                ("angular_damping", angular_damping),
+            ];
+            let builder = match (contacts, pivot, velocity) {
+                (Some(_), Some(_), _) => {
+                    return Err(error(
+                        "pivot cannot be given with contacts: a body turns about a pivot or \
+                         is on the table, not both",
+                    ));
+                }
+                (Some(c), None, v) => {
+                    if let Some((name, _)) = loads.iter().find(|(_, given)| given.is_some()) {
+                        return Err(error(format!(
+                            "{name}: applied loads are not modelled for a body on the table \
+                             (contacts): only gravity and the contacts act"
+                        )));
+                    }
+                    let contacts = table::contacts(c)?;
+                    let position = match given_position {
+                        Some(_) => position,
+                        None => table::touching(&contacts, attitude),
+                    };
+                    builder.on_table(position, vector("velocity", v)?, &contacts)
+                }
+                (None, Some(_), Some(_)) => {
                     return Err(error(
                         "velocity cannot be given with pivot: the pivot is fixed",
                     ));
                 }
-                (Some(p), None) => builder.pivot(vector("pivot", Some(p))?, position),
-                (None, v) => builder.free(position, vector("velocity", v)?),
+                (None, Some(p), None) => builder.pivot(vector("pivot", Some(p))?, position),
+                (None, None, v) => builder.free(position, vector("velocity", v)?),
             };
             let inputs = inputs(torque, torque_body, force, angular_damping)?;
             let body = builder
                 .try_build()
                 .and_then(|b| b.with_inputs(inputs))
                 .map_err(world_error)?;
-            let id = self.world.add(body).map_err(world_error)?;
+            let sliding = table::sliding_at_start(&body);
+            let id = self.world.add(body).map_err(|e| match e {
+                e @ DynamicsError::ContactIndeterminate { .. } => {
+                    let (i, mu) = sliding;
+                    error(format!(
+                        "contacts[{i}].mu: {} is beyond the Painlevé bound of its slip ({e}): no \
+                         normal force keeps the sliding contact on the table",
+                        Shortest(mu)
+                    ))
+                }
+                DynamicsError::BodyInsideTable { contact, gap } => error(format!(
+                    "position: contacts[{contact}] is below the table at the start (its lowest \
+                     point at z = {} m): a body on the table starts above it or touching it",
+                    Shortest(gap)
+                )),
+                other => world_error(other),
+            })?;
             self.ids.push(id);
             Ok(self.ids.len() - 1)
         })
@@ -329,6 +399,34 @@ impl PyWorld {
                 .plan(id)
                 .map(ToString::to_string)
                 .unwrap_or_default())
+        })
+    }
+
+    /// The events of body ``body`` so far (a body on the table: added with
+    /// ``contacts``; none for the others), in time order: tuples ``(time,
+    /// contact, kind, approach_speed, rebound_speed, accumulation_time)``
+    /// — ``time`` in s; ``contact`` the index in the body's ``contacts``
+    /// (``None``: the whole body); ``kind`` one of ``"impact"``,
+    /// ``"impacts_accumulate"``, ``"touchdown"``, ``"lift_off"``,
+    /// ``"stick"``, ``"slip"``, ``"rest"``; the normal speeds before and
+    /// after an impact (m/s) and where accumulating bounces end (s), else
+    /// ``None``. The rows of the CLI's ``--events`` file, numbered as the
+    /// library numbers contacts (from 0).
+    ///
+    /// >>> import kreisel
+    /// >>> w = kreisel.World(0.01, gravity=(0, 0, -9.81))
+    /// >>> b = w.add_body(1.0, moments=(0.004,) * 3, contacts=[{"shape": "sphere", "radius": 0.1, "mu": 0.5}])
+    /// >>> [e[2] for e in w.events(b)]  # placed on the table, it rests there
+    /// ['touchdown', 'rest']
+    fn events<'py>(
+        &self,
+        py: Python<'py>,
+        body: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+        guard(|| {
+            let id = self.id(body)?;
+            let events = self.world.events(id).unwrap_or_default();
+            table::world_events(py, events)
         })
     }
 

@@ -212,7 +212,7 @@ def test_docstring_examples_of_this_part(monkeypatch):
     monkeypatch.chdir(cli.REPO)
     objects = [
         kreisel.mass_properties, kreisel.mass_properties_from_arrays, kreisel.simulate,
-        kreisel.World, kreisel.World.add_body, kreisel.top, kreisel.LagrangeTop,
+        kreisel.World, kreisel.World.add_body, kreisel.World.events, kreisel.top, kreisel.LagrangeTop,
     ]  # fmt: skip
     for obj in objects:
         assert ">>>" in obj.__doc__, obj

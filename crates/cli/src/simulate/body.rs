@@ -74,6 +74,17 @@ impl RawBody {
         })
     }
 
+    /// The spans of the `mu` keys of the body's contact tables, in order
+    /// (`None` where not given; none without `contact`).
+    pub fn mu_spans(&self) -> Vec<Option<std::ops::Range<usize>>> {
+        self.contact.as_ref().map_or_else(Vec::new, |c| {
+            contact::tables(c)
+                .into_iter()
+                .map(|(raw, _)| raw.mu_span())
+                .collect()
+        })
+    }
+
     /// Where the `name` key is, if given.
     pub fn name_span(&self) -> Option<std::ops::Range<usize>> {
         self.name.as_ref().map(Spanned::span)
@@ -105,6 +116,8 @@ pub fn add_body(
     let velocity = optional_vector(&keys, "velocity", &b.velocity)?;
     let (inputs, first_input) = inputs(&keys, b)?;
     let builder = inertia.builder.world_from_body(attitude).omega_body(omega);
+    // A body on the table: its contacts and the start of its centre of mass.
+    let mut on_table: Option<(Vec<TableContact>, DVec3)> = None;
     let builder = match (&b.contact, &b.pivot) {
         (Some(_), Some(pivot)) => {
             let message = "`pivot` cannot be given with `contact`: a body turns about a \
@@ -125,7 +138,9 @@ pub fn add_body(
                     Some(_) => position,
                     None => touching(&contacts, attitude),
                 };
-                builder.on_table(position, velocity, &contacts)
+                let built = builder.on_table(position, velocity, &contacts);
+                on_table = Some((contacts, position));
+                built
             }
             Contacts::Ground(contacts) => {
                 let checked = contacts.first;
@@ -182,6 +197,9 @@ pub fn add_body(
             (DynamicsError::BodyInsideTable { contact: i, gap }, _, Some(contact)) => {
                 inside_table(&keys, b.position.as_ref(), contact, i, gap)
             }
+            (e @ DynamicsError::ContactIndeterminate { .. }, _, Some(contact)) => {
+                painleve_at_start(&keys, contact, on_table.as_ref(), attitude, &e)
+            }
             (e, _, Some(contact)) => keys.fail(contact, &format!("`contact`: {e}")),
             (e @ DynamicsError::InvalidState { .. }, _, _) => state_error(e),
             (e @ DynamicsError::MethodTakesNoInputs { .. }, _, _) => match &first_input {
@@ -219,6 +237,31 @@ fn watched_touching(
         Shortest(gap)
     );
     keys.fail_at(span, &message)
+}
+
+/// The error for Painlevé's case when a body on the table (`on_table`: its
+/// contacts and centre of mass at attitude `q`) is added: at the `mu` key
+/// of the first contact that touches at the start with friction (else
+/// the first table).
+fn painleve_at_start(
+    keys: &Keys<'_>,
+    contacts: &Spanned<RawContacts>,
+    on_table: Option<&(Vec<TableContact>, DVec3)>,
+    q: DQuat,
+    error: &DynamicsError,
+) -> CliError {
+    let (laws, position) = on_table.map_or((&[][..], DVec3::ZERO), |(c, p)| (c.as_slice(), *p));
+    let touching_with_friction = |c: &TableContact| {
+        let gap = position.z + c.shape.contact_from_com_world(q.normalize()).z;
+        c.law.mu() > 0.0 && gap <= 1e-12
+    };
+    let index = laws.iter().position(touching_with_friction).unwrap_or(0);
+    let mu = laws.get(index).map_or(f64::NAN, |c| c.law.mu());
+    let tables = contact::tables(contacts);
+    let span = tables.get(index).map_or(contacts.span(), |(raw, span)| {
+        raw.mu_span().unwrap_or(span.clone())
+    });
+    keys.fail_at(span, &contact::painleve_message(index, mu, error))
 }
 
 /// The centre of mass above the origin at the height where the lowest of

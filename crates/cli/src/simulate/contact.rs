@@ -81,6 +81,27 @@ pub struct RawContact {
     contensou_radius: Option<Spanned<f64>>,
 }
 
+impl RawContact {
+    /// Where the `mu` key is, if given.
+    pub fn mu_span(&self) -> Option<std::ops::Range<usize>> {
+        self.mu.as_ref().map(Spanned::span)
+    }
+}
+
+/// The message (after the body's name) for Painlevé's case at contact
+/// `index` (0-based) of a body on the table, whose law has `mu`: the
+/// table's `error` ([`DynamicsError::ContactIndeterminate`]) read as the
+/// bad input it is — no normal force keeps that contact sliding, a
+/// friction coefficient beyond the bound of the slip.
+pub fn painleve_message(index: usize, mu: f64, error: &DynamicsError) -> String {
+    format!(
+        "`contact.mu` = {} of [[body.contact]] #{} is beyond the Painlevé bound of its slip \
+         ({error}): no normal force keeps the sliding contact on the table; lower `mu`",
+        Shortest(mu),
+        index + 1
+    )
+}
+
 /// The friction name of the nonsmooth contacts of a body on the table.
 pub const COULOMB: &str = "coulomb";
 

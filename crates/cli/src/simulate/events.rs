@@ -28,7 +28,13 @@ use crate::numbers::Shortest;
 pub const HEADER: &str = "time,body,contact,kind,approach_speed,rebound_speed,accumulation_time";
 
 /// The name of an event's kind in the CSV.
-fn kind_name(kind: TableEventKind) -> &'static str {
+///
+/// ```
+/// use kreisel_cli::simulate::events::kind_name;
+/// use kreisel_dynamics::TableEventKind;
+/// assert_eq!(kind_name(TableEventKind::LiftOff), "lift_off");
+/// ```
+pub fn kind_name(kind: TableEventKind) -> &'static str {
     match kind {
         TableEventKind::Impact { .. } => "impact",
         TableEventKind::ImpactsAccumulate { .. } => "impacts_accumulate",
@@ -43,7 +49,7 @@ fn kind_name(kind: TableEventKind) -> &'static str {
 
 /// Every body's events in `world`, merged in time order (a stable sort:
 /// ties keep the scene order and each body's order).
-fn merged<'a>(world: &'a World, bodies: &'a Names) -> Vec<(&'a str, TableEvent)> {
+pub fn merged<'a>(world: &'a World, bodies: &'a Names) -> Vec<(&'a str, TableEvent)> {
     let mut all: Vec<(&str, TableEvent)> = bodies
         .iter()
         .flat_map(|(name, id)| {

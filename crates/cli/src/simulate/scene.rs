@@ -60,6 +60,9 @@ pub struct Scene {
     /// The lines of each body's contact tables, in file order (empty for
     /// a body without `contact`): a touchdown names its table's line.
     pub contact_lines: Vec<Vec<u64>>,
+    /// The lines of the `mu` keys of each body's contact tables, in file
+    /// order (`None` where not given): Painlevé's case names its `mu`.
+    pub mu_lines: Vec<Vec<Option<u64>>>,
 }
 
 /// The scene's path and text: turns spans into line numbers for errors.
@@ -252,6 +255,7 @@ pub fn parse_with_method(
     let mut names: HashSet<String> = HashSet::with_capacity(raw.body.len());
     let mut has_pivot = false;
     let mut contact_lines: Vec<Vec<u64>> = Vec::with_capacity(raw.body.len());
+    let mut mu_lines: Vec<Vec<Option<u64>>> = Vec::with_capacity(raw.body.len());
     let down = gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0;
     for (n, raw_body) in raw.body.iter().enumerate() {
         if let Some(contact) = raw_body.get_ref().contact_span()
@@ -284,6 +288,12 @@ pub fn parse_with_method(
         bodies.push((name, id));
         let spans = raw_body.get_ref().contact_spans();
         contact_lines.push(spans.into_iter().map(|s| file.line_of(s.start)).collect());
+        let mu = raw_body.get_ref().mu_spans();
+        mu_lines.push(
+            mu.into_iter()
+                .map(|s| s.map(|s| file.line_of(s.start)))
+                .collect(),
+        );
     }
     if let Some(name) = &sim.method
         && has_pivot
@@ -298,6 +308,7 @@ pub fn parse_with_method(
         bodies,
         has_pivot,
         contact_lines,
+        mu_lines,
     })
 }
 

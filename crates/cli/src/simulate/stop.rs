@@ -5,7 +5,7 @@
 use std::io;
 use std::path::Path;
 
-use kreisel_dynamics::{DynamicsError, Plan};
+use kreisel_dynamics::{ContactMode, DynamicsError, Plan};
 
 use super::methods::AUTO;
 use super::scene::Scene;
@@ -40,8 +40,20 @@ impl Stop {
     /// that chatter, an impact the law cannot resolve without gaining
     /// energy): the rows before it are the motion up to the event. A
     /// divergence, a refused step or a number that is not finite is no
-    /// event: the run failed.
-    pub(super) fn is_event(&self) -> bool {
+    /// event: the run failed. Neither is Painlevé's case on the table
+    /// (an indeterminate contact of a body of `scene` on the table): its
+    /// `mu` is beyond the bound of the slip, bad input, and nothing is
+    /// written.
+    pub(super) fn is_event(&self, scene: &Scene) -> bool {
+        if let Stop::Diverged {
+            body,
+            error: DynamicsError::ContactIndeterminate { .. },
+            ..
+        } = self
+            && Failed::of(scene, *body, f64::NAN).on_table
+        {
+            return false;
+        }
         matches!(
             self,
             Stop::Diverged {
@@ -70,9 +82,8 @@ impl Stop {
                 output: output.clone(),
                 source,
             },
-            Stop::Diverged { body, time, error } => {
-                diverged(path, &Failed::of(scene, body, time), &error, method)
-            }
+            Stop::Diverged { body, time, error } => painleve_on_table(scene, path, body, &error)
+                .unwrap_or_else(|| diverged(path, &Failed::of(scene, body, time), &error, method)),
             Stop::NonFinite { body, time, column } => CliError::Scene {
                 path: path.to_owned(),
                 line: None,
@@ -135,6 +146,47 @@ impl<'a> Failed<'a> {
             time,
         }
     }
+}
+
+/// Painlevé's case of body number `body` (0-based) of `scene` on the
+/// table, at `path`: one line at the `mu` key of the contact that slips
+/// (the first one, else the first closed one), naming the body; `None`
+/// for any other error or body.
+fn painleve_on_table(
+    scene: &Scene,
+    path: &Path,
+    body: usize,
+    error: &DynamicsError,
+) -> Option<CliError> {
+    if !matches!(error, DynamicsError::ContactIndeterminate { .. }) {
+        return None;
+    }
+    let (name, id) = scene.bodies.get(body)?;
+    let run = scene.world.table_motion(*id)?;
+    let modes = run.modes();
+    let index = modes
+        .iter()
+        .position(|m| *m == ContactMode::Slipping)
+        .or_else(|| modes.iter().position(|m| *m != ContactMode::Open))
+        .unwrap_or(0);
+    let mu = run
+        .body()
+        .contacts()
+        .get(index)
+        .map_or(f64::NAN, |c| c.law.mu());
+    let line = scene
+        .mu_lines
+        .get(body)
+        .and_then(|lines| lines.get(index).copied().flatten())
+        .or_else(|| scene.contact_lines.get(body)?.get(index).copied());
+    Some(CliError::Scene {
+        path: path.to_owned(),
+        line,
+        message: format!(
+            "body `{name}`: {}",
+            super::contact::painleve_message(index, mu, error)
+        ),
+    })
 }
 
 /// The one line for a body whose run diverged: the scene, the body, the
@@ -252,7 +304,7 @@ mod tests {
             time: 0.3,
             source: Box::new(error.clone()),
         });
-        assert!(stop.is_event());
+        assert!(stop.is_event(&scene));
         let message = stop
             .into_error(&scene, path, AUTO, &Stream::Standard)
             .to_string();

@@ -20,5 +20,7 @@ mod plot;
 mod rattleback;
 mod support;
 mod table;
+mod table_painleve;
+mod table_superball;
 mod threads;
 mod tolerance;

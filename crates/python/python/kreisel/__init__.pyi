@@ -1,7 +1,7 @@
 """Type stubs of kreisel (the native module kreisel._native, re-exported)."""
 
 import os
-from typing import Any, Literal, Optional, Sequence, Union
+from typing import Any, Literal, Optional, Sequence, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -121,14 +121,33 @@ def mass_properties_from_arrays(
 # t, body (str array), qw, qx, qy, qz, wx, wy, wz, energy, lx, ly, lz, x, y, z,
 # vx, vy, vz: one entry per body and output time.
 
+# With events=True: (rows, events), events the rows of `--events FILE`:
+# (time, body, contact, kind, approach_speed, rebound_speed, accumulation_time),
+# contact the [[body.contact]] table's number (1 = the first) or None, the
+# speeds and accumulation_time None where the CSV is empty.
+
+_SceneEvent = tuple[float, str, Optional[int], str, Optional[float], Optional[float], Optional[float]]
+_TableEvent = tuple[float, Optional[int], str, Optional[float], Optional[float], Optional[float]]
+
+@overload
 def simulate(
     scene: Union[str, os.PathLike[str]],
     method: Optional[str] = None,
     threads: Optional[int] = None,
+    *,
+    events: Literal[False] = False,
 ) -> dict[str, npt.NDArray[Any]]: ...
+@overload
+def simulate(
+    scene: Union[str, os.PathLike[str]],
+    method: Optional[str] = None,
+    threads: Optional[int] = None,
+    *,
+    events: Literal[True],
+) -> tuple[dict[str, npt.NDArray[Any]], list[_SceneEvent]]: ...
 
 class World:
-    """Rigid bodies (free or on a pivot) moved by the engine; SI units, radians."""
+    """Rigid bodies (free, on a pivot or on the table) moved by the engine; SI units, radians."""
 
     def __init__(self, dt: float, gravity: _Vec3 = ..., method: str = "auto") -> None: ...
     def add_body(
@@ -146,6 +165,7 @@ class World:
         torque_body: Optional[_Vec3] = None,
         force: Optional[_Vec3] = None,
         angular_damping: float = 0.0,
+        contacts: Optional[Sequence[dict[str, Any]]] = None,
     ) -> int: ...
     def set_inputs(
         self,
@@ -168,6 +188,9 @@ class World:
     def gravity(self) -> npt.NDArray[np.float64]: ...
     def __len__(self) -> int: ...
     def plan(self, body: int) -> str: ...
+    def events(self, body: int) -> list[_TableEvent]:
+        """(time, contact (index in contacts, or None), kind, approach_speed, rebound_speed,
+        accumulation_time) per event of a body on the table, in time order."""
     def state(self, body: int) -> dict[str, Any]:
         """time, attitude (4,), omega_body (3,), l_world (3,), energy, position (3,), velocity (3,)."""
     def states(self) -> dict[str, Any]:

@@ -1,0 +1,298 @@
+//! Energy at huge friction (issue 26: "energy never rises beyond the work
+//! of applied inputs, at any μ up to the Painlevé bound, at any dt (test
+//! μ = 1000)"): bodies on the table with μ = 1000 moved through the World
+//! and read at dt = 1/60, 10⁻³ and 10⁻⁵ s. At every frame the energy is at
+//! most the previous frame's plus 10⁻¹² E0, and the runs agree at their
+//! common times (multiples of 0.05 s) to the table's tolerance.
+//!
+//! A ball (no Painlevé bound: its centre of mass at its centre) passes.
+//! Bodies whose contact point is off the vertical through the centre of
+//! mass have a Painlevé bound in some slip directions, and at μ = 1000 two
+//! runs stop where the motion goes on: the ignored regressions below,
+//! reported to the lead with their times and states.
+
+mod common;
+
+use common::tippe_top::{A, G, I1, I3, M, OMEGA0, R, THETA0, stem};
+use glam::{DQuat, DVec3};
+use kreisel::dynamics::{
+    Body, BodyBuilder, BodyId, BodyState, ContactLaw, ContactShape, DynamicsError,
+    EllipsoidContact, SphereContact, TableContact, TableEvent, TableEventKind, World,
+};
+
+/// The friction coefficient of every run here.
+const MU: f64 = 1000.0;
+/// The grids the runs are read on, s.
+const STEPS: [f64; 3] = [1.0 / 60.0, 1e-3, 1e-5];
+/// The common times of the three grids: multiples of 1/20 s.
+const COMMON: f64 = 0.05;
+
+/// A run of `body` through the World read every `dt` up to `t_end`: the
+/// states at the frames, the events, and the error that stopped it.
+struct Run {
+    frames: Vec<BodyState>,
+    events: Vec<TableEvent>,
+    stopped: Option<DynamicsError>,
+}
+
+/// Moves `body` in a World of step `dt` frame by frame up to `t_end` (or
+/// an error); each frame's energy at most the last one's plus `slack` J.
+fn run(body: &BodyBuilder, dt: f64, t_end: f64, slack: f64) -> Run {
+    let mut world = World::try_new(DVec3::new(0.0, 0.0, -G), dt).unwrap();
+    let id: BodyId = world.add(body.clone().try_build().unwrap()).unwrap();
+    let mut frames = vec![world.state(id).unwrap()];
+    let n = (t_end / dt).round() as u64;
+    let mut rise = f64::NEG_INFINITY;
+    let mut stopped = None;
+    for _ in 0..n {
+        if let Err(e) = world.advance_steps(1) {
+            stopped = Some(e);
+            break;
+        }
+        let s = world.state(id).unwrap();
+        let last = frames.last().unwrap().energy;
+        rise = rise.max(s.energy - last);
+        assert!(
+            s.energy <= last + slack,
+            "dt = {dt:e}: the energy rose from {last:e} J to {:e} J at t = {} s",
+            s.energy,
+            s.time
+        );
+        frames.push(s);
+    }
+    eprintln!(
+        "dt = {dt:e}: {} frames, largest change between frames {rise:e} J (slack {slack:e} J, E0 = {:e} J)",
+        frames.len(),
+        frames[0].energy
+    );
+    Run {
+        frames,
+        events: world.events(id).unwrap().to_vec(),
+        stopped,
+    }
+}
+
+/// The state at time `t` of a run (a frame there).
+fn at(run: &Run, t: f64) -> &BodyState {
+    run.frames
+        .iter()
+        .find(|s| (s.time - t).abs() < 1e-9)
+        .unwrap_or_else(|| panic!("no frame at {t}"))
+}
+
+/// Runs `body` on the three grids to `t_end`; the largest differences of
+/// attitude (rad), position (m) and velocity (m/s) at the common times.
+fn on_every_grid(body: &BodyBuilder, t_end: f64, slack: f64) -> (Vec<Run>, [f64; 3]) {
+    let runs: Vec<Run> = STEPS
+        .iter()
+        .map(|&dt| run(body, dt, t_end, slack))
+        .collect();
+    let mut worst = [0.0f64; 3];
+    let reached = runs
+        .iter()
+        .map(|r| r.frames.last().unwrap().time)
+        .fold(t_end, f64::min);
+    let common = (reached / COMMON + 1e-9).floor() as usize;
+    for k in 1..=common {
+        let t = k as f64 * COMMON;
+        let fine = at(&runs[2], t);
+        for coarse in &runs[..2] {
+            let s = at(coarse, t);
+            let angle = kreisel::kinematics::rotation_angle_between(
+                s.world_from_body,
+                fine.world_from_body,
+            );
+            worst[0] = worst[0].max(angle);
+            worst[1] = worst[1].max((s.position - fine.position).length());
+            worst[2] = worst[2].max((s.velocity - fine.velocity).length());
+        }
+    }
+    eprintln!("grids agree at {common} common times to {worst:?} (rad, m, m/s)");
+    (runs, worst)
+}
+
+/// Leine & Glocker's tippe top with its stem (ball and stem each with
+/// μ = 1000, Contensou radius 0.5 mm, e = 0), in their start.
+fn tippe_top() -> BodyBuilder {
+    let law = ContactLaw::new(MU).try_with_contensou_radius(5e-4).unwrap();
+    let ball = ContactShape::Sphere(SphereContact::try_new(R, DVec3::new(0.0, 0.0, A)).unwrap());
+    let q = DQuat::from_rotation_x(THETA0);
+    let height = R - (q * DVec3::new(0.0, 0.0, A)).z;
+    Body::from_principal_moments(M, DVec3::new(I1, I1, I3))
+        .world_from_body(q)
+        .omega_body(DVec3::new(0.0, 0.0, OMEGA0))
+        .on_table(
+            DVec3::new(0.0, 0.0, height),
+            DVec3::ZERO,
+            &[
+                TableContact { shape: ball, law },
+                TableContact { shape: stem(), law },
+            ],
+        )
+}
+
+/// A flat ellipsoid (semi-axes 6, 4, 1.5 cm, 0.3 kg) thrown at a tilt onto
+/// the table with spin, μ = 1000 and restitution `e`.
+fn thrown_ellipsoid(e: f64) -> BodyBuilder {
+    let axes = DVec3::new(0.06, 0.04, 0.015);
+    let m = 0.3;
+    let moments = DVec3::new(
+        axes.y * axes.y + axes.z * axes.z,
+        axes.x * axes.x + axes.z * axes.z,
+        axes.x * axes.x + axes.y * axes.y,
+    ) * (m / 5.0);
+    let law = ContactLaw::new(MU).try_with_restitution(e).unwrap();
+    let shape = ContactShape::Ellipsoid(EllipsoidContact::try_new(axes, DVec3::ZERO).unwrap());
+    Body::from_principal_moments(m, moments)
+        .world_from_body(DQuat::from_rotation_x(0.5) * DQuat::from_rotation_y(0.3))
+        .omega_body(DVec3::new(4.0, -3.0, 12.0))
+        .on_table(
+            DVec3::new(0.0, 0.0, 0.15),
+            DVec3::new(1.5, -0.5, -1.0),
+            &[TableContact { shape, law }],
+        )
+}
+
+/// A ball (its centre of mass at its centre: no Painlevé bound) thrown
+/// spinning onto the table, μ = 1000, restitution `e`.
+fn thrown_ball(e: f64) -> BodyBuilder {
+    let law = ContactLaw::new(MU).try_with_restitution(e).unwrap();
+    let shape = ContactShape::Sphere(SphereContact::try_new(0.03, DVec3::ZERO).unwrap());
+    Body::from_principal_moments(0.1, DVec3::splat(0.4 * 0.1 * 0.03 * 0.03))
+        .omega_body(DVec3::new(5.0, 20.0, 8.0))
+        .on_table(
+            DVec3::new(0.0, 0.0, 0.3),
+            DVec3::new(2.0, 0.5, -1.0),
+            &[TableContact { shape, law }],
+        )
+}
+
+/// The coefficient of the normal force in the gap's acceleration of the
+/// tippe top's ball contact slipping in `state` with friction `mu`
+/// (Contensou radius 0.5 mm), computed here from the rigid body's
+/// response (not the library's Delassus code): with `ρ` the contact point
+/// from the centre of mass, `n = ẑ`, `ε = (3π/16) r_c`, the slip
+/// `γ = (v_Px, v_Py, ε ω_z)` and `d = γ/|γ|`,
+///
+/// ```text
+/// κ = 1/m + (ρ×n)·I⁻¹(ρ×n) − μ [d_x (ρ×n)·I⁻¹(ρ×x̂) + d_y (ρ×n)·I⁻¹(ρ×ŷ) + d_z ε (ρ×n)·I⁻¹ẑ]
+/// ```
+///
+/// `κ ≤ 0` is Painlevé's case: no normal force keeps the contact.
+fn painleve_coefficient(state: &BodyState, mu: f64) -> f64 {
+    let q = state.world_from_body.normalize();
+    let rho = q * DVec3::new(0.0, 0.0, A) - DVec3::new(0.0, 0.0, R);
+    let a = glam::DMat3::from_quat(q);
+    let inverse =
+        a * glam::DMat3::from_diagonal(DVec3::new(1.0 / I1, 1.0 / I1, 1.0 / I3)) * a.transpose();
+    let omega = q * state.omega_body;
+    let v_p = state.velocity + omega.cross(rho);
+    let eps = 3.0 * std::f64::consts::PI / 16.0 * 5e-4;
+    let d = DVec3::new(v_p.x, v_p.y, eps * omega.z).normalize();
+    let rn = rho.cross(DVec3::Z);
+    let g = |w: DVec3| rn.dot(inverse * w);
+    let coupling = DVec3::new(
+        g(rho.cross(DVec3::X)),
+        g(rho.cross(DVec3::Y)),
+        eps * g(DVec3::Z),
+    );
+    1.0 / M + g(rn) - mu * d.dot(coupling)
+}
+
+/// The largest energy rise allowed between frames, relative to `E0`
+/// (the brief's; measured on the ball: 3.3e-16 J on 0.566 J, 1.5 ulp).
+const RISE: f64 = 1e-12;
+
+#[test]
+fn a_ball_thrown_at_mu_1000_never_gains_energy_on_any_grid() {
+    // Its centre of mass at its centre: no Painlevé bound. It lands, the
+    // impact sticks the contact (the impulse inside the cone of μ = 1000),
+    // it bounces (e = 0.5) or rolls (e = 0).
+    for e in [0.5, 0.0] {
+        let body = thrown_ball(e);
+        let e0 = run(&body, 1.0, 0.0, 0.0).frames[0].energy;
+        let (runs, worst) = on_every_grid(&body, 0.5, RISE * e0);
+        for r in &runs {
+            assert!(r.stopped.is_none(), "{:?}", r.stopped);
+            assert_eq!(r.events.len(), runs[0].events.len());
+            assert!((r.frames.last().unwrap().time - 0.5).abs() < 1e-12);
+        }
+        let first = runs[0].events[0];
+        // It lands at z = R: 0.3 − v t − g t²/2 = 0.03.
+        let t1 = (-1.0 + (1.0f64 + 2.0 * G * 0.27).sqrt()) / G;
+        assert!((first.time - t1).abs() < 1e-12, "{first} vs {t1}");
+        // Measured: 4.4e-11 rad, 1.5e-13 m, 6.7e-16 m/s (rtol = atol = 1e-10).
+        assert!(
+            worst[0] < 1e-9 && worst[1] < 1e-11 && worst[2] < 1e-11,
+            "{worst:?}"
+        );
+    }
+}
+
+#[test]
+fn the_tippe_top_at_mu_1000_dissipates_below_the_painleve_bound_while_it_slips() {
+    // Contensou's drilling at μ = 1000 takes 94 % of the energy in 7 ms.
+    let body = tippe_top();
+    let e0 = run(&body, 1.0, 0.0, 0.0).frames[0].energy;
+    // (The 1/60 grid has no frame before the run stops at 7.26 ms.)
+    for dt in [1e-3, 1e-5] {
+        let r = run(&body, dt, 0.007, RISE * e0);
+        assert!(r.stopped.is_none(), "{:?}", r.stopped);
+        let end = r.frames.last().unwrap();
+        assert!(end.energy < 0.07 * e0, "{:e}", end.energy);
+        // The slipping contact stays far from Painlevé's case: κ ≈ 1/m.
+        for s in &r.frames {
+            let kappa = painleve_coefficient(s, MU);
+            assert!(kappa > 160.0, "t = {}: κ = {kappa:e} 1/kg", s.time);
+        }
+    }
+}
+
+/// Regression (reported to the lead, not fixed here): as the tippe top's
+/// slip dies at μ = 1000 (3e-5 m/s at 7.26 ms, κ = 166.7 1/kg > 0 along
+/// it, `painleve_coefficient`), the run stops with
+/// `ContactIndeterminate { time: 0.0072642340741, compliance: −371.78 }` on
+/// every grid — a slip direction reversed past the stick, among the
+/// directions whose κ is negative (down to −3858 1/kg there) — where the
+/// contact sticks (the friction it needs is far inside the cone).
+#[test]
+#[ignore = "ContactIndeterminate at 7.264e-3 s where the slip stops: reported to the lead (issue 26)"]
+fn the_tippe_top_at_mu_1000_sticks_when_its_slip_dies() {
+    let body = tippe_top();
+    let e0 = run(&body, 1.0, 0.0, 0.0).frames[0].energy;
+    let (runs, worst) = on_every_grid(&body, 0.1, RISE * e0);
+    for r in &runs {
+        assert!(r.stopped.is_none(), "{:?}", r.stopped);
+        assert!(r.events.iter().any(|e| e.kind == TableEventKind::Stick));
+    }
+    assert!(worst[0] < 1e-8 && worst[1] < 1e-10, "{worst:?}");
+}
+
+/// Regression (reported to the lead, not fixed here): the ellipsoid thrown
+/// at μ = 1000 (plastic) lands at 0.0803 s and sticks, slips at 0.14518 s
+/// as its normal force vanishes, lifts off at 0.1614 s and lands again at
+/// 0.2106 s — then the outcome depends on the grid: dt = 1/60 stops with
+/// `ContactIndeterminate` at 0.2241863 s (κ = −1279 1/kg), dt = 1e-3 with
+/// `ContactUnsolved` at 0.4256222 s, dt = 1e-5 with `ContactUnsolved` at
+/// 0.1451844045986 s (the slip's own time). In its rolling phase the
+/// energy also rises by up to 7.5e-12 J on 0.99 J between frames (the
+/// integration error at rtol 1e-10, above the 1e-12 E0 asked here).
+#[test]
+#[ignore = "grid-dependent ContactUnsolved/ContactIndeterminate at mu = 1000: reported to the lead (issue 26)"]
+fn a_thrown_ellipsoid_at_mu_1000_has_one_outcome_on_every_grid() {
+    let body = thrown_ellipsoid(0.0);
+    let e0 = run(&body, 1.0, 0.0, 0.0).frames[0].energy;
+    let (runs, worst) = on_every_grid(&body, 0.5, RISE * e0);
+    let outcome = |r: &Run| r.stopped.as_ref().map(ToString::to_string);
+    for r in &runs[1..] {
+        assert_eq!(outcome(r), outcome(&runs[0]));
+        assert_eq!(r.events.len(), runs[0].events.len());
+        for (a, b) in r.events.iter().zip(&runs[0].events) {
+            assert!(
+                a.kind == b.kind && (a.time - b.time).abs() < 1e-9,
+                "{a} vs {b}"
+            );
+        }
+    }
+    assert!(worst[0] < 1e-8 && worst[1] < 1e-10, "{worst:?}");
+}
