@@ -38,6 +38,26 @@ mod bouncing_ball;
 
 use bouncing_ball::dropped_ball;
 
+#[allow(dead_code)]
+#[path = "../tests/common/euler_disk.rs"]
+mod euler_disk;
+
+/// Euler's disk (μ = 5, the air layer's floor 1e-5 a) from its steady
+/// rolling at 0.2 rad to 4 s, past 700 turns of its precession: its tilt's
+/// sine there.
+fn euler_disk(rtol: f64) -> (f64, usize, f64) {
+    let clock = Instant::now();
+    let mut run = euler_disk::rolling_disk(5.0, 1e-5 * euler_disk::A, 0.2, rtol);
+    run.try_advance_to(4.0).unwrap();
+    let n = run.state().world_from_body.normalize() * glam::DVec3::Z;
+    let wall_ms = clock.elapsed().as_secs_f64() * 1e3;
+    (
+        glam::DVec3::Z.cross(n).length(),
+        run.stats().evaluations,
+        wall_ms,
+    )
+}
+
 /// Tolerances (rtol = atol).
 const TOLERANCES: [f64; 7] = [1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12];
 
@@ -108,8 +128,18 @@ fn main() {
         .length();
     let reference_12 = tippe_top(1e-13, 1.2).0;
     let reference_20 = tippe_top(1e-13, 2.0).0;
+    let disk_reference = euler_disk(1e-13).0;
     let mut points = Vec::new();
     for &rtol in &TOLERANCES {
+        let (tilt, evaluations, wall_ms) = euler_disk(rtol);
+        points.push(Point {
+            problem: "euler_disk",
+            rtol,
+            evaluations,
+            error: (tilt - disk_reference).abs(),
+            time_error: f64::NAN,
+            wall_ms,
+        });
         points.push(ball(rtol));
         let (run, wall_ms) = tippe_top(rtol, 1.2);
         points.push(Point {

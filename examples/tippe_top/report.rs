@@ -96,6 +96,7 @@ fn event_words(e: &TableEvent, resolution: f64) -> Option<String> {
         }
         TableEventKind::Touchdown => format!("the {name} touches down"),
         TableEventKind::LiftOff => format!("the {name} lifts off"),
+        TableEventKind::LandsFlat => format!("the {name} lands flat"),
         TableEventKind::Rest => "the top comes to rest".to_owned(),
         TableEventKind::Stick | TableEventKind::Slip => return None,
     })

@@ -4,6 +4,7 @@
 
 pub mod bouncing_ball;
 pub mod contact;
+pub mod euler_disk;
 pub mod free_body;
 pub mod heavy_top;
 pub mod shapes;

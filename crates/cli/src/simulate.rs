@@ -118,6 +118,11 @@ Scene (TOML; SI units, radians):
   tangential_restitution = 0 coulomb only: Garwin's e_T in [0, 1] [default: 0]
   contensou_radius = 5e-4    coulomb only: the contact patch's radius, m,
                              for Contensou's drilling friction [default: 0]
+  air_viscosity = 1.8e-5     coulomb disk only: Moffatt's air layer under the
+                             rim (Pa s), the dissipation that brings Euler's
+                             disk down
+  air_gap = 1e-6             with air_viscosity: the layer's floor, m
+                             [default: 1e-6]
                              The body starts touching: the height of its
                              centre of mass follows from its attitude (a
                              `position` z must agree to 1e-9 m); x, y from

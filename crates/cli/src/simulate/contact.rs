@@ -15,6 +15,8 @@
 //! restitution = e             coulomb only: Newton's, in [0, 1] [default: 0]
 //! tangential_restitution = eT coulomb only: Garwin's, in [0, 1] [default: 0]
 //! contensou_radius = r_c      coulomb only: the drilling patch, m, ≥ 0 [default: 0]
+//! air_viscosity = μ_air       coulomb disk only: Moffatt's air layer under the rim, Pa s, ≥ 0
+//! air_gap = h₀                with air_viscosity: the layer's floor, m, > 0 [default: 1e-6]
 //! ```
 //!
 //! **`friction = "coulomb"`: the body is on the table.** A body whose
@@ -50,7 +52,7 @@ use std::str::FromStr;
 
 use glam::DVec3;
 use kreisel_dynamics::{
-    ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, Friction,
+    AirLayer, ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, Friction,
     FrictionModel, MAX_OTHER_CONTACTS, SphereContact, TableBody, TableContact,
 };
 use serde::Deserialize;
@@ -79,6 +81,8 @@ pub struct RawContact {
     restitution: Option<Spanned<f64>>,
     tangential_restitution: Option<Spanned<f64>>,
     contensou_radius: Option<Spanned<f64>>,
+    air_viscosity: Option<Spanned<f64>>,
+    air_gap: Option<Spanned<f64>>,
 }
 
 impl RawContact {
@@ -314,6 +318,31 @@ fn law(keys: &Keys<'_>, raw: &RawContact, given: &Spanned<String>) -> Result<Con
     if let Some(r) = &raw.contensou_radius {
         law = keyed(r, law.try_with_contensou_radius(*r.get_ref()))?;
     }
+    if let Some(viscosity) = &raw.air_viscosity {
+        if raw.shape.get_ref() != "disk" {
+            return Err(keys.fail(
+                viscosity,
+                "`contact.air_viscosity` is Moffatt's air layer under a disk rim: only for \
+                 shape = \"disk\"",
+            ));
+        }
+        let floor = raw
+            .air_gap
+            .as_ref()
+            .map_or(DEFAULT_AIR_GAP, |g| *g.get_ref());
+        let layer = AirLayer::try_new(*viscosity.get_ref(), floor);
+        let at = match &layer {
+            Err(DynamicsError::InvalidContact {
+                parameter: "air_gap",
+                ..
+            }) => raw.air_gap.as_ref().unwrap_or(viscosity),
+            _ => viscosity,
+        };
+        law = keyed(at, layer.map(|l| law.with_air_layer(l)))?;
+    } else {
+        let why = "needs `air_viscosity` (the air layer's viscosity)";
+        not_with(keys, "air_gap", &raw.air_gap, why)?;
+    }
     Ok(law)
 }
 
@@ -366,8 +395,13 @@ fn not_coulomb_keys(keys: &Keys<'_>, raw: &RawContact, why: &str) -> Result<(), 
         &raw.tangential_restitution,
         why,
     )?;
-    not_with(keys, "contensou_radius", &raw.contensou_radius, why)
+    not_with(keys, "contensou_radius", &raw.contensou_radius, why)?;
+    not_with(keys, "air_viscosity", &raw.air_viscosity, why)?;
+    not_with(keys, "air_gap", &raw.air_gap, why)
 }
+
+/// The air layer's floor `h₀` when `air_gap` is not given, m.
+const DEFAULT_AIR_GAP: f64 = 1e-6;
 
 /// `key` given where it has no meaning: an error at its line.
 fn not_with<T>(

@@ -35,13 +35,22 @@
 //! (a gain is [`crate::DynamicsError::ImpactGainsEnergy`]), a contact that
 //! starts to stick loses its residual slip by a dissipative impulse.
 //!
+//! # Disks: rim, face and air
+//! A disk rim that reaches flat (its axis within [`DISK_FLAT_TILT`] of the
+//! vertical) while touching either rocks on through flat — its far rim
+//! point strikes, both rim points taking part in the impact — or, when its
+//! face arrives slowly (normal speeds below [`FACE_LANDING`] of the speed
+//! scale), lands on its face (a plastic landing, [`TableEventKind::LandsFlat`])
+//! and slides and spins there under the face's Coulomb–Contensou friction
+//! until it rests (`face`). [`AirLayer`] is Moffatt's viscous air layer
+//! under a rim, the dissipation of Euler's disk.
+//!
 //! # What it does not do (yet)
-//! A disk's flat face is not a contact shape yet: a rim that comes to lie
-//! flat (its axis within [`DISK_FLAT_TILT`] of the vertical — a dropped
-//! coin settling, Euler's disk at its end) stops the run with
-//! [`crate::DynamicsError::DiskFlat`] and its time. Rolling resistance is
-//! not modelled. Free flight is exact (parabola and the torque-free
+//! Rolling resistance is not modelled. A face does not bounce, and inputs
+//! are not followed on a face ([`crate::DynamicsError::DiskFlat`]). Free
+//! flight is exact (parabola and the torque-free
 //! [`crate::ExactSolution`]); applied inputs ([`TableBody::try_with_inputs`])
+//! and air layers
 //! act beside the contacts (the flight is then integrated).
 
 mod air_layer;

@@ -59,7 +59,9 @@ pub const TABLE_RESOLUTION: f64 = 1e-9;
 pub const TABLE_ACCUMULATION: f64 = 1e-4;
 
 /// The sine of the smallest tilt of a disk rim's axis from the vertical
-/// the rim contact follows ([`DynamicsError::DiskFlat`] below it).
+/// the rim contact follows: below it a touching disk lies flat (it lands
+/// on its face, or rocks on through flat when its face arrives fast; see
+/// [`FACE_LANDING`]).
 pub const DISK_FLAT_TILT: f64 = 1e-6;
 
 /// The speed, relative to the body's speed scale, below which a disk
@@ -431,8 +433,8 @@ impl TableMotion {
     /// ([`DynamicsError::ContactIndeterminate`] — Painlevé —,
     /// [`DynamicsError::ImpactGainsEnergy`],
     /// [`DynamicsError::ContactModesChatter`]); [`DynamicsError::DiskFlat`]
-    /// when a disk rim comes to lie flat (its face is not a contact shape
-    /// yet). The motion keeps the last state reached.
+    /// when a disk lands flat whose face cannot hold it flat or that has
+    /// inputs. The motion keeps the last state reached.
     pub fn try_advance_to(&mut self, t_end: f64) -> Result<(), DynamicsError> {
         self.advance(t_end, false).map(|_| ())
     }
