@@ -1,5 +1,5 @@
 //! Euler's disk spinning down (issue 26): a thin disk rolling on its rim
-//! under Moffatt's air layer ([`AirLayer`]: the viscous dissipation of the
+//! under Moffatt's air layer (`AirLayer`: the viscous dissipation of the
 //! air between disk and table, Moffatt, Nature 404 (2000) 833) follows
 //! Moffatt's finite-time singularity
 //!
@@ -9,17 +9,18 @@
 //!
 //! — the reference: Moffatt's law from the rolling disk's energy
 //! `E = (3/2) M g a sin α` and its steady precession (closed forms, not
-//! the code's), fitted over two decades of `t₀ − t` (1 s to 0.01 s).
+//! the code's), fitted over two decades of `t₀ − t` (3 s to 0.03 s).
 //! The run starts in the exact steady rolling with the centre at rest
 //! (`Ω² sin α₀ = 4 g/a`, `ω = −Ω sin α₀ û`, û the rim's lowest direction).
 //! Friction μ = 5 keeps the rim rolling to the end of Moffatt's regime
 //! (at μ = 0.5 the rim starts to slip at α ≈ 0.063).
 
-use glam::{DMat3, DQuat, DVec3};
-use kreisel::dynamics::{
-    AdaptiveTolerance, AirLayer, ContactLaw, ContactShape, DiskContact, GroundTopState, TableBody,
-    TableContact, TableMotion,
-};
+use glam::DVec3;
+use kreisel::dynamics::TableMotion;
+
+mod common;
+
+use common::euler_disk::{A, G, M, MU_AIR, rolling_disk};
 
 /// `(t, sin α, Ω, E)` of the run now (`Ω` the precession of the axis).
 fn sample(run: &TableMotion) -> (f64, f64, f64, f64) {
