@@ -13,7 +13,8 @@
 //! The run starts in the exact steady rolling with the centre at rest
 //! (`Ω² sin α₀ = 4 g/a`, `ω = −Ω sin α₀ û`, û the rim's lowest direction).
 //! Friction μ = 5 keeps the rim rolling to the end of Moffatt's regime
-//! (at μ = 0.5 the rim starts to slip at α ≈ 0.063).
+//! (at μ = 0.5 the disk hops at Moffatt's breakdown, 60 ms before t₀, and
+//! slips: `tests/table_regressions.rs`).
 
 use glam::DVec3;
 use kreisel::dynamics::TableMotion;

@@ -4,9 +4,13 @@
 
 use glam::{DMat3, DQuat, DVec3};
 use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactMode, ContactShape, EllipsoidContact, GroundTopState,
-    TableBody, TableContact, TableEventKind, TableMotion,
+    AdaptiveTolerance, ContactLaw, ContactMode, ContactShape, DiskContact, EllipsoidContact,
+    GroundTopState, TableBody, TableContact, TableEventKind, TableMotion,
 };
+
+mod common;
+
+use common::euler_disk;
 
 /// An ellipsoid thrown onto the table (μ = 1.12, plastic) sticks, then
 /// its friction reaches the cone and it slips. The slip starts from the
@@ -63,4 +67,71 @@ fn a_slip_that_starts_from_sticking_goes_on() {
         .expect("it slips");
     assert!((slip.time - 0.0119145).abs() < 1e-6, "{}", slip.time);
     assert!(run.body().energy(run.state()) < e0);
+}
+
+/// Euler's disk at μ = 0.5 (the air layer's floor 1e-3 a): it slips where
+/// the friction sits on the cone's edge, which took steps of 10⁻¹⁰ s (the
+/// slip's direction followed at 10⁻⁹ m/s; millions of steps per ms from
+/// 5.447 s on). With the direction held inside `SLIP_BAND` it runs to rest,
+/// lifting off at Moffatt's breakdown, landing on its rim, slipping,
+/// sticking, lying flat — the energy never rising.
+#[test]
+fn eulers_disk_slipping_on_the_cones_edge_runs_to_rest() {
+    let mut run = euler_disk::rolling_disk(0.5, 1e-3 * euler_disk::A, 0.2, 1e-8);
+    let e0 = run.body().energy(run.state());
+    let mut previous = e0;
+    for k in 1..=120 {
+        run.try_advance_to(0.1 * f64::from(k)).unwrap();
+        let e = run.body().energy(run.state());
+        assert!(
+            e <= previous + 1e-12 * e0,
+            "energy rose at {} s",
+            run.time()
+        );
+        previous = e;
+    }
+    assert!(run.is_resting());
+    assert_eq!(run.lying_flat_on(), Some(0));
+    let kinds: Vec<TableEventKind> = run.events().iter().map(|e| e.kind).collect();
+    assert!(kinds.contains(&TableEventKind::LiftOff), "{kinds:?}");
+    assert!(kinds.contains(&TableEventKind::LandsFlat), "{kinds:?}");
+    let stats = run.stats();
+    assert!(stats.accepted + stats.rejected < 2_000_000, "{stats:?}");
+}
+
+/// A coin thrown spinning onto the table wobbles through stick and slip
+/// (regression: 67 million steps for its first 3 s, the slip's direction
+/// followed at the resolution speed).
+#[test]
+fn a_spun_coin_wobbles_through_stick_and_slip_without_stalling() {
+    let (m, a) = (0.005, 0.012);
+    let rim = DiskContact::try_new(a, DVec3::ZERO, DVec3::Z).unwrap();
+    let law = ContactLaw::new(0.3).try_with_restitution(0.5).unwrap();
+    let inertia = DMat3::from_diagonal(DVec3::new(0.25, 0.25, 0.5) * m * a * a);
+    let contacts = vec![TableContact {
+        shape: ContactShape::Disk(rim),
+        law,
+    }];
+    let body = TableBody::try_new(m, inertia, contacts, 9.81).unwrap();
+    let start = GroundTopState {
+        com_world: DVec3::new(0.0, 0.0, 0.1),
+        velocity_world: DVec3::new(0.1, 0.0, 0.0),
+        world_from_body: DQuat::from_rotation_x(0.6),
+        l_world: DVec3::new(0.0, 0.0, 2e-8),
+    };
+    let mut run = TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10)).unwrap();
+    let e0 = run.body().energy(run.state());
+    let mut previous = e0;
+    for k in 1..=50 {
+        run.try_advance_to(0.02 * f64::from(k)).unwrap();
+        let e = run.body().energy(run.state());
+        assert!(
+            e <= previous + 1e-12 * e0,
+            "energy rose at {} s",
+            run.time()
+        );
+        previous = e;
+    }
+    let stats = run.stats();
+    assert!(stats.accepted + stats.rejected < 500_000, "{stats:?}");
 }

@@ -117,7 +117,7 @@ pub use stability::{
 };
 pub use state::PrincipalState;
 pub use table::{
-    AirLayer, ContactLaw, ContactMode, DISK_FLAT_TILT, FACE_LANDING, TABLE_ACCUMULATION,
+    AirLayer, ContactLaw, ContactMode, DISK_FLAT_TILT, FACE_LANDING, SLIP_BAND, TABLE_ACCUMULATION,
     TABLE_RESOLUTION, TableBody, TableContact, TableEvent, TableEventKind, TableMotion,
 };
 pub use world::{

@@ -70,5 +70,5 @@ pub use self::contact_problem::ContactMode;
 pub use self::table_body::{TableBody, TableContact};
 pub use self::table_event::{TableEvent, TableEventKind};
 pub use self::table_motion::{
-    DISK_FLAT_TILT, FACE_LANDING, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableMotion,
+    DISK_FLAT_TILT, FACE_LANDING, SLIP_BAND, TABLE_ACCUMULATION, TABLE_RESOLUTION, TableMotion,
 };

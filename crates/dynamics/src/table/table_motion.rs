@@ -64,6 +64,16 @@ pub const TABLE_ACCUMULATION: f64 = 1e-4;
 /// [`FACE_LANDING`]).
 pub const DISK_FLAT_TILT: f64 = 1e-6;
 
+/// The slip speed, relative to the body's speed scale, below which a
+/// slipping contact's friction keeps the direction it had when the slip
+/// entered the band (or the consistent direction a slip starts along)
+/// instead of following `γ_T/|γ_T|`: that direction turns at a rate
+/// `~ μ N W/|γ_T|`, so following it at tiny slips makes the motion stiff
+/// (steps of 10⁻¹⁰ s where the friction sits on the cone's edge, measured
+/// on Euler's disk starting to slip). The slip entering the band is an
+/// event; a slip that reverses inside it sticks.
+pub const SLIP_BAND: f64 = 1e-6;
+
 /// The speed, relative to the body's speed scale, below which a disk
 /// rim that reaches flat lands on its face (a plastic landing): its face's
 /// normal velocities `|v_z| + a |ω × n|` below it. Faster, the rim rocks
@@ -325,7 +335,7 @@ impl TableMotion {
         speed: f64,
     ) -> Result<Snapshot, DynamicsError> {
         let frame = ContactFrame::of(body, &state, t);
-        let forces = mode_forces(&frame, modes, TABLE_RESOLUTION * speed)?;
+        let forces = mode_forces(&frame, modes, SLIP_BAND * speed)?;
         let q = state.world_from_body;
         let w = frame.omega;
         let derivative = Derivative {
@@ -384,6 +394,7 @@ impl TableMotion {
     fn event_in(&self, end: &Snapshot, h: f64) -> bool {
         let start = &self.current;
         let floor = self.resolution_speed();
+        let band = SLIP_BAND * self.speed;
         for (i, mode) in self.modes.iter().enumerate() {
             let (r0, r1) = (&start.frame.rows[i], &end.frame.rows[i]);
             match mode.mode {
@@ -408,12 +419,12 @@ impl TableMotion {
                     if mode.mode == ContactMode::Sticking && friction > r1.mu * n {
                         return true;
                     }
-                    // The slip reversed, or fell below the resolution (its
-                    // direction is then no longer resolved).
+                    // The slip reversed, or crossed the edge of the band
+                    // within which its direction is held (SLIP_BAND).
                     if mode.mode == ContactMode::Slipping
                         && r1.friction_dimensions > 0
                         && (slip_progress(r0, r1, mode, floor) < 0.0
-                            || (r1.slip().length() <= floor && r0.slip().length() > floor))
+                            || ((r1.slip().length() <= band) != (r0.slip().length() <= band)))
                     {
                         return true;
                     }
@@ -583,6 +594,15 @@ impl TableMotion {
             if self.land_flat_disks()? && stop_at_event {
                 return Ok(true);
             }
+            if self.slip_within_resolution() {
+                // A slip that has fallen into the resolution band (without
+                // reversing) is decided again: stick where the cone holds.
+                let before = self.events.len();
+                self.settle()?;
+                if stop_at_event && self.events.len() > before {
+                    return Ok(true);
+                }
+            }
             if !last || growth < 1.0 {
                 self.h = h * growth;
             }
@@ -623,6 +643,19 @@ impl TableMotion {
             value = value.min(v).min(side);
         }
         value
+    }
+
+    /// Whether a slipping contact's slip lies within the resolution speed:
+    /// its direction is then not resolved, and following it would chatter
+    /// about the band's edge.
+    fn slip_within_resolution(&self) -> bool {
+        let floor = self.resolution_speed();
+        self.modes.iter().enumerate().any(|(i, m)| {
+            let row = &self.current.frame.rows[i];
+            m.mode == ContactMode::Slipping
+                && row.friction_dimensions > 0
+                && row.slip().length() <= floor
+        })
     }
 
     /// The lone participant that is a disk rim lying flat (its axis within
@@ -849,8 +882,17 @@ impl TableMotion {
                 (_, ContactMode::Sticking) => Some(TableEventKind::Stick),
                 (_, ContactMode::Slipping) => Some(TableEventKind::Slip),
             };
-            if new.mode == ContactMode::Sticking && old.mode != ContactMode::Sticking {
+            let row = &self.current.frame.rows[i];
+            let residual = row.friction_dimensions > 0 && row.slip().length() <= v_res;
+            if (new.mode == ContactMode::Sticking && old.mode != ContactMode::Sticking)
+                || (new.mode == ContactMode::Slipping && residual)
+            {
+                // A contact that starts to stick, or to slip from within
+                // the resolution band, loses its residual slip: the slip
+                // then grows from zero along the consistent direction
+                // (left, it chatters about the band's edge).
                 self.current.state = stop_slip(&self.body, &self.current.state, i);
+                self.current.frame = ContactFrame::of(&self.body, &self.current.state, self.time);
             }
             if new.mode == ContactMode::Open && old.mode != ContactMode::Open {
                 self.accumulation = f64::NEG_INFINITY;
@@ -993,7 +1035,8 @@ impl TableMotion {
 /// its start value, the residual the sticking phase left: that residual is
 /// not a reversal.
 fn slip_progress(r0: &ContactRow, r1: &ContactRow, mode: &Mode, floor: f64) -> f64 {
-    let d0 = super::contact_problem::slip_direction(r0.slip(), mode, floor);
+    let band = floor / TABLE_RESOLUTION * SLIP_BAND;
+    let d0 = super::contact_problem::slip_direction(r0.slip(), mode, band);
     let residual = if r0.slip().length() > floor {
         DVec3::ZERO
     } else {
