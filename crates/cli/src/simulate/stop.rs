@@ -317,4 +317,36 @@ mod tests {
         );
         assert!(!message.contains("smaller dt"));
     }
+
+    /// Painlevé's case reached during a run (the table's
+    /// `ContactIndeterminate` at t > 0): one line at the slipping
+    /// contact's `mu`, naming the body and the time.
+    #[test]
+    fn a_painleve_case_during_the_run_names_the_slipping_mu() {
+        let text = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
+            [[body]]\nname = \"ball\"\nmass = 1\ninertia = [0.004, 0.004, 0.004]\n\
+            angular_velocity = [0, 0, 0]\n[[body.contact]]\nshape = \"sphere\"\nradius = 0.1\n\
+            friction = \"coulomb\"\nmu = 0.3\n";
+        let path = Path::new("s.toml");
+        let scene = super::super::scene::parse(path, text).unwrap();
+        let error = DynamicsError::ContactIndeterminate {
+            time: 0.25,
+            compliance: -2.5,
+        };
+        let stop = Stop::from_world(DynamicsError::BodyFailed {
+            body: 0,
+            time: 0.3,
+            source: Box::new(error),
+        });
+        let message = stop
+            .into_error(&scene, path, AUTO, &Stream::Standard)
+            .to_string();
+        assert!(
+            message.starts_with(
+                "s.toml:14: body `ball`: `contact.mu` = 0.3 of [[body.contact]] #1 is beyond the \
+                 Painlevé bound of its slip (the contact is indeterminate at t = 0.25 s"
+            ),
+            "{message}"
+        );
+    }
 }

@@ -1,7 +1,9 @@
 //! Painlevé's case on the table is bad input (issue 26): a friction
 //! coefficient beyond the bound of the slip a body reaches gives one line
 //! naming the body and its contact's `mu` key at its line, exit status 1,
-//! and no output file — at the start and during the run.
+//! and no output file — at the start (here) and during the run (the unit
+//! test `a_painleve_case_during_the_run_names_the_slipping_mu` in
+//! `src/simulate/stop.rs`).
 
 use crate::support::{scratch, simulate_file};
 
@@ -99,29 +101,4 @@ fn painleves_rod_beyond_the_bound_names_its_mu_at_its_line() {
         "{printed} vs the closed form {}",
         kappa(mu)
     );
-}
-
-/// Leine & Glocker's tippe top (ball and stem) at μ = 1000 with
-/// Contensou's drilling: the run reaches the table's `ContactIndeterminate`
-/// at 7.26 ms (tests/table_high_friction.rs, where whether that slip is
-/// truly Painlevé's is left to the lead): the line names the ball's `mu`.
-#[test]
-fn an_indeterminate_contact_during_the_run_writes_nothing() {
-    let scene = "[simulation]\nduration = 0.05\ndt = 0.01\ngravity = [0.0, 0.0, -9.81]\n\n\
-        [[body]]\nname = \"tippe\"\nmass = 0.006\ninertia = [8e-7, 8e-7, 7e-7]\n\
-        orientation = [0.9987502603949663, 0.04997916927067833, 0.0, 0.0]\n\
-        angular_velocity = [0.0, 0.0, 180.0]\n\n\
-        [[body.contact]]\nshape = \"sphere\"\nradius = 0.015\ncenter = [0.0, 0.0, 0.003]\n\
-        friction = \"coulomb\"\nmu = 1000.0\ncontensou_radius = 5e-4\n\n\
-        [[body.contact]]\nshape = \"sphere\"\nradius = 0.005\ncenter = [0.0, 0.0, 0.016]\n\
-        friction = \"coulomb\"\nmu = 1000.0\ncontensou_radius = 5e-4\n";
-    let path = scratch("painleve_tippe.toml", scene);
-    let message = &refused(&path);
-    let prefix = format!(
-        "kreisel: error: {}:18: body `tippe`: `contact.mu` = 1000 of [[body.contact]] #1 is \
-         beyond the Painlevé bound of its slip (the contact is indeterminate at t = 0.00726",
-        path.display()
-    );
-    assert!(message.starts_with(&prefix), "{message}\nexpected {prefix}");
-    assert!(compliance_in(message) < 0.0, "{message}");
 }

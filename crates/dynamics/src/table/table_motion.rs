@@ -159,6 +159,9 @@ pub struct TableMotion {
     accumulation: f64,
     /// A disk on its face, once one lands flat.
     face: Option<FaceSlide>,
+    /// While set, [`TableMotion::resolve`] decides every mode afresh (no
+    /// contact kept slipping along its slip).
+    afresh: bool,
     stats: AdaptiveStats,
 }
 
@@ -256,6 +259,7 @@ impl TableMotion {
             flight: None,
             accumulation: f64::NEG_INFINITY,
             face: None,
+            afresh: false,
             stats: AdaptiveStats::default(),
         };
         run.settle()?;
@@ -535,6 +539,25 @@ impl TableMotion {
                     self.h = h * MIN_SHRINK;
                     continue;
                 }
+                Err(DynamicsError::ContactIndeterminate { .. }) if !self.afresh => {
+                    // No step holds the slip along its direction (no normal
+                    // force would, Painlevé's case for that direction): the
+                    // modes are decided afresh, stick where the cone holds.
+                    // Still indeterminate in the modes found: the error.
+                    self.afresh = true;
+                    let decided = self.settle();
+                    self.afresh = false;
+                    decided?;
+                    self.h = h.max(min);
+                    in_place += 1;
+                    if in_place > MAX_EVENTS_IN_PLACE {
+                        return Err(DynamicsError::ContactModesChatter {
+                            time: self.time,
+                            count: in_place,
+                        });
+                    }
+                    continue;
+                }
                 Err(e) => return Err(at_time(e, self.time)),
             };
             if trial.error.is_nan() || trial.error > 1.0 {
@@ -594,6 +617,11 @@ impl TableMotion {
             if self.land_flat_disks()? && stop_at_event {
                 return Ok(true);
             }
+            if self.follow_slips_in_band() {
+                self.current = self
+                    .snapshot(self.current.state, self.time)
+                    .map_err(|e| at_time(e, self.time))?;
+            }
             if self.slip_within_resolution() {
                 // A slip that has fallen into the resolution band (without
                 // reversing) is decided again: stick where the cone holds.
@@ -643,6 +671,28 @@ impl TableMotion {
             value = value.min(v).min(side);
         }
         value
+    }
+
+    /// Inside [`SLIP_BAND`] a slipping contact's friction keeps its
+    /// direction through a step; between steps it takes the slip's
+    /// direction again (above the resolution), so the held direction lags
+    /// the slip by one step, never more. `true` when a direction changed.
+    fn follow_slips_in_band(&mut self) -> bool {
+        let (floor, band) = (self.resolution_speed(), SLIP_BAND * self.speed);
+        let mut changed = false;
+        for (i, mode) in self.modes.iter_mut().enumerate() {
+            let row = &self.current.frame.rows[i];
+            let slip = row.slip().length();
+            if mode.mode == ContactMode::Slipping
+                && row.friction_dimensions > 0
+                && slip > floor
+                && slip <= band
+            {
+                mode.direction = row.slip() / slip;
+                changed = true;
+            }
+        }
+        changed
     }
 
     /// Whether a slipping contact's slip lies within the resolution speed:
@@ -943,7 +993,8 @@ impl TableMotion {
             let slip = row.slip();
             let sliding = row.friction_dimensions > 0
                 && self.modes[i].mode != ContactMode::Sticking
-                && slip.length() > v_res;
+                && slip.length() > v_res
+                && !self.afresh;
             let size = 1 + row.friction_dimensions;
             let mut y = [0.0; 4];
             for (k, v) in y.iter_mut().enumerate().take(size) {
