@@ -5,33 +5,19 @@
 //! rim's contact point jumped across the rim and the modes chattered at
 //! 0.2869 s; then the run stopped with `DiskFlat` where the face lands).
 
-use glam::{DMat3, DQuat, DVec3};
-use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactShape, DiskContact, GroundTopState, TableBody,
-    TableContact, TableEventKind, TableMotion,
-};
+use glam::DVec3;
+use kreisel::dynamics::TableEventKind;
+
+mod common;
+
+use common::coin::{A, HEIGHT, TILT, dropped_coin};
 
 #[test]
 fn a_dropped_coin_bounces_on_its_rim_lands_flat_and_rests() {
-    let (m, a) = (0.005, 0.012);
-    let rim = DiskContact::try_new(a, DVec3::ZERO, DVec3::Z).unwrap();
-    let law = ContactLaw::new(0.3).try_with_restitution(0.5).unwrap();
-    let inertia = DMat3::from_diagonal(DVec3::new(0.25, 0.25, 0.5) * m * a * a);
-    let contacts = vec![TableContact {
-        shape: ContactShape::Disk(rim),
-        law,
-    }];
-    let body = TableBody::try_new(m, inertia, contacts, 9.81).unwrap();
-    let start = GroundTopState {
-        com_world: DVec3::new(0.0, 0.0, 0.1),
-        velocity_world: DVec3::ZERO,
-        world_from_body: DQuat::from_rotation_x(0.6),
-        l_world: DVec3::ZERO,
-    };
-    let mut run = TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-9, 1e-9)).unwrap();
+    let mut run = dropped_coin(DVec3::ZERO, DVec3::ZERO, 1e-9);
     let e0 = run.body().energy(run.state());
     // The first impact: the rim's lowest point falls from its start height.
-    let drop = 0.1 - a * 0.6f64.sin();
+    let drop = HEIGHT - A * TILT.sin();
     let mut previous = e0;
     loop {
         match run.try_advance_until_event(3.0) {

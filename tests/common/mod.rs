@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod bouncing_ball;
+pub mod coin;
 pub mod contact;
 pub mod euler_disk;
 pub mod free_body;

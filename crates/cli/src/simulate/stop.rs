@@ -284,17 +284,19 @@ mod tests {
 
     use super::*;
 
+    /// A ball on the table, its `mu` on line 14.
+    const BALL_ON_TABLE: &str = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
+        [[body]]\nname = \"ball\"\nmass = 1\ninertia = [0.004, 0.004, 0.004]\n\
+        angular_velocity = [0, 0, 0]\n[[body.contact]]\nshape = \"sphere\"\nradius = 0.1\n\
+        friction = \"coulomb\"\nmu = 0.3\n";
+
     /// A body on the table whose modes chatter: an event (the rows before
     /// it kept), one line naming the body and the library's error, and no
     /// advice to shrink dt (which does not change its motion).
     #[test]
     fn a_failure_on_the_table_is_named_without_the_dt_hint() {
-        let text = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
-            [[body]]\nname = \"ball\"\nmass = 1\ninertia = [0.004, 0.004, 0.004]\n\
-            angular_velocity = [0, 0, 0]\n[[body.contact]]\nshape = \"sphere\"\nradius = 0.1\n\
-            friction = \"coulomb\"\nmu = 0.3\n";
         let path = Path::new("s.toml");
-        let scene = super::super::scene::parse(path, text).unwrap();
+        let scene = super::super::scene::parse(path, BALL_ON_TABLE).unwrap();
         let error = DynamicsError::ContactModesChatter {
             time: 0.25,
             count: 65,
@@ -323,12 +325,8 @@ mod tests {
     /// contact's `mu`, naming the body and the time.
     #[test]
     fn a_painleve_case_during_the_run_names_the_slipping_mu() {
-        let text = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
-            [[body]]\nname = \"ball\"\nmass = 1\ninertia = [0.004, 0.004, 0.004]\n\
-            angular_velocity = [0, 0, 0]\n[[body.contact]]\nshape = \"sphere\"\nradius = 0.1\n\
-            friction = \"coulomb\"\nmu = 0.3\n";
         let path = Path::new("s.toml");
-        let scene = super::super::scene::parse(path, text).unwrap();
+        let scene = super::super::scene::parse(path, BALL_ON_TABLE).unwrap();
         let error = DynamicsError::ContactIndeterminate {
             time: 0.25,
             compliance: -2.5,
