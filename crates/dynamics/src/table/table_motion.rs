@@ -617,11 +617,6 @@ impl TableMotion {
             if self.land_flat_disks()? && stop_at_event {
                 return Ok(true);
             }
-            if self.follow_slips_in_band() {
-                self.current = self
-                    .snapshot(self.current.state, self.time)
-                    .map_err(|e| at_time(e, self.time))?;
-            }
             if self.slip_within_resolution() {
                 // A slip that has fallen into the resolution band (without
                 // reversing) is decided again: stick where the cone holds.
@@ -671,28 +666,6 @@ impl TableMotion {
             value = value.min(v).min(side);
         }
         value
-    }
-
-    /// Inside [`SLIP_BAND`] a slipping contact's friction keeps its
-    /// direction through a step; between steps it takes the slip's
-    /// direction again (above the resolution), so the held direction lags
-    /// the slip by one step, never more. `true` when a direction changed.
-    fn follow_slips_in_band(&mut self) -> bool {
-        let (floor, band) = (self.resolution_speed(), SLIP_BAND * self.speed);
-        let mut changed = false;
-        for (i, mode) in self.modes.iter_mut().enumerate() {
-            let row = &self.current.frame.rows[i];
-            let slip = row.slip().length();
-            if mode.mode == ContactMode::Slipping
-                && row.friction_dimensions > 0
-                && slip > floor
-                && slip <= band
-            {
-                mode.direction = row.slip() / slip;
-                changed = true;
-            }
-        }
-        changed
     }
 
     /// Whether a slipping contact's slip lies within the resolution speed:
