@@ -427,7 +427,7 @@ impl TableMotion {
                     // within which its direction is held (SLIP_BAND).
                     if mode.mode == ContactMode::Slipping
                         && r1.friction_dimensions > 0
-                        && (slip_progress(r0, r1, mode, floor) < 0.0
+                        && (slip_progress(r0, r1, mode, floor, band) < 0.0
                             || ((r1.slip().length() <= band) != (r0.slip().length() <= band)))
                     {
                         return true;
@@ -643,6 +643,7 @@ impl TableMotion {
     fn event_value(&self, end: &Snapshot) -> f64 {
         let start = &self.current;
         let floor = self.resolution_speed();
+        let band = SLIP_BAND * self.speed;
         let weight = self.body.mass() * self.body.gravity();
         let mut value = f64::INFINITY;
         for (i, mode) in self.modes.iter().enumerate() {
@@ -655,7 +656,7 @@ impl TableMotion {
                     (n.min(r1.mu * n - end.forces.friction[i].length())) / weight
                 }
                 ContactMode::Slipping if r1.friction_dimensions > 0 => {
-                    (n / weight).min(slip_progress(r0, r1, mode, floor) / self.speed)
+                    (n / weight).min(slip_progress(r0, r1, mode, floor, band) / self.speed)
                 }
                 ContactMode::Slipping => n / weight,
             };
@@ -845,7 +846,8 @@ impl TableMotion {
             .any(|&i| frame.rows[i].velocity[0] < -v_res);
         let mut struck = vec![false; self.modes.len()];
         if impacting {
-            let outcome = match self.flipping_rim(&participants) {
+            let flipping = self.flipping_rim(&participants);
+            let outcome = match flipping {
                 Some(i) => rim_flip_impact(
                     &self.body,
                     &self.current.state,
@@ -867,7 +869,7 @@ impl TableMotion {
                 // table ~ the tolerance) is no event of its own.
                 let was_open = self.modes[i].mode == ContactMode::Open;
                 // A rim rocking through flat: its far point strikes.
-                let flipped = approach > TABLE_ACCUMULATION * self.speed;
+                let flipped = flipping == Some(i);
                 if (was_open || flipped) && approached && approach > v_res {
                     struck[i] = true;
                     self.events.push(TableEvent {
@@ -1053,13 +1055,13 @@ impl TableMotion {
 }
 
 /// How far a slipping contact's slip at the trial's end `r1` lies along
-/// its direction at the start `r0`: `γ_T(τ) · d₀`, negative once the slip
+/// its direction at the start `r0`: `γ_T(τ) · d₀` (`d₀` the mode's
+/// direction while the slip is within `band`), negative once the slip
 /// has reversed (the contact may stick). A slip that has just started
 /// (`|γ_T(0)|` below `floor`, its direction the mode's) is measured from
 /// its start value, the residual the sticking phase left: that residual is
 /// not a reversal.
-fn slip_progress(r0: &ContactRow, r1: &ContactRow, mode: &Mode, floor: f64) -> f64 {
-    let band = floor / TABLE_RESOLUTION * SLIP_BAND;
+fn slip_progress(r0: &ContactRow, r1: &ContactRow, mode: &Mode, floor: f64, band: f64) -> f64 {
     let d0 = super::contact_problem::slip_direction(r0.slip(), mode, band);
     let residual = if r0.slip().length() > floor {
         DVec3::ZERO
