@@ -118,6 +118,8 @@ Scene (TOML; SI units, radians):
   tangential_restitution = 0 coulomb only: Garwin's e_T in [0, 1] [default: 0]
   contensou_radius = 5e-4    coulomb only: the contact patch's radius, m,
                              for Contensou's drilling friction [default: 0]
+  rolling_resistance = 1e-3  coulomb only: delta, m: the rolling torque is at
+                             most delta N (set-valued) [default: 0]
   air_viscosity = 1.8e-5     coulomb disk only: Moffatt's air layer under the
                              rim (Pa s), the dissipation that brings Euler's
                              disk down

@@ -23,7 +23,7 @@ use crate::errors::error;
 
 /// The keys of a contact dict (those of the scene's `[[body.contact]]`
 /// table that a body on the table takes).
-const KEYS: [&str; 10] = [
+const KEYS: [&str; 11] = [
     "shape",
     "radius",
     "center",
@@ -34,6 +34,7 @@ const KEYS: [&str; 10] = [
     "restitution",
     "tangential_restitution",
     "contensou_radius",
+    "rolling_resistance",
 ];
 
 /// One contact dict, read key by key under the name `contacts[i]`.
@@ -136,7 +137,7 @@ fn shape(keys: &Keys<'_, '_>) -> PyResult<ContactShape> {
 }
 
 /// The Coulomb law from `mu`, `restitution`, `tangential_restitution`,
-/// `contensou_radius` (the scene's defaults: 0).
+/// `contensou_radius`, `rolling_resistance` (the scene's defaults: 0).
 fn law(keys: &Keys<'_, '_>) -> PyResult<ContactLaw> {
     if let Some(f) = keys.get("friction")? {
         let name: String = f.extract().unwrap_or_default();
@@ -151,10 +152,12 @@ fn law(keys: &Keys<'_, '_>) -> PyResult<ContactLaw> {
     let e = keys.number("restitution", Some(0.0))?;
     let e_t = keys.number("tangential_restitution", Some(0.0))?;
     let r_c = keys.number("contensou_radius", Some(0.0))?;
+    let delta = keys.number("rolling_resistance", Some(0.0))?;
     ContactLaw::try_new(mu)
         .and_then(|l| l.try_with_restitution(e))
         .and_then(|l| l.try_with_tangential_restitution(e_t))
         .and_then(|l| l.try_with_contensou_radius(r_c))
+        .and_then(|l| l.try_with_rolling_resistance(delta))
         .map_err(|e| keys.invalid(e))
 }
 

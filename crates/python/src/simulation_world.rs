@@ -171,7 +171,8 @@ impl PyWorld {
     /// ``center`` (from the centre of mass, body axes, m), ``normal``
     /// (disk), ``semi_axes`` (ellipsoid), ``mu`` (required, >= 0),
     /// ``restitution`` and ``tangential_restitution`` (in [0, 1], default
-    /// 0), ``contensou_radius`` (m, default 0), ``friction`` (only
+    /// 0), ``contensou_radius`` and ``rolling_resistance`` (m, default 0),
+    /// ``friction`` (only
     /// ``"coulomb"``). A bad value raises KreiselError naming its key
     /// (``contacts[0].mu: ...``); a contact below the table names
     /// ``position``. ``events(body)`` lists what happens.

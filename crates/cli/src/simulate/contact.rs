@@ -15,6 +15,7 @@
 //! restitution = e             coulomb only: Newton's, in [0, 1] [default: 0]
 //! tangential_restitution = eT coulomb only: Garwin's, in [0, 1] [default: 0]
 //! contensou_radius = r_c      coulomb only: the drilling patch, m, ≥ 0 [default: 0]
+//! rolling_resistance = δ      coulomb only: the rolling torque is at most δ N, m, ≥ 0 [default: 0]
 //! air_viscosity = μ_air       coulomb disk only: Moffatt's air layer under the rim, Pa s, ≥ 0
 //! air_gap = h₀                with air_viscosity: the layer's floor, m, > 0 [default: 1e-6]
 //! ```
@@ -81,6 +82,7 @@ pub struct RawContact {
     restitution: Option<Spanned<f64>>,
     tangential_restitution: Option<Spanned<f64>>,
     contensou_radius: Option<Spanned<f64>>,
+    rolling_resistance: Option<Spanned<f64>>,
     air_viscosity: Option<Spanned<f64>>,
     air_gap: Option<Spanned<f64>>,
 }
@@ -286,7 +288,7 @@ fn on_table(
 }
 
 /// The law of a `friction = "coulomb"` table from `mu`, `restitution`,
-/// `tangential_restitution` and `contensou_radius`.
+/// `tangential_restitution`, `contensou_radius` and `rolling_resistance`.
 fn law(keys: &Keys<'_>, raw: &RawContact, given: &Spanned<String>) -> Result<ContactLaw, CliError> {
     let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²)); \
                \"coulomb\" is exact Coulomb friction";
@@ -317,6 +319,9 @@ fn law(keys: &Keys<'_>, raw: &RawContact, given: &Spanned<String>) -> Result<Con
     }
     if let Some(r) = &raw.contensou_radius {
         law = keyed(r, law.try_with_contensou_radius(*r.get_ref()))?;
+    }
+    if let Some(d) = &raw.rolling_resistance {
+        law = keyed(d, law.try_with_rolling_resistance(*d.get_ref()))?;
     }
     if let Some(viscosity) = &raw.air_viscosity {
         if raw.shape.get_ref() != "disk" {
@@ -396,6 +401,7 @@ fn not_coulomb_keys(keys: &Keys<'_>, raw: &RawContact, why: &str) -> Result<(), 
         why,
     )?;
     not_with(keys, "contensou_radius", &raw.contensou_radius, why)?;
+    not_with(keys, "rolling_resistance", &raw.rolling_resistance, why)?;
     not_with(keys, "air_viscosity", &raw.air_viscosity, why)?;
     not_with(keys, "air_gap", &raw.air_gap, why)
 }

@@ -6,7 +6,7 @@
 //! time               s
 //! body               the body's name
 //! contact            the [[body.contact]] table's number (1 = the first); empty: the whole body
-//! kind               impact | impacts_accumulate | touchdown | lift_off | stick | slip | lands_flat | rest
+//! kind               impact | impacts_accumulate | touchdown | lift_off | stick | slip | stops_rolling | starts_rolling | lands_flat | rest
 //! approach_speed     impact: the normal speed before, m/s (else empty)
 //! rebound_speed      impact: the normal speed after, m/s (else empty)
 //! accumulation_time  impacts_accumulate: where the bounces end, s (else empty)
@@ -42,6 +42,8 @@ pub fn kind_name(kind: TableEventKind) -> &'static str {
         TableEventKind::LiftOff => "lift_off",
         TableEventKind::Stick => "stick",
         TableEventKind::Slip => "slip",
+        TableEventKind::StopsRolling => "stops_rolling",
+        TableEventKind::StartsRolling => "starts_rolling",
         TableEventKind::LandsFlat => "lands_flat",
         TableEventKind::Rest => "rest",
     }

@@ -10,6 +10,7 @@
 //! tangent:   w_x = (x̂, ρ × x̂)         γ_x = (v_P)_x           ŵ_x = (ω × ρ̇)_x
 //!            w_y = (ŷ, ρ × ŷ)         γ_y = (v_P)_y           ŵ_y = (ω × ρ̇)_y
 //! drilling:  w_d = (0, ε ẑ)           γ_d = ε ω_z             ŵ_d = 0
+//! rolling:   w_r = (0, δ x̂), (0, δ ŷ) γ_r = δ (ω_x, ω_y)      ŵ_r = 0
 //! rate of γ:  γ̇ = wᵀ u̇ + ŵ            (v_P = v_G + ω × ρ, d v_P/dt = v̇_G + ω̇ × ρ + ω × ρ̇)
 //! ```
 //!
@@ -56,22 +57,30 @@ impl Wrench {
 }
 
 /// The contact quantities of one shape: index 0 the normal, then the
-/// friction directions (0, 2 or 3 of them, [`super::ContactLaw`]).
+/// friction directions (0, 2 or 3 of them, [`super::ContactLaw`]), and at
+/// [`ROLLING`] the two rolling directions when the law has a rolling
+/// resistance.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ContactRow {
     /// The gap `g = z_G + ρ_z`, m.
     pub(crate) gap: f64,
     /// How many friction directions (0, 2, 3).
     pub(crate) friction_dimensions: usize,
+    /// Whether the law has a rolling resistance (components
+    /// [`ROLLING`]).
+    pub(crate) rolls: bool,
     /// `μ`.
     pub(crate) mu: f64,
-    /// Directions `w_N, w_x, w_y, w_d`.
-    pub(crate) directions: [Wrench; 4],
+    /// Directions `w_N, w_x, w_y, w_d, w_rx, w_ry`.
+    pub(crate) directions: [Wrench; 6],
     /// Relative velocities `γ = wᵀ u`.
-    pub(crate) velocity: [f64; 4],
+    pub(crate) velocity: [f64; 6],
     /// The acceleration-free parts of their rates, `ŵ`.
-    pub(crate) bias: [f64; 4],
+    pub(crate) bias: [f64; 6],
 }
+
+/// The components of a row's rolling directions.
+pub(crate) const ROLLING: [usize; 2] = [4, 5];
 
 impl ContactRow {
     /// The slip `γ_T` (friction components), zero-padded to 3.
@@ -82,6 +91,16 @@ impl ContactRow {
             if n > 1 { self.velocity[2] } else { 0.0 },
             if n > 2 { self.velocity[3] } else { 0.0 },
         )
+    }
+
+    /// The rolling rate `γ_R = δ ω_h` (zero without rolling resistance),
+    /// its third component zero.
+    pub(crate) fn roll(&self) -> DVec3 {
+        if self.rolls {
+            DVec3::new(self.velocity[ROLLING[0]], self.velocity[ROLLING[1]], 0.0)
+        } else {
+            DVec3::ZERO
+        }
     }
 }
 
@@ -119,22 +138,34 @@ impl ContactFrame {
                     force: axis,
                     torque: rho.cross(axis),
                 };
+                let turning = |axis: DVec3, arm: f64| Wrench {
+                    force: DVec3::ZERO,
+                    torque: axis * arm,
+                };
                 let arm = c.law.drilling_arm();
+                let delta = c.law.rolling_resistance();
                 ContactRow {
                     gap: state.com_world.z + rho.z,
                     friction_dimensions: c.law.friction_dimensions(),
+                    rolls: delta > 0.0,
                     mu: c.law.mu(),
                     directions: [
                         along(DVec3::Z),
                         along(DVec3::X),
                         along(DVec3::Y),
-                        Wrench {
-                            force: DVec3::ZERO,
-                            torque: DVec3::Z * arm,
-                        },
+                        turning(DVec3::Z, arm),
+                        turning(DVec3::X, delta),
+                        turning(DVec3::Y, delta),
                     ],
-                    velocity: [v_p.z, v_p.x, v_p.y, arm * omega.z],
-                    bias: [spin.z, spin.x, spin.y, 0.0],
+                    velocity: [
+                        v_p.z,
+                        v_p.x,
+                        v_p.y,
+                        arm * omega.z,
+                        delta * omega.x,
+                        delta * omega.y,
+                    ],
+                    bias: [spin.z, spin.x, spin.y, 0.0, 0.0, 0.0],
                 }
             })
             .collect();
@@ -185,6 +216,7 @@ mod tests {
         let sphere = SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003)).unwrap();
         let law = ContactLaw::new(0.3)
             .try_with_contensou_radius(5e-4)
+            .and_then(|l| l.try_with_rolling_resistance(1e-3))
             .unwrap();
         let body = TableBody::try_new(
             0.006,
@@ -224,7 +256,7 @@ mod tests {
         let f0 = ContactFrame::of(&body, &state, 0.0);
         let h = 1e-6;
         let (fp, fm) = (at(h), at(-h));
-        for k in 0..4 {
+        for k in 0..6 {
             let fd = (fp.rows[0].velocity[k] - fm.rows[0].velocity[k]) / (2.0 * h);
             let predicted = f0.rate(0, k, accel);
             assert!(

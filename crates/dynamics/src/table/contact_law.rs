@@ -1,6 +1,7 @@
 //! [`ContactLaw`]: what happens where a body meets the table — the
-//! set-valued Coulomb–Contensou friction, Newton's restitution at an
-//! impact, Garwin's tangential restitution.
+//! set-valued Coulomb–Contensou friction, the set-valued rolling
+//! resistance, Newton's restitution at an impact, Garwin's tangential
+//! restitution.
 
 use super::AirLayer;
 use crate::DynamicsError;
@@ -10,6 +11,7 @@ use crate::DynamicsError;
 /// ```text
 /// slip:      γ = (v_Px, v_Py, ε ω_z),   ε = (3π/16) r_c     (r_c = contensou_radius)
 /// friction:  Λ = (F_x, F_y, M_z/ε),     |Λ| ≤ μ N,   Λ = −μ N γ/|γ| when γ ≠ 0
+/// rolling:   γ_R = δ (ω_x, ω_y),        M_R = δ Λ_R,  |Λ_R| ≤ N,  Λ_R = −N γ_R/|γ_R| when γ_R ≠ 0
 /// impact:    ξ_N = γ_N⁺ + e γ_N⁻ ≥ 0,  P_N ≥ 0,  ξ_N P_N = 0
 ///            ξ_T = γ_T⁺ + e_T γ_T⁻,    P_T = −μ P_N ξ_T/|ξ_T| (|P_T| ≤ μ P_N when ξ_T = 0)
 /// ```
@@ -26,6 +28,15 @@ use crate::DynamicsError;
 /// example writes it): one friction cone in the three slip rates
 /// `(v_Px, v_Py, ε ω_z)`, the admissible set the ellipsoid
 /// `F_x² + F_y² + (M_z/ε)² ≤ (μ N)²`.
+/// The rolling resistance `δ` (`rolling_resistance`, m) is a law of its
+/// own, beside the friction cone (Tasora & Anitescu, Meccanica 48 (2013)
+/// 1643; Le Saux, Leine & Glocker, J. Nonlinear Sci. 15 (2005) 27): a
+/// torque `M_R` about the table's horizontal axes opposing the body's
+/// rolling rate `ω_h = (ω_x, ω_y)`, at most `δ N` — the shift of the
+/// normal force's line of action ahead of the contact point. While
+/// `|M_R| < δ N` the rolling holds (`ω_h` stays zero); it rolls with
+/// `M_R = −δ N ω_h/|ω_h|` otherwise. A ball on the table then stops rolling
+/// in finite time, as real balls do.
 /// The impact law is Newton's in Glocker's form (*Set-Valued Force Laws*,
 /// 2001, ch. 7): `e` the normal restitution (0 plastic, 1 elastic), `e_T`
 /// the tangential one (0: the slip after the impact is the one friction
@@ -47,6 +58,7 @@ pub struct ContactLaw {
     restitution: f64,
     tangential_restitution: f64,
     contensou_radius: f64,
+    rolling_resistance: f64,
     air_layer: Option<AirLayer>,
 }
 
@@ -100,6 +112,7 @@ impl ContactLaw {
             restitution: 0.0,
             tangential_restitution: 0.0,
             contensou_radius: 0.0,
+            rolling_resistance: 0.0,
             air_layer: None,
         })
     }
@@ -155,6 +168,34 @@ impl ContactLaw {
         })
     }
 
+    /// The law with the rolling resistance `δ` m (0: none): the rolling
+    /// torque is at most `δ N`.
+    ///
+    /// ```
+    /// use kreisel_dynamics::ContactLaw;
+    /// let law = ContactLaw::try_new(0.5)?.try_with_rolling_resistance(1e-3)?;
+    /// assert_eq!(law.rolling_resistance(), 1e-3);
+    /// assert!(ContactLaw::new(0.5).try_with_rolling_resistance(-1e-3).is_err());
+    /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`DynamicsError::InvalidContact`] (`"rolling_resistance"`) for a
+    /// length negative or not finite.
+    pub fn try_with_rolling_resistance(self, delta: f64) -> Result<Self, DynamicsError> {
+        let rolling_resistance = within(
+            "rolling_resistance",
+            delta,
+            0.0,
+            f64::MAX,
+            "must be finite and ≥ 0",
+        )?;
+        Ok(Self {
+            rolling_resistance,
+            ..self
+        })
+    }
+
     /// The law with Moffatt's air layer under the shape, which must be a
     /// disk rim ([`super::TableBody::try_new`] checks).
     ///
@@ -194,6 +235,11 @@ impl ContactLaw {
     /// The Contensou patch radius `r_c`, m.
     pub fn contensou_radius(&self) -> f64 {
         self.contensou_radius
+    }
+
+    /// The rolling resistance `δ`, m: the rolling torque is at most `δ N`.
+    pub fn rolling_resistance(&self) -> f64 {
+        self.rolling_resistance
     }
 
     /// The drilling lever `ε = (3π/16) r_c`, m: the pure-spin friction
@@ -238,6 +284,10 @@ mod tests {
         assert_eq!(
             name(law.try_with_contensou_radius(f64::INFINITY).unwrap_err()),
             "contensou_radius"
+        );
+        assert_eq!(
+            name(law.try_with_rolling_resistance(f64::NAN).unwrap_err()),
+            "rolling_resistance"
         );
     }
 

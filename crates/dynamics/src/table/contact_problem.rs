@@ -14,6 +14,7 @@
 //! normal:   x_N ≥ 0,  y_N ≥ 0,  x_N y_N = 0                      (Signorini)
 //! friction: |x_T| ≤ μ x_N,  x_T = −μ x_N y_T/|y_T| when y_T ≠ 0   (Coulomb–Contensou)
 //!           or, slipping already: x_T = −μ x_N d, d the slip direction
+//! rolling:  |x_R| ≤ x_N,  y_R = 0 while it holds, x_R = −x_N d_R while it rolls
 //! ```
 //!
 //! The problem is solved contact by contact (block Gauss–Seidel; Studer &
@@ -25,7 +26,7 @@
 use glam::DVec3;
 
 use super::TableBody;
-use super::contact_frame::{ContactFrame, Wrench};
+use super::contact_frame::{ContactFrame, ROLLING, Wrench};
 use super::dense::solve_in_place;
 use crate::DynamicsError;
 
@@ -41,11 +42,16 @@ pub enum ContactMode {
 }
 
 /// A contact's mode with the slip direction to use where the slip itself
-/// is too small to give one (just after slipping starts).
+/// is too small to give one (just after slipping starts); the same for
+/// its rolling under a rolling resistance (`roll`: `Sticking` while the
+/// resistance holds the rolling, `Slipping` while it rolls, `Open` for an
+/// open contact or a law without rolling resistance).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Mode {
     pub(crate) mode: ContactMode,
     pub(crate) direction: DVec3,
+    pub(crate) roll: ContactMode,
+    pub(crate) roll_direction: DVec3,
 }
 
 impl Mode {
@@ -53,7 +59,18 @@ impl Mode {
     pub(crate) const OPEN: Mode = Mode {
         mode: ContactMode::Open,
         direction: DVec3::ZERO,
+        roll: ContactMode::Open,
+        roll_direction: DVec3::ZERO,
     };
+
+    /// A closed contact in `mode` with `direction`, no rolling decided.
+    pub(crate) fn closed(mode: ContactMode, direction: DVec3) -> Self {
+        Self {
+            mode,
+            direction,
+            ..Self::OPEN
+        }
+    }
 }
 
 /// The accelerations and contact forces of one state in given modes.
@@ -70,13 +87,27 @@ pub(crate) struct ModeForces {
     /// Each contact's friction `x_T` (components along its friction
     /// directions).
     pub(crate) friction: [DVec3; TableBody::MAX_CONTACTS],
+    /// Each contact's rolling resistance `x_R` (the torque `δ x_R` about
+    /// the table's x and y axes; third component zero).
+    pub(crate) rolling: [DVec3; TableBody::MAX_CONTACTS],
 }
 
 /// The slip direction of a slipping contact: the slip's when it exceeds
 /// `floor`, else the direction kept in its mode.
 pub(crate) fn slip_direction(slip: DVec3, mode: &Mode, floor: f64) -> DVec3 {
-    let s = slip.length();
-    if s > floor { slip / s } else { mode.direction }
+    direction_or(slip, mode.direction, floor)
+}
+
+/// The rolling direction of a rolling contact: its rolling rate's when
+/// it exceeds `floor`, else the direction kept in its mode.
+pub(crate) fn roll_direction(roll: DVec3, mode: &Mode, floor: f64) -> DVec3 {
+    direction_or(roll, mode.roll_direction, floor)
+}
+
+/// `v/|v|` when `|v|` exceeds `floor`, else `kept`.
+fn direction_or(v: DVec3, kept: DVec3, floor: f64) -> DVec3 {
+    let s = v.length();
+    if s > floor { v / s } else { kept }
 }
 
 /// The painlevé error at `time` for the coefficient `compliance`.
@@ -109,6 +140,10 @@ pub(crate) fn mode_forces(
             ContactMode::Open => 0,
             ContactMode::Slipping => 1,
             ContactMode::Sticking => 1 + row.friction_dimensions,
+        } + if row.rolls && mode.mode != ContactMode::Open && mode.roll == ContactMode::Sticking {
+            ROLLING.len()
+        } else {
+            0
         })
         .sum();
     // Sized to the problem: a memset of the largest (32 × 32) in every
@@ -119,26 +154,40 @@ pub(crate) fn mode_forces(
     // (contact, component) of each unknown.
     let mut owner = Vec::with_capacity(unknowns);
     let mut directions = [DVec3::ZERO; TableBody::MAX_CONTACTS];
+    let mut roll_directions = [DVec3::ZERO; TableBody::MAX_CONTACTS];
     for (i, (row, mode)) in frame.rows.iter().zip(modes).enumerate() {
         if mode.mode == ContactMode::Open {
             continue;
         }
         let mut normal_col = row.directions[0];
         let nf = row.friction_dimensions;
-        if mode.mode == ContactMode::Slipping && nf > 0 {
+        let slipping = mode.mode == ContactMode::Slipping && nf > 0;
+        if slipping {
             let d = slip_direction(row.slip(), mode, slip_floor);
             directions[i] = d;
             for c in 0..nf {
                 normal_col = normal_col.plus(row.directions[1 + c].scaled(-row.mu * d[c]));
             }
+        }
+        let rolling = row.rolls && mode.roll == ContactMode::Slipping;
+        if rolling {
+            let d = roll_direction(row.roll(), mode, slip_floor);
+            roll_directions[i] = d;
+            for (c, &k) in ROLLING.iter().enumerate() {
+                normal_col = normal_col.plus(row.directions[k].scaled(-d[c]));
+            }
+        }
+        if slipping || rolling {
             let compliance = frame.delassus(&row.directions[0], &normal_col);
             if compliance.is_nan() || compliance <= 0.0 {
                 return Err(indeterminate(compliance));
             }
         }
         let sticking = mode.mode == ContactMode::Sticking;
-        let components = if sticking { 1 + nf } else { 1 };
-        for k in 0..components {
+        let holding = row.rolls && mode.roll == ContactMode::Sticking;
+        let components = (0..if sticking { 1 + nf } else { 1 })
+            .chain(ROLLING.into_iter().filter(|_| holding));
+        for k in components {
             rows.push(row.directions[k]);
             cols.push(if k == 0 {
                 normal_col
@@ -166,6 +215,7 @@ pub(crate) fn mode_forces(
         omega_rate: DVec3::ZERO,
         normal: [0.0; TableBody::MAX_CONTACTS],
         friction: [DVec3::ZERO; TableBody::MAX_CONTACTS],
+        rolling: [DVec3::ZERO; TableBody::MAX_CONTACTS],
     };
     for k in 0..n {
         total = total.plus(cols[k].scaled(rhs[k]));
@@ -175,6 +225,11 @@ pub(crate) fn mode_forces(
             if modes[i].mode == ContactMode::Slipping {
                 out.friction[i] = -frame.rows[i].mu * rhs[k] * directions[i];
             }
+            if modes[i].roll == ContactMode::Slipping {
+                out.rolling[i] = -rhs[k] * roll_directions[i];
+            }
+        } else if c >= ROLLING[0] {
+            out.rolling[i][c - ROLLING[0]] = rhs[k];
         } else {
             out.friction[i][c - 1] = rhs[k];
         }
@@ -200,11 +255,11 @@ pub(crate) struct Block {
 
 /// The relative change of the unknowns below which block Gauss–Seidel
 /// stops.
-const SWEEP_TOLERANCE: f64 = 1e-15;
+pub(crate) const SWEEP_TOLERANCE: f64 = 1e-15;
 
 /// The most sweeps (and slip-direction iterations) before the problem is
 /// called unsolved.
-const MAX_SWEEPS: usize = 2000;
+pub(crate) const MAX_SWEEPS: usize = 2000;
 
 /// Solves `y_i = y⁰_i + Σ_j G_ij x_j` with each block's law.
 ///

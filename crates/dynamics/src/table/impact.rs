@@ -19,7 +19,7 @@
 //! typed error, never a silent gain.
 
 use super::TableBody;
-use super::contact_frame::{ContactFrame, Wrench};
+use super::contact_frame::{ContactFrame, ROLLING, Wrench};
 use super::contact_problem::{Block, solve_blocks};
 use crate::{DynamicsError, GroundTopState};
 
@@ -145,30 +145,41 @@ pub(crate) fn at_time(e: DynamicsError, time: f64) -> DynamicsError {
     }
 }
 
-/// The impulse `P_T = −G_TT⁻¹ γ_T` that stops the residual slip of a
-/// contact that starts to stick (dissipative: `ΔT = −½ γ_Tᵀ G_TT⁻¹ γ_T`).
-pub(crate) fn stop_slip(body: &TableBody, state: &GroundTopState, i: usize) -> GroundTopState {
+/// The impulse `P = −G⁻¹ γ` that stops the residual slip (`slip`) and
+/// the residual rolling (`roll`) of contact `i` as it starts to stick or
+/// its rolling resistance starts to hold (dissipative:
+/// `ΔT = −½ γᵀ G⁻¹ γ`; `γ` and `G` over the components stopped).
+pub(crate) fn stop_slip(
+    body: &TableBody,
+    state: &GroundTopState,
+    i: usize,
+    slip: bool,
+    roll: bool,
+) -> GroundTopState {
     // Impulses only: the velocities, not the (time-dependent) loads, matter.
     let frame = ContactFrame::of(body, state, 0.0);
     let row = &frame.rows[i];
-    let n = row.friction_dimensions;
+    let slipping = (1..=row.friction_dimensions).filter(|_| slip);
+    let rolling = ROLLING.into_iter().filter(|_| roll && row.rolls);
+    let components: Vec<usize> = slipping.chain(rolling).collect();
+    let n = components.len();
     if n == 0 {
         return *state;
     }
-    let mut a = [0.0; 9];
-    let mut rhs = [0.0; 3];
-    for r in 0..n {
-        for k in 0..n {
-            a[r * n + k] = frame.delassus(&row.directions[1 + r], &row.directions[1 + k]);
+    let mut a = [0.0; 25];
+    let mut rhs = [0.0; 5];
+    for (r, &cr) in components.iter().enumerate() {
+        for (k, &ck) in components.iter().enumerate() {
+            a[r * n + k] = frame.delassus(&row.directions[cr], &row.directions[ck]);
         }
-        rhs[r] = -row.velocity[1 + r];
+        rhs[r] = -row.velocity[cr];
     }
     if !super::dense::solve_in_place(&mut a, &mut rhs, n) {
         return *state;
     }
     let mut total = Wrench::default();
-    for (k, pk) in rhs.iter().enumerate().take(n) {
-        total = total.plus(row.directions[1 + k].scaled(*pk));
+    for (&c, pk) in components.iter().zip(rhs) {
+        total = total.plus(row.directions[c].scaled(pk));
     }
     GroundTopState {
         velocity_world: state.velocity_world + total.force * frame.inverse_mass,

@@ -1,10 +1,11 @@
 //! Bodies on a table as nonsmooth mechanics: any number of contact
 //! shapes per body, unilateral contact (Signorini), impacts with Newton's
 //! restitution, set-valued Coulomb friction with Contensou's drilling
-//! friction — run from any start to rest, with the events recorded.
+//! friction, set-valued rolling resistance — run from any start to rest,
+//! with the events recorded.
 //!
 //! - [`ContactLaw`]: `μ`, restitution `e`, tangential restitution `e_T`,
-//!   the Contensou patch radius;
+//!   the Contensou patch radius, the rolling resistance;
 //! - [`TableBody`], [`TableContact`]: the body and its shapes
 //!   ([`crate::ContactShape`]: spheres, disk rims, ellipsoids);
 //! - [`TableMotion`]: the event-driven run (Dormand–Prince 5(4) with error
@@ -27,6 +28,8 @@
 //! closed contact:   g̈ᵢ = 0,   Nᵢ ≥ 0
 //! sticking:         γ̇_Tᵢ = 0, |Λᵢ| ≤ μ Nᵢ
 //! slipping:         Λᵢ = −μ Nᵢ γ_Tᵢ/|γ_Tᵢ|
+//! rolling held:     γ̇_Rᵢ = 0, |Λ_Rᵢ| ≤ Nᵢ      (rolling resistance δ: γ_R = δ ω_h, torque δ Λ_R)
+//! rolling:          Λ_Rᵢ = −Nᵢ γ_Rᵢ/|γ_Rᵢ|
 //! ```
 //!
 //! and at an impact (a contact closing with speed) Newton's law with
@@ -46,7 +49,8 @@
 //! under a rim, the dissipation of Euler's disk.
 //!
 //! # What it does not do (yet)
-//! Rolling resistance is not modelled. A face does not bounce, and inputs
+//! The rolling resistance acts between impacts, not in them (its impulse
+//! would be at most `δ P_N`). A face does not bounce, and inputs
 //! are not followed on a face ([`crate::DynamicsError::DiskFlat`]). Free
 //! flight is exact (parabola and the torque-free
 //! [`crate::ExactSolution`]); applied inputs ([`TableBody::try_with_inputs`])
@@ -60,6 +64,7 @@ mod contact_problem;
 mod dense;
 mod face;
 mod impact;
+mod rolling_resistance;
 mod table_body;
 mod table_event;
 mod table_motion;

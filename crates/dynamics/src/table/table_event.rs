@@ -48,6 +48,11 @@ pub enum TableEventKind {
     Stick,
     /// The friction force reached the cone: the contact slips.
     Slip,
+    /// The rolling rate stopped: the rolling resistance holds the rolling
+    /// ([`super::ContactLaw::try_with_rolling_resistance`]).
+    StopsRolling,
+    /// The rolling resistance reached its bound `δ N`: the body rolls.
+    StartsRolling,
     /// A disk rim's axis reached the vertical: the disk lies on its face
     /// (a plastic landing), sliding and spinning on it until it stops.
     LandsFlat,
@@ -77,6 +82,8 @@ impl fmt::Display for TableEvent {
             TableEventKind::LiftOff => f.write_str("lifts off"),
             TableEventKind::Stick => f.write_str("sticks"),
             TableEventKind::Slip => f.write_str("slips"),
+            TableEventKind::StopsRolling => f.write_str("stops rolling"),
+            TableEventKind::StartsRolling => f.write_str("starts rolling"),
             TableEventKind::LandsFlat => f.write_str("lands flat on its face"),
             TableEventKind::Rest => f.write_str("comes to rest"),
         }

@@ -35,9 +35,12 @@
 use glam::{DQuat, DVec3};
 
 use super::contact_frame::{ContactFrame, ContactRow};
-use super::contact_problem::{Block, ContactMode, Mode, ModeForces, mode_forces, solve_blocks};
+use super::contact_problem::{
+    Block, ContactMode, Mode, ModeForces, mode_forces, roll_direction, slip_direction,
+};
 use super::face::FaceSlide;
 use super::impact::{at_time, impact, rim_flip_impact, stop_slip};
+use super::rolling_resistance::{Rolling, solve_with_rolling};
 use super::{TableBody, TableEvent, TableEventKind};
 use crate::contact::{DOPRI_A, DOPRI_B_HAT, DOPRI_C, Flight, MAX_GROWTH, MIN_SHRINK, SAFETY};
 use crate::{AdaptiveStats, AdaptiveTolerance, ContactShape, DynamicsError, GroundTopState};
@@ -427,8 +430,22 @@ impl TableMotion {
                     // within which its direction is held (SLIP_BAND).
                     if mode.mode == ContactMode::Slipping
                         && r1.friction_dimensions > 0
-                        && (slip_progress(r0, r1, mode, floor, band) < 0.0
-                            || ((r1.slip().length() <= band) != (r0.slip().length() <= band)))
+                        && (progress(r0, r1, mode, floor, band, Along::Slip) < 0.0
+                            || crosses_band(r0.slip(), r1.slip(), band))
+                    {
+                        return true;
+                    }
+                    // The same for the rolling under a rolling resistance.
+                    let rolling = end.forces.rolling[i].length();
+                    if r1.rolls
+                        && match mode.roll {
+                            ContactMode::Sticking => rolling > n,
+                            ContactMode::Slipping => {
+                                progress(r0, r1, mode, floor, band, Along::Roll) < 0.0
+                                    || crosses_band(r0.roll(), r1.roll(), band)
+                            }
+                            ContactMode::Open => false,
+                        }
                     {
                         return true;
                     }
@@ -655,10 +672,17 @@ impl TableMotion {
                 ContactMode::Sticking => {
                     (n.min(r1.mu * n - end.forces.friction[i].length())) / weight
                 }
-                ContactMode::Slipping if r1.friction_dimensions > 0 => {
-                    (n / weight).min(slip_progress(r0, r1, mode, floor, band) / self.speed)
-                }
+                ContactMode::Slipping if r1.friction_dimensions > 0 => (n / weight)
+                    .min(progress(r0, r1, mode, floor, band, Along::Slip) / self.speed),
                 ContactMode::Slipping => n / weight,
+            };
+            let v = match mode.roll {
+                _ if !r1.rolls || mode.mode == ContactMode::Open => v,
+                ContactMode::Sticking => v.min((n - end.forces.rolling[i].length()) / weight),
+                ContactMode::Slipping => {
+                    v.min(progress(r0, r1, mode, floor, band, Along::Roll) / self.speed)
+                }
+                ContactMode::Open => v,
             };
             let side = match mode.mode {
                 ContactMode::Open => f64::INFINITY,
@@ -676,9 +700,13 @@ impl TableMotion {
         let floor = self.resolution_speed();
         self.modes.iter().enumerate().any(|(i, m)| {
             let row = &self.current.frame.rows[i];
-            m.mode == ContactMode::Slipping
+            (m.mode == ContactMode::Slipping
                 && row.friction_dimensions > 0
-                && row.slip().length() <= floor
+                && row.slip().length() <= floor)
+                || (m.mode != ContactMode::Open
+                    && m.roll == ContactMode::Slipping
+                    && row.rolls
+                    && row.roll().length() <= floor)
         })
     }
 
@@ -811,10 +839,7 @@ impl TableMotion {
         self.flight = None;
         for (k, mode) in self.modes.iter_mut().enumerate() {
             *mode = if k == i {
-                Mode {
-                    mode: ContactMode::Slipping,
-                    direction: DVec3::ZERO,
-                }
+                Mode::closed(ContactMode::Slipping, DVec3::ZERO)
             } else {
                 Mode::OPEN
             };
@@ -909,15 +934,36 @@ impl TableMotion {
             };
             let row = &self.current.frame.rows[i];
             let residual = row.friction_dimensions > 0 && row.slip().length() <= v_res;
-            if (new.mode == ContactMode::Sticking && old.mode != ContactMode::Sticking)
-                || (new.mode == ContactMode::Slipping && residual)
-            {
-                // A contact that starts to stick, or to slip from within
-                // the resolution band, loses its residual slip: the slip
-                // then grows from zero along the consistent direction
-                // (left, it chatters about the band's edge).
-                self.current.state = stop_slip(&self.body, &self.current.state, i);
+            let rolling_residual = row.rolls && row.roll().length() <= v_res;
+            // A contact that starts to stick, or to slip from within the
+            // resolution band, loses its residual slip: the slip then
+            // grows from zero along the consistent direction (left, it
+            // chatters about the band's edge). The same for the rolling.
+            let stops_slip = (new.mode == ContactMode::Sticking
+                && old.mode != ContactMode::Sticking)
+                || (new.mode == ContactMode::Slipping && residual);
+            let closed = new.mode != ContactMode::Open;
+            let stops_roll = closed
+                && row.rolls
+                && ((new.roll == ContactMode::Sticking && old.roll != ContactMode::Sticking)
+                    || (new.roll == ContactMode::Slipping && rolling_residual));
+            if stops_slip || stops_roll {
+                self.current.state = stop_slip(&self.body, &self.current.state, i, stops_slip, stops_roll);
                 self.current.frame = ContactFrame::of(&self.body, &self.current.state, self.time);
+            }
+            if closed && old.mode != ContactMode::Open && old.roll != new.roll {
+                let kind = match new.roll {
+                    ContactMode::Sticking => Some(TableEventKind::StopsRolling),
+                    ContactMode::Slipping => Some(TableEventKind::StartsRolling),
+                    ContactMode::Open => None,
+                };
+                if let Some(kind) = kind {
+                    self.events.push(TableEvent {
+                        time: self.time,
+                        contact: Some(i),
+                        kind,
+                    });
+                }
             }
             if new.mode == ContactMode::Open && old.mode != ContactMode::Open {
                 self.accumulation = f64::NEG_INFINITY;
@@ -963,6 +1009,7 @@ impl TableMotion {
         let free = (frame.free_velocity_rate, frame.free_omega_rate);
         let mut blocks = Vec::with_capacity(touching.len());
         let mut y_free = Vec::with_capacity(touching.len());
+        let mut rolling = Vec::with_capacity(touching.len());
         for &i in &touching {
             let row = &frame.rows[i];
             let slip = row.slip();
@@ -981,40 +1028,49 @@ impl TableMotion {
                 mu: row.mu,
                 slipping: sliding.then(|| slip.normalize()),
             });
+            let roll = row.roll();
+            rolling.push(if !row.rolls {
+                Rolling::Free
+            } else if self.modes[i].roll != ContactMode::Sticking
+                && roll.length() > v_res
+                && !self.afresh
+            {
+                Rolling::Along(roll.normalize())
+            } else {
+                Rolling::Cone
+            });
         }
-        let g = |a: usize, ca: usize, b: usize, cb: usize| {
-            frame.delassus(
-                &frame.rows[touching[a]].directions[ca],
-                &frame.rows[touching[b]].directions[cb],
-            )
-        };
-        let x = solve_blocks(&blocks, &y_free, &g).map_err(|e| at_time(e, self.time))?;
+        let (x, x_r) = solve_with_rolling(frame, &touching, &blocks, &y_free, &rolling)
+            .map_err(|e| at_time(e, self.time))?;
         let mut modes = vec![Mode::OPEN; self.modes.len()];
-        for ((&i, xi), block) in touching.iter().zip(&x).zip(&blocks) {
+        for (k, &i) in touching.iter().enumerate() {
+            let (xi, block) = (&x[k], &blocks[k]);
             if xi[0].is_nan() || xi[0] <= 0.0 {
                 continue;
             }
             let t = DVec3::new(xi[1], xi[2], xi[3]);
-            modes[i] = if block.size == 1 {
-                Mode {
-                    mode: ContactMode::Slipping,
-                    direction: DVec3::ZERO,
-                }
+            let (mode, direction) = if block.size == 1 {
+                (ContactMode::Slipping, DVec3::ZERO)
             } else if let Some(d) = block.slipping {
-                Mode {
-                    mode: ContactMode::Slipping,
-                    direction: d,
-                }
+                (ContactMode::Slipping, d)
             } else if t.length() < block.mu * xi[0] * (1.0 - 1e-12) {
-                Mode {
-                    mode: ContactMode::Sticking,
-                    direction: DVec3::ZERO,
-                }
+                (ContactMode::Sticking, DVec3::ZERO)
             } else {
-                Mode {
-                    mode: ContactMode::Slipping,
-                    direction: -t.normalize_or_zero(),
+                (ContactMode::Slipping, -t.normalize_or_zero())
+            };
+            let (roll, roll_direction) = match rolling[k] {
+                Rolling::Free => (ContactMode::Open, DVec3::ZERO),
+                Rolling::Along(d) => (ContactMode::Slipping, d),
+                Rolling::Cone if x_r[k].length() < xi[0] * (1.0 - 1e-12) => {
+                    (ContactMode::Sticking, DVec3::ZERO)
                 }
+                Rolling::Cone => (ContactMode::Slipping, -x_r[k].normalize_or_zero()),
+            };
+            modes[i] = Mode {
+                mode,
+                direction,
+                roll,
+                roll_direction,
             };
         }
         Ok(modes)
@@ -1033,8 +1089,9 @@ impl TableMotion {
             return;
         }
         let frictional_slip = closed.iter().any(|&i| {
-            self.modes[i].mode == ContactMode::Slipping
-                && self.current.frame.rows[i].friction_dimensions > 0
+            let row = &self.current.frame.rows[i];
+            (self.modes[i].mode == ContactMode::Slipping && row.friction_dimensions > 0)
+                || (self.modes[i].roll == ContactMode::Slipping && row.rolls)
         });
         let v_res = self.resolution_speed();
         let a_res = TABLE_RESOLUTION * self.body.gravity();
@@ -1054,21 +1111,42 @@ impl TableMotion {
     }
 }
 
-/// How far a slipping contact's slip at the trial's end `r1` lies along
-/// its direction at the start `r0`: `γ_T(τ) · d₀` (`d₀` the mode's
-/// direction while the slip is within `band`), negative once the slip
-/// has reversed (the contact may stick). A slip that has just started
-/// (`|γ_T(0)|` below `floor`, its direction the mode's) is measured from
-/// its start value, the residual the sticking phase left: that residual is
-/// not a reversal.
-fn slip_progress(r0: &ContactRow, r1: &ContactRow, mode: &Mode, floor: f64, band: f64) -> f64 {
-    let d0 = super::contact_problem::slip_direction(r0.slip(), mode, band);
-    let residual = if r0.slip().length() > floor {
-        DVec3::ZERO
-    } else {
-        r0.slip()
+/// Which relative rate [`progress`] follows.
+#[derive(Debug, Clone, Copy)]
+enum Along {
+    /// The slip `γ_T` (friction).
+    Slip,
+    /// The rolling rate `γ_R` (rolling resistance).
+    Roll,
+}
+
+/// How far a slipping contact's slip (or rolling rate) at the trial's end
+/// `r1` lies along its direction at the start `r0`: `γ_T(τ) · d₀` (`d₀`
+/// the mode's direction while the slip is within `band`), negative once
+/// the slip has reversed (the contact may stick). A slip that has just
+/// started (`|γ_T(0)|` below `floor`, its direction the mode's) is
+/// measured from its start value, the residual the sticking phase left:
+/// that residual is not a reversal.
+fn progress(
+    r0: &ContactRow,
+    r1: &ContactRow,
+    mode: &Mode,
+    floor: f64,
+    band: f64,
+    along: Along,
+) -> f64 {
+    let (s0, s1, d0) = match along {
+        Along::Slip => (r0.slip(), r1.slip(), slip_direction(r0.slip(), mode, band)),
+        Along::Roll => (r0.roll(), r1.roll(), roll_direction(r0.roll(), mode, band)),
     };
-    (r1.slip() - residual).dot(d0)
+    let residual = if s0.length() > floor { DVec3::ZERO } else { s0 };
+    (s1 - residual).dot(d0)
+}
+
+/// Whether a slip (or rolling rate) crossed the edge of the band within
+/// which its direction is held ([`SLIP_BAND`]).
+fn crosses_band(s0: DVec3, s1: DVec3, band: f64) -> bool {
+    (s1.length() <= band) != (s0.length() <= band)
 }
 
 /// Whether a gap's cubic Hermite over a step of length `h` (from `g0, ġ0`

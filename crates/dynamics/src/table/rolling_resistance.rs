@@ -1,0 +1,197 @@
+//! The set-valued rolling resistance at an event: which rolling holds and
+//! which rolls, beside the contacts' Signorini and friction problem.
+//!
+//! The rolling resistance of contact `a` is a torque `δ x_R` about the
+//! table's x and y axes (`x_R` in newtons, the rates `γ_R = δ ω_h` in m/s,
+//! [`super::ContactLaw`]) with its own cone of radius `x_N`:
+//!
+//! ```text
+//! γ_R = γ_R⁰ + Σ_b (G_Rb x_b + G_RRb x_Rb)
+//! holds:  γ_R = 0,  |x_R| ≤ x_N          rolls:  x_R = −x_N γ_R/|γ_R|
+//! ```
+//!
+//! It is solved by Gauss–Seidel between the two problems (Studer &
+//! Glocker's successive inclusions, the rolling cones as blocks of their
+//! own): the contacts' blocks with the rolling torques fixed
+//! ([`super::contact_problem::solve_blocks`]), then each rolling cone with
+//! the contact forces fixed, until neither changes. The coupling is of
+//! the order `δ/ℓ`, so a few sweeps settle it.
+
+use glam::DVec3;
+
+use super::contact_frame::{ContactFrame, ROLLING};
+use super::contact_problem::{Block, MAX_SWEEPS, SWEEP_TOLERANCE, solve_blocks};
+use super::dense::solve_in_place;
+use crate::DynamicsError;
+
+/// What is known of a touching contact's rolling before the solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Rolling {
+    /// The law has no rolling resistance.
+    Free,
+    /// The rolling's cone decides: hold or roll.
+    Cone,
+    /// Rolling already along `d` (its rate resolved): `x_R = −x_N d`.
+    Along(DVec3),
+}
+
+/// The contacts' unknowns `x` (normal, friction) and the rolling
+/// resistances `x_R` of the `touching` contacts.
+///
+/// # Errors
+/// Those of [`solve_blocks`]; [`DynamicsError::ContactUnsolved`] when the
+/// sweeps between the two problems do not settle.
+pub(crate) fn solve_with_rolling(
+    frame: &ContactFrame,
+    touching: &[usize],
+    blocks: &[Block],
+    y_free: &[[f64; 4]],
+    rolling: &[Rolling],
+) -> Result<(Vec<[f64; 4]>, Vec<DVec3>), DynamicsError> {
+    let g = |a: usize, ca: usize, b: usize, cb: usize| {
+        frame.delassus(
+            &frame.rows[touching[a]].directions[ca],
+            &frame.rows[touching[b]].directions[cb],
+        )
+    };
+    let m = touching.len();
+    let mut x_r = vec![DVec3::ZERO; m];
+    if rolling.iter().all(|r| *r == Rolling::Free) {
+        return Ok((solve_blocks(blocks, y_free, &g)?, x_r));
+    }
+    let free = (frame.free_velocity_rate, frame.free_omega_rate);
+    // The share of the rolling torques (all but `skip`'s) in component
+    // `ca` of contact `a`.
+    let rolling_share = |a: usize, ca: usize, x_r: &[DVec3], skip: Option<usize>| -> f64 {
+        (0..m)
+            .filter(|&b| Some(b) != skip)
+            .flat_map(|b| ROLLING.iter().enumerate().map(move |(c, &r)| (b, c, r)))
+            .map(|(b, c, r)| g(a, ca, b, r) * x_r[b][c])
+            .sum()
+    };
+    for _ in 0..MAX_SWEEPS {
+        let shifted: Vec<[f64; 4]> = (0..m)
+            .map(|a| {
+                let mut y = y_free[a];
+                for (k, v) in y.iter_mut().enumerate().take(blocks[a].size) {
+                    *v += rolling_share(a, k, &x_r, None);
+                }
+                y
+            })
+            .collect();
+        let x = solve_blocks(blocks, &shifted, &g)?;
+        let (mut change, mut size) = (0.0_f64, 0.0_f64);
+        for a in 0..m {
+            if rolling[a] == Rolling::Free {
+                continue;
+            }
+            let mut y0 = [0.0; 2];
+            for (c, &r) in ROLLING.iter().enumerate() {
+                let contacts: f64 = (0..m)
+                    .flat_map(|b| (0..blocks[b].size).map(move |k| (b, k)))
+                    .map(|(b, k)| g(a, r, b, k) * x[b][k])
+                    .sum();
+                y0[c] = frame.rate(touching[a], r, free)
+                    + contacts
+                    + rolling_share(a, r, &x_r, Some(a));
+            }
+            let own = [
+                [g(a, ROLLING[0], a, ROLLING[0]), g(a, ROLLING[0], a, ROLLING[1])],
+                [g(a, ROLLING[1], a, ROLLING[0]), g(a, ROLLING[1], a, ROLLING[1])],
+            ];
+            let next = rolling_cone(x[a][0].max(0.0), &own, y0, rolling[a])?;
+            change = change.max((next - x_r[a]).length());
+            size = size.max(next.length()).max(x[a][0].abs());
+            x_r[a] = next;
+        }
+        if change <= SWEEP_TOLERANCE * size {
+            return Ok((x, x_r));
+        }
+    }
+    Err(DynamicsError::ContactUnsolved { time: f64::NAN })
+}
+
+/// One rolling cone of radius `n` exactly: `γ_R = y0 + G x_R`, hold if the
+/// holding torque lies in the cone, else roll on its boundary along the
+/// consistent direction (damped fixed point).
+///
+/// # Errors
+/// [`DynamicsError::ContactUnsolved`] when the direction does not settle
+/// or the block is singular.
+fn rolling_cone(
+    n: f64,
+    g: &[[f64; 2]; 2],
+    y0: [f64; 2],
+    rolling: Rolling,
+) -> Result<DVec3, DynamicsError> {
+    let unsolved = || DynamicsError::ContactUnsolved { time: f64::NAN };
+    if n == 0.0 {
+        return Ok(DVec3::ZERO);
+    }
+    if let Rolling::Along(d) = rolling {
+        return Ok(-n * d);
+    }
+    let mut a = [g[0][0], g[0][1], g[1][0], g[1][1]];
+    let mut hold = [-y0[0], -y0[1]];
+    if !solve_in_place(&mut a, &mut hold, 2) {
+        return Err(unsolved());
+    }
+    let hold = DVec3::new(hold[0], hold[1], 0.0);
+    if hold.length() <= n * (1.0 + 1e-12) {
+        return Ok(hold);
+    }
+    let rate = |x: DVec3| {
+        DVec3::new(
+            y0[0] + g[0][0] * x.x + g[0][1] * x.y,
+            y0[1] + g[1][0] * x.x + g[1][1] * x.y,
+            0.0,
+        )
+    };
+    let mut d = -hold.normalize();
+    for _ in 0..MAX_SWEEPS {
+        let next = rate(-n * d).normalize_or_zero();
+        if next == DVec3::ZERO || (next - d).length() <= 1e-14 {
+            return Ok(-n * d);
+        }
+        d = (d + next).normalize_or(next);
+    }
+    Err(unsolved())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A ball of radius R pushed to roll: `G_RR = δ²/I 𝟙` for the torques.
+    #[test]
+    fn a_cone_holds_inside_and_rolls_on_its_edge() {
+        let g = [[2.0, 0.0], [0.0, 2.0]];
+        // Holding needs |x_R| = 1.5 N: held for x_N ≥ 1.5.
+        let x = rolling_cone(2.0, &g, [3.0, 0.0], Rolling::Cone).unwrap();
+        assert!((x.x + 1.5).abs() < 1e-15 && x.y == 0.0);
+        // Rolling: the whole cone against the rolling.
+        let x = rolling_cone(1.0, &g, [0.0, -3.0], Rolling::Cone).unwrap();
+        assert!(x.x.abs() < 1e-15 && (x.y - 1.0).abs() < 1e-15, "{x}");
+        // Rolling already: along its direction, whatever the rates.
+        let x = rolling_cone(1.0, &g, [0.0, 0.0], Rolling::Along(DVec3::X)).unwrap();
+        assert_eq!(x, -DVec3::X);
+        // No normal force: no torque.
+        assert_eq!(
+            rolling_cone(0.0, &g, [3.0, 0.0], Rolling::Cone).unwrap(),
+            DVec3::ZERO
+        );
+    }
+
+    /// An anisotropic block rolls along the direction whose rate is
+    /// parallel to it (the fixed point), not along the holding torque.
+    #[test]
+    fn an_anisotropic_cone_rolls_along_its_consistent_direction() {
+        let g = [[1.0, 0.0], [0.0, 4.0]];
+        let y0 = [-3.0, -3.0];
+        let x = rolling_cone(1.0, &g, y0, Rolling::Cone).unwrap();
+        assert!((x.length() - 1.0).abs() < 1e-14);
+        let y = DVec3::new(y0[0] + x.x, y0[1] + 4.0 * x.y, 0.0);
+        // x = −N y/|y|: the torque opposes the resulting rolling rate.
+        assert!((x + y.normalize()).length() < 1e-12, "{x} vs {y}");
+    }
+}
