@@ -109,7 +109,11 @@ fn a_ball_thrown_sliding_rolls_then_stops_as_the_closed_forms_say_on_any_grid() 
             let s = run.state();
             let omega = run.body().omega_world(s);
             let e = 0.5 * M * s.velocity_world.length_squared() + 0.5 * s.l_world.dot(omega);
-            assert!(e <= energy + 1e-15, "energy rose at {}: {e} > {energy}", run.time());
+            assert!(
+                e <= energy + 1e-15,
+                "energy rose at {}: {e} > {energy}",
+                run.time()
+            );
             energy = e;
         }
         let stick = time_of(&run, TableEventKind::Stick);
@@ -127,7 +131,11 @@ fn a_push_below_delta_m_g_over_r_is_held_and_above_it_rolls() {
     let threshold = DELTA * M * G / R;
     let mut held = ball(0.0, 0.0, 0.5 * threshold);
     held.try_advance_to(1.0).unwrap();
-    assert!(held.state().com_world.x.abs() < 1e-15, "{}", held.state().com_world.x);
+    assert!(
+        held.state().com_world.x.abs() < 1e-15,
+        "{}",
+        held.state().com_world.x
+    );
     assert_eq!(held.modes(), vec![ContactMode::Sticking]);
     // Only the start's touchdown: it never starts to roll or slip.
     let kinds: Vec<_> = held.events().iter().map(|e| e.kind).collect();

@@ -153,7 +153,7 @@ fn run(
 /// of the CLI's ``--events`` file, a list of tuples ``(time, body,
 /// contact, kind, approach_speed, rebound_speed, accumulation_time)`` in
 /// time order (bodies on the table only: impacts, touchdowns, lift-offs,
-/// stick, slip, rest; ``contact`` the ``[[body.contact]]`` table's number,
+/// stick, slip, stops/starts rolling, lands flat, rest; ``contact`` the ``[[body.contact]]`` table's number,
 /// 1 = the first, ``None`` for the whole body; the speeds, m/s, of an
 /// ``"impact"``, the ``accumulation_time``, s, of
 /// ``"impacts_accumulate"``, else ``None``), the numbers the file spells.

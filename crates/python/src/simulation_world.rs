@@ -409,7 +409,8 @@ impl PyWorld {
     /// — ``time`` in s; ``contact`` the index in the body's ``contacts``
     /// (``None``: the whole body); ``kind`` one of ``"impact"``,
     /// ``"impacts_accumulate"``, ``"touchdown"``, ``"lift_off"``,
-    /// ``"stick"``, ``"slip"``, ``"rest"``; the normal speeds before and
+    /// ``"stick"``, ``"slip"``, ``"stops_rolling"``, ``"starts_rolling"``,
+    /// ``"lands_flat"``, ``"rest"``; the normal speeds before and
     /// after an impact (m/s) and where accumulating bounces end (s), else
     /// ``None``. The rows of the CLI's ``--events`` file, numbered as the
     /// library numbers contacts (from 0).

@@ -17,7 +17,10 @@ SCENES = REPO / "examples" / "scenes"
 G = 9.81
 # The dropped ball of examples/scenes/bouncing_ball.toml.
 E, RADIUS, HEIGHT = 0.9, 0.1, 1.0
-KINDS = {"impact", "impacts_accumulate", "touchdown", "lift_off", "stick", "slip", "rest"}
+KINDS = {
+    "impact", "impacts_accumulate", "touchdown", "lift_off", "stick", "slip",
+    "stops_rolling", "starts_rolling", "lands_flat", "rest",
+}
 
 
 def ball_world(dt=0.01, **contact):
@@ -100,7 +103,9 @@ def test_the_world_gives_the_events_of_the_cli_for_the_same_scene(tmp_path):
     assert mine == rows
 
 
-@pytest.mark.parametrize("scene", ["bouncing_ball.toml", "tippe_top_coulomb.toml", "superball.toml"])
+@pytest.mark.parametrize(
+    "scene", ["bouncing_ball.toml", "tippe_top_coulomb.toml", "superball.toml", "billiard_ball.toml"]
+)
 def test_simulate_gives_the_events_file_bit_for_bit(scene, tmp_path):
     rows = [parsed(r) for r in cli_events(SCENES / scene, tmp_path)]
     assert rows
@@ -166,6 +171,7 @@ def test_without_position_the_lowest_contact_touches():
         (dict(restitution=-0.5), "contacts[0].restitution: must lie in [0, 1], got -0.5"),
         (dict(tangential_restitution=2.0), "contacts[0].tangential_restitution: must lie in [0, 1], got 2"),
         (dict(contensou_radius=-1e-3), "contacts[0].contensou_radius: must be finite and ≥ 0, got -0.001"),
+        (dict(rolling_resistance=-1e-3), "contacts[0].rolling_resistance: must be finite and ≥ 0, got -0.001"),
         (dict(radius=0.0), "contacts[0].radius:"),
         (dict(mu=None), "contacts[0].mu: is missing"),
         (dict(shape="cube"), "contacts[0].shape: unknown contact shape 'cube'"),

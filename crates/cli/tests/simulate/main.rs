@@ -21,6 +21,7 @@ mod rattleback;
 mod support;
 mod table;
 mod table_painleve;
+mod table_rolling;
 mod table_superball;
 mod threads;
 mod tolerance;

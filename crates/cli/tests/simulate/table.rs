@@ -243,6 +243,13 @@ fn bad_coulomb_keys_are_one_line_errors_at_their_line() {
         &["`contact.contensou_radius` must be finite and ≥ 0, got -0.0005"],
     );
     check_error(
+        "rolling.toml",
+        "",
+        &coulomb("mu = 0.3\nrolling_resistance = -1e-3\n"),
+        14,
+        &["`contact.rolling_resistance` must be finite and ≥ 0, got -0.001"],
+    );
+    check_error(
         "no_mu.toml",
         "",
         &coulomb(""),

@@ -185,8 +185,8 @@ pub(crate) fn mode_forces(
         }
         let sticking = mode.mode == ContactMode::Sticking;
         let holding = row.rolls && mode.roll == ContactMode::Sticking;
-        let components = (0..if sticking { 1 + nf } else { 1 })
-            .chain(ROLLING.into_iter().filter(|_| holding));
+        let components =
+            (0..if sticking { 1 + nf } else { 1 }).chain(ROLLING.into_iter().filter(|_| holding));
         for k in components {
             rows.push(row.directions[k]);
             cols.push(if k == 0 {

@@ -96,8 +96,14 @@ pub(crate) fn solve_with_rolling(
                     + rolling_share(a, r, &x_r, Some(a));
             }
             let own = [
-                [g(a, ROLLING[0], a, ROLLING[0]), g(a, ROLLING[0], a, ROLLING[1])],
-                [g(a, ROLLING[1], a, ROLLING[0]), g(a, ROLLING[1], a, ROLLING[1])],
+                [
+                    g(a, ROLLING[0], a, ROLLING[0]),
+                    g(a, ROLLING[0], a, ROLLING[1]),
+                ],
+                [
+                    g(a, ROLLING[1], a, ROLLING[0]),
+                    g(a, ROLLING[1], a, ROLLING[1]),
+                ],
             ];
             let next = rolling_cone(x[a][0].max(0.0), &own, y0, rolling[a])?;
             change = change.max((next - x_r[a]).length());

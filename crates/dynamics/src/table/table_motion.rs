@@ -672,8 +672,9 @@ impl TableMotion {
                 ContactMode::Sticking => {
                     (n.min(r1.mu * n - end.forces.friction[i].length())) / weight
                 }
-                ContactMode::Slipping if r1.friction_dimensions > 0 => (n / weight)
-                    .min(progress(r0, r1, mode, floor, band, Along::Slip) / self.speed),
+                ContactMode::Slipping if r1.friction_dimensions > 0 => {
+                    (n / weight).min(progress(r0, r1, mode, floor, band, Along::Slip) / self.speed)
+                }
                 ContactMode::Slipping => n / weight,
             };
             let v = match mode.roll {
@@ -948,7 +949,8 @@ impl TableMotion {
                 && ((new.roll == ContactMode::Sticking && old.roll != ContactMode::Sticking)
                     || (new.roll == ContactMode::Slipping && rolling_residual));
             if stops_slip || stops_roll {
-                self.current.state = stop_slip(&self.body, &self.current.state, i, stops_slip, stops_roll);
+                self.current.state =
+                    stop_slip(&self.body, &self.current.state, i, stops_slip, stops_roll);
                 self.current.frame = ContactFrame::of(&self.body, &self.current.state, self.time);
             }
             if closed && old.mode != ContactMode::Open && old.roll != new.roll {
