@@ -97,6 +97,8 @@ fn event_words(e: &TableEvent, resolution: f64) -> Option<String> {
         TableEventKind::Touchdown => format!("the {name} touches down"),
         TableEventKind::LiftOff => format!("the {name} lifts off"),
         TableEventKind::LandsFlat => format!("the {name} lands flat"),
+        TableEventKind::StopsRolling => format!("the {name} stops rolling"),
+        TableEventKind::StartsRolling => format!("the {name} starts rolling"),
         TableEventKind::Rest => "the top comes to rest".to_owned(),
         TableEventKind::Stick | TableEventKind::Slip => return None,
     })
