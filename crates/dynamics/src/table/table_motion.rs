@@ -67,15 +67,21 @@ pub const TABLE_ACCUMULATION: f64 = 1e-4;
 /// [`FACE_LANDING`]).
 pub const DISK_FLAT_TILT: f64 = 1e-6;
 
-/// The slip speed, relative to the body's speed scale, below which a
-/// slipping contact's friction keeps the direction it had when the slip
-/// entered the band (or the consistent direction a slip starts along)
-/// instead of following `γ_T/|γ_T|`: that direction turns at a rate
-/// `~ μ N W/|γ_T|`, so following it at tiny slips makes the motion stiff
-/// (steps of 10⁻¹⁰ s where the friction sits on the cone's edge, measured
-/// on Euler's disk starting to slip). The slip entering the band is an
-/// event; a slip that reverses inside it sticks.
-pub const SLIP_BAND: f64 = 1e-6;
+/// The slip speed, relative to the body's speed scale and to the
+/// tolerance's `rtol`, below which a slipping contact's friction keeps the
+/// direction it had when the slip entered the band (or the consistent
+/// direction a slip starts along) instead of following `γ_T/|γ_T|`: that
+/// direction turns at a rate `~ μ N W/|γ_T|`, so following it at tiny
+/// slips makes the motion stiff (steps of 10⁻¹⁰ s where the friction sits
+/// on the cone's edge, measured on Euler's disk starting to slip). The
+/// slip entering the band is an event; a slip that reverses inside it
+/// sticks. The band is an approximation of the law, so it shrinks with the
+/// tolerance and the answer converges as the tolerance tightens:
+///
+/// ```text
+/// band = max(SLIP_BAND · rtol, TABLE_RESOLUTION) · speed scale     (10⁻⁶ of it at the default rtol 10⁻¹⁰)
+/// ```
+pub const SLIP_BAND: f64 = 1e4;
 
 /// The speed, relative to the body's speed scale, below which a disk
 /// rim that reaches flat lands on its face (a plastic landing): its face's
@@ -245,7 +251,8 @@ impl TableMotion {
             }];
         }
         let modes = vec![Mode::OPEN; body.contacts().len()];
-        let current = Self::snapshot_of(&body, &modes, state, 0.0, speed)?;
+        let band = slip_band(tolerance, speed);
+        let current = Self::snapshot_of(&body, &modes, state, 0.0, band)?;
         let mut run = Self {
             body,
             tolerance,
@@ -333,16 +340,22 @@ impl TableMotion {
         TABLE_RESOLUTION * self.speed
     }
 
-    /// The derivative, forces and frame of `state` in `modes`.
+    /// The slip band, m/s ([`SLIP_BAND`]).
+    fn band(&self) -> f64 {
+        slip_band(self.tolerance, self.speed)
+    }
+
+    /// The derivative, forces and frame of `state` in `modes` (slips
+    /// within `band` along their modes' directions).
     fn snapshot_of(
         body: &TableBody,
         modes: &[Mode],
         state: GroundTopState,
         t: f64,
-        speed: f64,
+        band: f64,
     ) -> Result<Snapshot, DynamicsError> {
         let frame = ContactFrame::of(body, &state, t);
-        let forces = mode_forces(&frame, modes, SLIP_BAND * speed)?;
+        let forces = mode_forces(&frame, modes, band)?;
         let q = state.world_from_body;
         let w = frame.omega;
         let derivative = Derivative {
@@ -361,7 +374,7 @@ impl TableMotion {
 
     /// [`TableMotion::snapshot_of`] in the current modes at time `t`.
     fn snapshot(&self, state: GroundTopState, t: f64) -> Result<Snapshot, DynamicsError> {
-        Self::snapshot_of(&self.body, &self.modes, state, t, self.speed)
+        Self::snapshot_of(&self.body, &self.modes, state, t, self.band())
     }
 
     /// One Dormand–Prince trial of length `h` from the current state.
@@ -401,7 +414,7 @@ impl TableMotion {
     fn event_in(&self, end: &Snapshot, h: f64) -> bool {
         let start = &self.current;
         let floor = self.resolution_speed();
-        let band = SLIP_BAND * self.speed;
+        let band = self.band();
         for (i, mode) in self.modes.iter().enumerate() {
             let (r0, r1) = (&start.frame.rows[i], &end.frame.rows[i]);
             match mode.mode {
@@ -660,7 +673,7 @@ impl TableMotion {
     fn event_value(&self, end: &Snapshot) -> f64 {
         let start = &self.current;
         let floor = self.resolution_speed();
-        let band = SLIP_BAND * self.speed;
+        let band = self.band();
         let weight = self.body.mass() * self.body.gravity();
         let mut value = f64::INFINITY;
         for (i, mode) in self.modes.iter().enumerate() {
@@ -1111,6 +1124,12 @@ impl TableMotion {
             });
         }
     }
+}
+
+/// The slip band of `tolerance` for the speed scale `speed`, m/s
+/// ([`SLIP_BAND`]).
+fn slip_band(tolerance: AdaptiveTolerance, speed: f64) -> f64 {
+    (SLIP_BAND * tolerance.rtol()).max(TABLE_RESOLUTION) * speed
 }
 
 /// Which relative rate [`progress`] follows.
