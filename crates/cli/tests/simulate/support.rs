@@ -50,6 +50,32 @@ pub fn simulate_file(path: &Path, args: &[&str]) -> Run {
     run::kreisel(&all, Vec::new())
 }
 
+/// Runs the example scene `examples/scenes/NAME.toml` with `--events` and
+/// `--columns COLUMNS`: the events file's text and the last row's numbers.
+pub fn scene_events_and_last_row(name: &str, columns: &str) -> (String, Vec<f64>) {
+    let dir = scratch_dir();
+    let events = dir.join(format!("{name}_events.csv"));
+    let rows = dir.join(format!("{name}.csv"));
+    let run = simulate_file(
+        &workspace(&format!("examples/scenes/{name}.toml")),
+        &[
+            "--events",
+            events.to_str().unwrap(),
+            "--columns",
+            columns,
+            "--output",
+            rows.to_str().unwrap(),
+        ],
+    );
+    assert_eq!(run.code, Some(0), "{}", run.stderr);
+    let csv = std::fs::read_to_string(&rows).unwrap();
+    let last = csv.lines().last().unwrap().split(',');
+    (
+        std::fs::read_to_string(&events).unwrap(),
+        last.map(|v| v.parse().unwrap()).collect(),
+    )
+}
+
 /// Writes the scene to scratch file `name` and runs it.
 pub fn simulate(name: &str, scene: &str, args: &[&str]) -> Run {
     simulate_file(&scratch(name, scene), args)

@@ -5,7 +5,7 @@
 //! `(5/7) δ g/R` and stops at `t₂`, where it rests at
 //! `x₂ = v₀ t₁ − μ g t₁²/2 + v₁² (7 R)/(10 δ g)`.
 
-use crate::support::{scratch_dir, simulate_file, workspace};
+use crate::support::scene_events_and_last_row;
 
 #[test]
 fn the_billiard_ball_slides_rolls_and_stops_as_the_closed_forms_say() {
@@ -17,21 +17,7 @@ fn the_billiard_ball_slides_rolls_and_stops_as_the_closed_forms_say() {
         t1 + v1 / a,
         v0 * t1 - 0.5 * mu * g * t1 * t1 + v1 * v1 / (2.0 * a),
     );
-    let dir = scratch_dir();
-    let (events, rows) = (dir.join("billiard_events.csv"), dir.join("billiard.csv"));
-    let run = simulate_file(
-        &workspace("examples/scenes/billiard_ball.toml"),
-        &[
-            "--events",
-            events.to_str().unwrap(),
-            "--columns",
-            "t,x,vx,wy",
-            "--output",
-            rows.to_str().unwrap(),
-        ],
-    );
-    assert_eq!(run.code, Some(0), "{}", run.stderr);
-    let text = std::fs::read_to_string(&events).unwrap();
+    let (text, last) = scene_events_and_last_row("billiard_ball", "t,x,vx,wy");
     let kinds: Vec<(f64, &str)> = text
         .lines()
         .skip(1)
@@ -56,14 +42,6 @@ fn the_billiard_ball_slides_rolls_and_stops_as_the_closed_forms_say() {
         "{} vs {t2}",
         kinds[2].0
     );
-    let csv = std::fs::read_to_string(&rows).unwrap();
-    let last: Vec<f64> = csv
-        .lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect();
     assert!((last[1] - x2).abs() < 1e-12 * x2, "{} vs {x2}", last[1]);
     assert!(last[2].abs() < 1e-12 && last[3].abs() < 1e-12, "{last:?}");
 }

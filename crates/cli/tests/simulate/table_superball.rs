@@ -6,7 +6,7 @@
 //! position, velocity and spin, which the flight after the tenth bounce
 //! leaves as that bounce made them (vz and x following the parabola).
 
-use crate::support::{scratch_dir, simulate_file, workspace};
+use crate::support::{scene_events_and_last_row, workspace};
 
 const G: f64 = 9.81;
 /// The scene's duration, s.
@@ -48,22 +48,7 @@ fn close(what: &str, a: f64, b: f64) {
 fn the_superball_scene_bounces_as_garwins_closed_form() {
     let reference = reference();
     assert_eq!(reference.len(), 10);
-    let dir = scratch_dir();
-    let events = dir.join("superball_events.csv");
-    let rows = dir.join("superball.csv");
-    let run = simulate_file(
-        &workspace("examples/scenes/superball.toml"),
-        &[
-            "--events",
-            events.to_str().unwrap(),
-            "--columns",
-            "t,x,vx,vz,wy",
-            "--output",
-            rows.to_str().unwrap(),
-        ],
-    );
-    assert_eq!(run.code, Some(0), "{}", run.stderr);
-    let text = std::fs::read_to_string(&events).unwrap();
+    let (text, last) = scene_events_and_last_row("superball", "t,x,vx,vz,wy");
     let impacts: Vec<Vec<&str>> = text
         .lines()
         .skip(1)
@@ -86,14 +71,6 @@ fn the_superball_scene_bounces_as_garwins_closed_form() {
         );
     }
     // The last row: after the tenth bounce, in flight.
-    let csv = std::fs::read_to_string(&rows).unwrap();
-    let last: Vec<f64> = csv
-        .lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect();
     let tenth = &reference[9];
     let flight = DURATION - tenth["t"];
     assert_eq!(last[0], DURATION);
