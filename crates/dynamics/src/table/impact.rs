@@ -203,7 +203,14 @@ pub(crate) fn rim_flip_impact(
         return impact(body, state, &[i], resolution_speed, time);
     };
     let q = state.world_from_body.normalize();
-    let rho_b = disk.contact_from_com_world(q);
+    let mut rho_b = disk.contact_from_com_world(q);
+    if !rho_b.is_finite() {
+        // Lying exactly flat (no lowest rim point): the rim point that
+        // approaches fastest, `γ_N + (ω × r)_z` least.
+        let omega = ContactFrame::of(body, state, time).omega;
+        let toward = glam::DVec3::new(omega.y, -omega.x, 0.0).normalize_or(glam::DVec3::X);
+        rho_b = q * disk.center_body() + disk.radius() * toward;
+    }
     let rho_a = 2.0 * (q * disk.center_body()) - rho_b;
     // A point contact at A: a small sphere whose lowest point is A while
     // the disk lies flat (its centre above A along the upward axis).
@@ -231,4 +238,200 @@ pub(crate) fn rim_flip_impact(
         a.0 = i;
     }
     Ok(outcome)
+}
+
+/// The impact of disk `i`'s face closing flat on the table (the disk's
+/// axis within [`super::DISK_FLAT_TILT`] of the vertical): the face as a
+/// distributed unilateral contact with Newton's law at each of its
+/// points and Coulomb–Contensou friction, solved for the impulse wrench
+/// at the face's centre `C` (`ρ_c = A c`):
+///
+/// ```text
+/// face point r (horizontal, |r| ≤ a, from C):  γ_N(r) = γ_N + (ω × r)_z = γ_N + ω_x r_y − ω_y r_x
+/// normal wrench:  w_N = (ẑ, ρ_c × ẑ),  w_α = (0, x̂),  w_β = (0, ŷ)        γ = (γ_N, ω_x, ω_y)
+/// friction:       w_x, w_y at C,  w_d = (0, ε ẑ),  ε = ⅔ a (the face's lever, `face`)
+/// impulses:       (P_N, M) ∈ K = {|M| ≤ a P_N}   (pressure ≥ 0 over the face: its centre within it)
+/// Newton:         ξ = γ⁺ + e γ⁻ ∈ K* = {ξ_N ≥ a |ξ_M|}  (ξ(r) ≥ 0 everywhere),  ⟨ξ, P⟩ = 0
+/// friction:       ξ_T = γ_T⁺ + e_T γ_T⁻,  |P_T| ≤ μ P_N,  P_T = −μ P_N ξ_T/|ξ_T| when ξ_T ≠ 0
+/// ```
+///
+/// The face strikes face first (every point approaching, `γ_N + a|ω_h| <
+/// 0`): then `ξ ≡ 0` over the face — the centre's normal speed and both
+/// tilting rates reverse, `(γ_N, ω_x, ω_y)⁺ = −e (γ_N, ω_x, ω_y)⁻` — is
+/// the solution whenever its wrench lies in `K` (the normal problem is
+/// the complementarity of the cone `K` and its dual with a positive
+/// definite Delassus matrix: that solution is the only one). A disk
+/// dropped exactly flat has `ω_h = 0`, `M = 0`: `v_z⁺ = −e v_z⁻`, the
+/// pressure uniform. `None` when the wrench leaves `K` (the pressure
+/// gathers on the rim: the rim strikes, [`rim_flip_impact`]). A rebound
+/// `e |γ_N⁻|` at or below `resolution_speed` is summed (`e = 0`, the
+/// accumulation reported) as in [`impact`].
+///
+/// # Errors
+/// [`DynamicsError::ImpactGainsEnergy`] when the impulses would raise the
+/// kinetic energy beyond rounding; [`DynamicsError::ContactUnsolved`]
+/// when the slip direction does not settle.
+pub(crate) fn face_impact(
+    body: &TableBody,
+    state: &GroundTopState,
+    i: usize,
+    resolution_speed: f64,
+    time: f64,
+) -> Result<Option<ImpactOutcome>, DynamicsError> {
+    let contact = body.contacts()[i];
+    let crate::ContactShape::Disk(disk) = contact.shape else {
+        return Ok(None);
+    };
+    let frame = ContactFrame::of(body, state, time);
+    let q = state.world_from_body.normalize();
+    let rho = q * disk.center_body();
+    let at_centre = |axis: glam::DVec3| Wrench {
+        force: axis,
+        torque: rho.cross(axis),
+    };
+    let couple = |axis: glam::DVec3| Wrench {
+        force: glam::DVec3::ZERO,
+        torque: axis,
+    };
+    let (x, y, z) = (glam::DVec3::X, glam::DVec3::Y, glam::DVec3::Z);
+    let lever = super::face::face_lever(disk.radius());
+    let w = [
+        at_centre(z),
+        couple(x),
+        couple(y),
+        at_centre(x),
+        at_centre(y),
+        couple(z * lever),
+    ];
+    let omega = frame.omega;
+    let gamma: Vec<f64> = w
+        .iter()
+        .map(|wk| wk.dot_motion(state.velocity_world, omega))
+        .collect();
+    let approach = -gamma[0];
+    let tilting = omega.truncate().length();
+    if approach <= 0.0 || approach <= disk.radius() * tilting {
+        return Ok(None);
+    }
+    let law = contact.law;
+    let (mut e, mut e_t) = (law.restitution(), law.tangential_restitution());
+    let mut accumulations = Vec::new();
+    if e > 0.0 && e * approach <= resolution_speed {
+        // The face centre's own acceleration in flight, into the table.
+        let free = (frame.free_velocity_rate, frame.free_omega_rate);
+        let a = -(w[0].dot_motion(free.0, free.1) + omega.cross(omega.cross(rho)).z);
+        if a > 0.0 && e < 1.0 {
+            accumulations.push((i, 2.0 * e * approach / (a * (1.0 - e))));
+        }
+        (e, e_t) = (0.0, 0.0);
+    }
+    let mut g = [[0.0; 6]; 6];
+    for (a, row) in g.iter_mut().enumerate() {
+        for (b, v) in row.iter_mut().enumerate() {
+            *v = frame.delassus(&w[a], &w[b]);
+        }
+    }
+    let mut y_free = [0.0; 6];
+    for (k, yk) in y_free.iter_mut().enumerate() {
+        *yk = (1.0 + if k < 3 { e } else { e_t }) * gamma[k];
+    }
+    let p = face_impulses(&g, &y_free, law.mu()).map_err(|e| at_time(e, time))?;
+    let Some(p) = p else {
+        return Ok(None);
+    };
+    let couple_size = (p[1] * p[1] + p[2] * p[2]).sqrt();
+    if p[0] <= 0.0 || couple_size > disk.radius() * p[0] * (1.0 + 1e-12) {
+        return Ok(None);
+    }
+    let total = w
+        .iter()
+        .zip(p)
+        .fold(Wrench::default(), |t, (wk, pk)| t.plus(wk.scaled(pk)));
+    let after = GroundTopState {
+        velocity_world: state.velocity_world + total.force * frame.inverse_mass,
+        l_world: state.l_world + total.torque,
+        ..*state
+    };
+    let (before_t, after_t) = (body.kinetic_energy(state), body.kinetic_energy(&after));
+    if after_t > before_t * (1.0 + 1e-12) {
+        return Err(DynamicsError::ImpactGainsEnergy {
+            time,
+            before: before_t,
+            after: after_t,
+        });
+    }
+    let omega_after = ContactFrame::of(body, &after, time).omega;
+    let rebound = w[0].dot_motion(after.velocity_world, omega_after);
+    Ok(Some(ImpactOutcome {
+        state: after,
+        speeds: vec![(i, approach, rebound, true)],
+        accumulations,
+    }))
+}
+
+/// The face's impulses `P = (P_N, M_x, M_y, P_x, P_y, P_d)` with `ξ = y_free
+/// + G P` zero in its normal part (`ξ_N = ξ_α = ξ_β = 0`) and Coulomb's law
+/// on its friction part: sticking (`ξ_T = 0`) when that impulse lies in
+/// the cone `|P_T| ≤ μ P_N`, else slipping along the slip after, `P_T =
+/// −μ P_N ξ_T/|ξ_T|` (the direction by damped fixed-point iteration).
+/// `None` when the normal part is singular.
+///
+/// # Errors
+/// [`DynamicsError::ContactUnsolved`] (its time NaN) when the slip
+/// direction does not settle.
+fn face_impulses(
+    g: &[[f64; 6]; 6],
+    y_free: &[f64; 6],
+    mu: f64,
+) -> Result<Option<[f64; 6]>, DynamicsError> {
+    let solve = |n: usize, column0: &dyn Fn(usize) -> f64| {
+        let mut a = [0.0; 36];
+        let mut rhs = [0.0; 6];
+        for r in 0..n {
+            for k in 0..n {
+                a[r * n + k] = if k == 0 { column0(r) } else { g[r][k] };
+            }
+            rhs[r] = -y_free[r];
+        }
+        super::dense::solve_in_place(&mut a, &mut rhs, n).then_some(rhs)
+    };
+    let frictionless = || solve(3, &|r| g[r][0]);
+    if mu == 0.0 {
+        return Ok(frictionless());
+    }
+    // Sticking: ξ = 0 in all six.
+    let Some(stick) = solve(6, &|r| g[r][0]) else {
+        return Ok(None);
+    };
+    let friction = glam::DVec3::new(stick[3], stick[4], stick[5]);
+    if stick[0] > 0.0 && friction.length() <= mu * stick[0] * (1.0 + 1e-12) {
+        return Ok(Some(stick));
+    }
+    // Slipping along d: P_T = −μ P_N d folded into P_N's column.
+    let slip_along = |d: glam::DVec3| {
+        let column = |r: usize| g[r][0] - mu * (0..3).map(|c| g[r][3 + c] * d[c]).sum::<f64>();
+        let normal = solve(3, &column)?;
+        let mut p = [0.0; 6];
+        p[..3].copy_from_slice(&normal[..3]);
+        for c in 0..3 {
+            p[3 + c] = -mu * normal[0] * d[c];
+        }
+        let mut xi_t = glam::DVec3::ZERO;
+        for c in 0..3 {
+            xi_t[c] = y_free[3 + c] + (0..6).map(|k| g[3 + c][k] * p[k]).sum::<f64>();
+        }
+        Some((p, xi_t))
+    };
+    let mut d = -friction.normalize_or_zero();
+    for _ in 0..2000 {
+        let Some((p, xi_t)) = slip_along(d) else {
+            return Ok(None);
+        };
+        let next = xi_t.normalize_or_zero();
+        if next == glam::DVec3::ZERO || (next - d).length() <= 1e-14 {
+            return Ok(Some(p));
+        }
+        d = (d + next).normalize_or(next);
+    }
+    Err(DynamicsError::ContactUnsolved { time: f64::NAN })
 }

@@ -1,0 +1,156 @@
+//! A disk striking the table with its face (issue 26): Newton's
+//! restitution over the face, friction at the impact, the bounces' Zeno
+//! accumulation and rest flat — against closed forms.
+//!
+//! The disk: thin (`I = m a² (¼, ¼, ½)`, its centre of mass in the face's
+//! plane), m = 10 g, a = 2 cm, dropped exactly flat with its face
+//! h = 0.1 m above the table, e = 0.8, g = 9.81 m/s². Only `v_z` is
+//! nonzero at the face: the pressure is uniform, `v_z⁺ = −e v_z⁻`. It
+//! strikes at `t₁ = √(2h/g)` with `v₁ = √(2gh)`; after impact n it rises
+//! at `eⁿ v₁` to `e²ⁿ h` and strikes again `2 eⁿ v₁/g` later; the bounces
+//! accumulate at `t∞ = t₁ (1 + e)/(1 − e)`.
+//!
+//! Friction at the impact (Coulomb–Contensou on the face, lever
+//! `ε = ⅔ a`): in the slip coordinates `s = (v_x, v_y, ε ω_z)` the
+//! impulse `Λ = (P_x, P_y, M_z/ε)` moves `s` by `W Λ`, `W = diag(1/m,
+//! 1/m, ε²/I_zz) = (1, 1, 8/9)/m`; with `β = μ (1 + e) v_n` (`P_N = m (1 +
+//! e) v_n`) Newton's law with `e_T = 0` (`Λ = −μ P_N s⁺/|s⁺|`) gives
+//!
+//! ```text
+//! s⁺_k = s⁻_k σ/(σ + β w_k),   σ = |s⁺| > 0 the root of Σ_k (s⁻_k/(σ + β w_k))² = 1,   w = (1, 1, 8/9)
+//! s⁺ = 0 (sticking) when Σ_k (s⁻_k/(β w_k))² ≤ 1
+//! ```
+//!
+//! — sliding without spin simply `Δv = −μ (1 + e) v_n` along `v`; spinning
+//! without sliding `Δω_z = −(4/3) μ (1 + e) v_n/a`.
+
+use glam::{DMat3, DQuat, DVec3};
+use kreisel::dynamics::{
+    AdaptiveTolerance, ContactLaw, ContactShape, DiskContact, GroundTopState, TableBody,
+    TableContact, TableEventKind, TableMotion,
+};
+
+const M: f64 = 0.01;
+const A: f64 = 0.02;
+const H: f64 = 0.1;
+const E: f64 = 0.8;
+const G: f64 = 9.81;
+
+/// The disk dropped exactly flat from `H` with `velocity` (horizontal)
+/// and spin `omega_z`, friction `mu`.
+fn dropped_flat(mu: f64, velocity: DVec3, omega_z: f64) -> TableMotion {
+    let rim = DiskContact::try_new(A, DVec3::ZERO, DVec3::Z).unwrap();
+    let law = ContactLaw::new(mu).try_with_restitution(E).unwrap();
+    let inertia = DMat3::from_diagonal(DVec3::new(0.25, 0.25, 0.5) * M * A * A);
+    let contacts = vec![TableContact {
+        shape: ContactShape::Disk(rim),
+        law,
+    }];
+    let body = TableBody::try_new(M, inertia, contacts, G).unwrap();
+    let start = GroundTopState {
+        com_world: DVec3::new(0.0, 0.0, H),
+        velocity_world: velocity,
+        world_from_body: DQuat::IDENTITY,
+        l_world: DVec3::new(0.0, 0.0, 0.5 * M * A * A * omega_z),
+    };
+    TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-12, 1e-12)).unwrap()
+}
+
+/// `(t₁, v₁)`.
+fn first_impact() -> (f64, f64) {
+    ((2.0 * H / G).sqrt(), (2.0 * G * H).sqrt())
+}
+
+/// The impacts so far: time, approach and rebound speeds.
+fn impacts(run: &TableMotion) -> Vec<(f64, f64, f64)> {
+    run.events()
+        .iter()
+        .filter_map(|e| match e.kind {
+            TableEventKind::Impact {
+                approach_speed,
+                rebound_speed,
+            } => Some((e.time, approach_speed, rebound_speed)),
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn a_disk_dropped_flat_bounces_on_its_face_as_the_closed_form() {
+    let mut run = dropped_flat(0.3, DVec3::ZERO, 0.0);
+    let (t1, v1) = first_impact();
+    let mut t_impact = t1;
+    for n in 1..=20 {
+        let rebound = E.powi(n) * v1;
+        let apex_time = t_impact + rebound / G;
+        run.try_advance_to(apex_time).unwrap();
+        let z = run.state().com_world.z;
+        let apex = E.powi(2 * n) * H;
+        assert!(
+            ((z - apex) / apex).abs() < 1e-12,
+            "apex {n}: {z} vs {apex} (relative {:e})",
+            (z - apex) / apex
+        );
+        // Flat all along, no turn.
+        assert_eq!(run.state().world_from_body, DQuat::IDENTITY);
+        t_impact += 2.0 * rebound / G;
+    }
+    let found = impacts(&run);
+    assert_eq!(found.len(), 20);
+    let mut expected = t1;
+    for (n, &(t, approach, rebound)) in found.iter().enumerate() {
+        assert!(
+            ((t - expected) / expected).abs() < 1e-12,
+            "impact {n}: {t} vs {expected}"
+        );
+        let v = E.powi(n as i32) * v1;
+        assert!((approach - v).abs() < 1e-12 * v, "{approach} vs {v}");
+        assert!(
+            (rebound - E * v).abs() < 1e-12 * v,
+            "{rebound} vs {}",
+            E * v
+        );
+        expected += 2.0 * E.powi(n as i32 + 1) * v1 / G;
+    }
+}
+
+#[test]
+fn the_face_bounces_accumulate_at_the_zeno_point_and_the_disk_rests_flat() {
+    let mut run = dropped_flat(0.3, DVec3::ZERO, 0.0);
+    let (t1, _) = first_impact();
+    let zeno = t1 * (1.0 + E) / (1.0 - E);
+    run.try_advance_to(2.0 * zeno).unwrap();
+    assert!(run.is_resting());
+    assert_eq!(run.lying_flat_on(), Some(0));
+    let accumulated = run
+        .events()
+        .iter()
+        .find_map(|e| match e.kind {
+            TableEventKind::ImpactsAccumulate { accumulation_time } => Some(accumulation_time),
+            _ => None,
+        })
+        .expect("the bounces accumulate");
+    assert!((accumulated - zeno).abs() < 1e-9, "{accumulated} vs {zeno}");
+    let rest = run.events().last().unwrap();
+    assert_eq!(rest.kind, TableEventKind::Rest);
+    assert!(
+        (rest.time - zeno).abs() < 1e-9,
+        "rest at {} vs {zeno}",
+        rest.time
+    );
+    let s = run.state();
+    assert!(s.com_world.z.abs() < 1e-15, "{}", s.com_world.z);
+    assert_eq!(s.velocity_world, DVec3::ZERO);
+    assert_eq!(s.l_world, DVec3::ZERO);
+    let found = impacts(&run);
+    let (last, bounces) = found.split_last().unwrap();
+    assert!(bounces.len() > 40, "{} bounces followed", bounces.len());
+    for &(t, approach, rebound) in bounces {
+        assert!(
+            (rebound - E * approach).abs() <= 1e-12 * approach,
+            "at {t}: {approach} → {rebound}"
+        );
+    }
+    // The last is summed: plastic, its rebound below the accumulation speed.
+    assert!(last.2.abs() < 1e-15, "{last:?}");
+}
