@@ -154,3 +154,126 @@ fn the_face_bounces_accumulate_at_the_zeno_point_and_the_disk_rests_flat() {
     // The last is summed: plastic, its rebound below the accumulation speed.
     assert!(last.2.abs() < 1e-15, "{last:?}");
 }
+
+/// The slip `s⁺` after a face impact from `s⁻` with `β = μ (1 + e) v_n`
+/// (the module's closed form; σ by bisection).
+fn slip_after(s: DVec3, beta: f64) -> DVec3 {
+    let w = DVec3::new(1.0, 1.0, 8.0 / 9.0);
+    let residual = |sigma: f64| {
+        (0..3)
+            .map(|k| (s[k] / (sigma + beta * w[k])).powi(2))
+            .sum::<f64>()
+            - 1.0
+    };
+    if residual(0.0) <= 0.0 {
+        return DVec3::ZERO;
+    }
+    let (mut lo, mut hi) = (0.0, s.length());
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if residual(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let sigma = 0.5 * (lo + hi);
+    DVec3::new(
+        s.x * sigma / (sigma + beta * w.x),
+        s.y * sigma / (sigma + beta * w.y),
+        s.z * sigma / (sigma + beta * w.z),
+    )
+}
+
+/// The run from its start to rest event by event: after each impact its
+/// slip `(v_x, v_y, ε ω_z)` against [`slip_after`] from the slip before,
+/// the energy never rising; the impacts that slid and stuck.
+fn follow_the_friction(mu: f64, velocity: DVec3, omega_z: f64) -> (usize, usize) {
+    let mut run = dropped_flat(mu, velocity, omega_z);
+    let lever = 2.0 * A / 3.0;
+    let slip_of = |run: &TableMotion| {
+        let s = run.state();
+        let omega_z = s.l_world.z / (0.5 * M * A * A);
+        DVec3::new(s.velocity_world.x, s.velocity_world.y, lever * omega_z)
+    };
+    let e0 = run.body().energy(run.state());
+    let mut energy = e0;
+    let mut slip = slip_of(&run);
+    let (t1, v1) = first_impact();
+    let mut seen = 0;
+    let (mut slid, mut stuck) = (0, 0);
+    while run
+        .try_advance_until_event(2.0 * t1 * (1.0 + E) / (1.0 - E))
+        .unwrap()
+    {
+        let now = run.body().energy(run.state());
+        assert!(now <= energy + 1e-12 * e0, "energy rose at {}", run.time());
+        energy = now;
+        let found = impacts(&run);
+        if found.len() == seen {
+            continue;
+        }
+        assert_eq!(found.len(), seen + 1);
+        let (t, approach, rebound) = found[seen];
+        let v_n = E.powi(seen as i32) * v1;
+        assert!((approach - v_n).abs() < 1e-12 * v1, "{approach} vs {v_n}");
+        // The last impact is summed (plastic): e = 0 there.
+        let e = if rebound == 0.0 { 0.0 } else { E };
+        let expected = slip_after(slip, mu * (1.0 + e) * v_n);
+        let got = slip_of(&run);
+        assert!(
+            (got - expected).length() < 1e-12 * v1,
+            "impact {seen} at {t}: {got} vs {expected}"
+        );
+        if expected == DVec3::ZERO {
+            // Stopped, to the rounding of the sticking impulse.
+            assert!(got.length() < 1e-15 * v1, "sticks at impact {seen}: {got}");
+            stuck += 1;
+        } else {
+            slid += 1;
+        }
+        slip = got;
+        seen += 1;
+    }
+    assert!(run.is_resting() && run.lying_flat_on() == Some(0));
+    assert_eq!(run.state().velocity_world, DVec3::ZERO);
+    (slid, stuck)
+}
+
+#[test]
+fn sliding_through_the_impacts_loses_mu_one_plus_e_v_n_per_bounce() {
+    // No spin: Δv = −μ (1 + e) v_n along v while it slides; it sticks at
+    // the third impact (0.3 − 0.126 (1 + 0.8) = 0.073 < 0.126 · 0.64).
+    let (mu, v0) = (0.05, 0.3);
+    let (_, v1) = first_impact();
+    let beta = mu * (1.0 + E) * v1;
+    assert!(v0 > beta * (1.0 + E) && v0 < beta * (1.0 + E + E * E));
+    let (slid, stuck) = follow_the_friction(mu, DVec3::new(v0, 0.0, 0.0), 0.0);
+    assert_eq!(slid, 2);
+    assert!(stuck > 40, "{stuck}");
+}
+
+#[test]
+fn sliding_and_spinning_through_the_impacts_follow_contensous_lever() {
+    // Sliding and spinning at once: the slip's direction turns at each
+    // impact (the spin's weight 8/9 differs), both stop together.
+    let (slid, stuck) = follow_the_friction(0.05, DVec3::new(0.3, 0.1, 0.0), 20.0);
+    assert!(slid >= 2, "{slid}");
+    assert!(stuck > 40, "{stuck}");
+}
+
+#[test]
+fn pure_spin_loses_four_thirds_mu_one_plus_e_v_n_over_a_per_bounce() {
+    // Δω_z = −(4/3) μ (1 + e) v_n/a, by hand, at the first impact.
+    let (mu, omega0) = (0.05, 40.0);
+    let mut run = dropped_flat(mu, DVec3::ZERO, omega0);
+    let (t1, v1) = first_impact();
+    run.try_advance_to(t1 + 0.5 * E * v1 / G).unwrap();
+    let omega = run.state().l_world.z / (0.5 * M * A * A);
+    let expected = omega0 - 4.0 / 3.0 * mu * (1.0 + E) * v1 / A;
+    assert!(
+        (omega - expected).abs() < 1e-12 * omega0,
+        "{omega} vs {expected}"
+    );
+    assert_eq!(run.state().velocity_world.truncate(), glam::DVec2::ZERO);
+}

@@ -270,7 +270,7 @@ pub(crate) fn rim_flip_impact(
 /// # Errors
 /// [`DynamicsError::ImpactGainsEnergy`] when the impulses would raise the
 /// kinetic energy beyond rounding; [`DynamicsError::ContactUnsolved`]
-/// when the slip direction does not settle.
+/// when the slipping impulse is not found.
 pub(crate) fn face_impact(
     body: &TableBody,
     state: &GroundTopState,
@@ -373,65 +373,202 @@ pub(crate) fn face_impact(
 /// + G P` zero in its normal part (`ξ_N = ξ_α = ξ_β = 0`) and Coulomb's law
 /// on its friction part: sticking (`ξ_T = 0`) when that impulse lies in
 /// the cone `|P_T| ≤ μ P_N`, else slipping along the slip after, `P_T =
-/// −μ P_N ξ_T/|ξ_T|` (the direction by damped fixed-point iteration).
+/// −μ P_N ξ_T/|ξ_T|` (by bisection on `μ P_N/|ξ_T|`).
 /// `None` when the normal part is singular.
 ///
 /// # Errors
-/// [`DynamicsError::ContactUnsolved`] (its time NaN) when the slip
-/// direction does not settle.
+/// [`DynamicsError::ContactUnsolved`] (its time NaN) when no slip
+/// satisfies the cone (the bracket is not found).
 fn face_impulses(
     g: &[[f64; 6]; 6],
     y_free: &[f64; 6],
     mu: f64,
 ) -> Result<Option<[f64; 6]>, DynamicsError> {
-    let solve = |n: usize, column0: &dyn Fn(usize) -> f64| {
+    let solve = |n: usize| {
         let mut a = [0.0; 36];
         let mut rhs = [0.0; 6];
         for r in 0..n {
             for k in 0..n {
-                a[r * n + k] = if k == 0 { column0(r) } else { g[r][k] };
+                a[r * n + k] = g[r][k];
             }
             rhs[r] = -y_free[r];
         }
         super::dense::solve_in_place(&mut a, &mut rhs, n).then_some(rhs)
     };
-    let frictionless = || solve(3, &|r| g[r][0]);
     if mu == 0.0 {
-        return Ok(frictionless());
+        return Ok(solve(3));
     }
     // Sticking: ξ = 0 in all six.
-    let Some(stick) = solve(6, &|r| g[r][0]) else {
+    let Some(stick) = solve(6) else {
         return Ok(None);
     };
     let friction = glam::DVec3::new(stick[3], stick[4], stick[5]);
     if stick[0] > 0.0 && friction.length() <= mu * stick[0] * (1.0 + 1e-12) {
         return Ok(Some(stick));
     }
-    // Slipping along d: P_T = −μ P_N d folded into P_N's column.
-    let slip_along = |d: glam::DVec3| {
-        let column = |r: usize| g[r][0] - mu * (0..3).map(|c| g[r][3 + c] * d[c]).sum::<f64>();
-        let normal = solve(3, &column)?;
-        let mut p = [0.0; 6];
-        p[..3].copy_from_slice(&normal[..3]);
-        for c in 0..3 {
-            p[3 + c] = -mu * normal[0] * d[c];
+    // Slipping: P_T = −λ ξ_T with λ = μ P_N/|ξ_T| > 0. For a given λ the
+    // impulses and the slip after are linear; λ is the root of
+    // h(λ) = λ |ξ_T| − μ P_N (h(0) = −μ P_N < 0; h → |P_T| of sticking
+    // > μ P_N as λ → ∞), bracketed and bisected to rounding.
+    let at = |lambda: f64| {
+        let mut a = [0.0; 36];
+        let mut rhs = [0.0; 6];
+        for r in 0..6 {
+            for k in 0..6 {
+                a[r * 6 + k] = if k < 3 {
+                    g[r][k]
+                } else {
+                    -lambda * g[r][k] - if k == r { 1.0 } else { 0.0 }
+                };
+            }
+            rhs[r] = -y_free[r];
         }
-        let mut xi_t = glam::DVec3::ZERO;
-        for c in 0..3 {
-            xi_t[c] = y_free[3 + c] + (0..6).map(|k| g[3 + c][k] * p[k]).sum::<f64>();
-        }
-        Some((p, xi_t))
+        super::dense::solve_in_place(&mut a, &mut rhs, 6).then_some(rhs)
     };
-    let mut d = -friction.normalize_or_zero();
-    for _ in 0..2000 {
-        let Some((p, xi_t)) = slip_along(d) else {
+    let h = |z: &[f64; 6], lambda: f64| {
+        lambda * glam::DVec3::new(z[3], z[4], z[5]).length() - mu * z[0]
+    };
+    let (mut lo, mut hi) = (0.0, 1.0 / g[3][3]);
+    let mut bracketed = false;
+    for _ in 0..200 {
+        let Some(z) = at(hi) else {
             return Ok(None);
         };
-        let next = xi_t.normalize_or_zero();
-        if next == glam::DVec3::ZERO || (next - d).length() <= 1e-14 {
-            return Ok(Some(p));
+        if h(&z, hi) > 0.0 {
+            bracketed = true;
+            break;
         }
-        d = (d + next).normalize_or(next);
+        (lo, hi) = (hi, 2.0 * hi);
     }
-    Err(DynamicsError::ContactUnsolved { time: f64::NAN })
+    if !bracketed {
+        return Err(DynamicsError::ContactUnsolved { time: f64::NAN });
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let Some(z) = at(mid) else {
+            return Ok(None);
+        };
+        if h(&z, mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let lambda = 0.5 * (lo + hi);
+    let Some(z) = at(lambda) else {
+        return Ok(None);
+    };
+    // The friction on the cone exactly: P_T = −μ P_N ξ_T/|ξ_T|.
+    let d = glam::DVec3::new(z[3], z[4], z[5]).normalize_or_zero();
+    let mut p = [0.0; 6];
+    p[..3].copy_from_slice(&z[..3]);
+    for c in 0..3 {
+        p[3 + c] = -mu * z[0] * d[c];
+    }
+    Ok(Some(p))
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::{DMat3, DQuat, DVec3};
+
+    use super::*;
+    use crate::table::{ContactLaw, TableContact};
+    use crate::{ContactShape, DiskContact};
+
+    const M: f64 = 0.01;
+    const A: f64 = 0.02;
+
+    /// A disk of radius `A` lying flat, its face in the centre of mass's
+    /// plane, horizontal inertia `i_h`, law `law`.
+    fn flat_disk(i_h: f64, law: ContactLaw) -> TableBody {
+        let rim = DiskContact::try_new(A, DVec3::ZERO, DVec3::Z).unwrap();
+        let inertia = DMat3::from_diagonal(DVec3::new(i_h, i_h, 0.5 * M * A * A));
+        let contacts = vec![TableContact {
+            shape: ContactShape::Disk(rim),
+            law,
+        }];
+        TableBody::try_new(M, inertia, contacts, 9.81).unwrap()
+    }
+
+    /// Flat on the table, striking at `v_z` with tilting rates `omega`.
+    fn striking(body: &TableBody, v: DVec3, omega: DVec3) -> GroundTopState {
+        let i = body.inertia_body();
+        GroundTopState {
+            com_world: DVec3::ZERO,
+            velocity_world: v,
+            world_from_body: DQuat::IDENTITY,
+            l_world: i * omega,
+        }
+    }
+
+    #[test]
+    fn the_centre_speed_and_both_tilting_rates_reverse_by_e() {
+        let law = ContactLaw::new(0.0).try_with_restitution(0.5).unwrap();
+        let body = flat_disk(0.25 * M * A * A, law);
+        let omega = DVec3::new(5.0, -3.0, 7.0);
+        let state = striking(&body, DVec3::new(0.2, 0.0, -1.0), omega);
+        let out = face_impact(&body, &state, 0, 1e-9, 0.0).unwrap().unwrap();
+        let after = out.state;
+        let omega_after = body.omega_world(&after);
+        // v_z⁺ = −e v_z⁻, ω_h⁺ = −e ω_h⁻; sliding and spin untouched.
+        assert!((after.velocity_world - DVec3::new(0.2, 0.0, 0.5)).length() < 1e-15);
+        assert!((omega_after - DVec3::new(-2.5, 1.5, 7.0)).length() < 1e-13);
+        assert_eq!(out.speeds, vec![(0, 1.0, 0.5, true)]);
+    }
+
+    #[test]
+    fn an_elastic_frictionless_face_keeps_the_energy_and_friction_loses_it() {
+        let elastic = ContactLaw::new(0.0).try_with_restitution(1.0).unwrap();
+        let body = flat_disk(0.25 * M * A * A, elastic);
+        let state = striking(
+            &body,
+            DVec3::new(0.3, 0.1, -1.0),
+            DVec3::new(2.0, 1.0, 30.0),
+        );
+        let after = face_impact(&body, &state, 0, 1e-9, 0.0)
+            .unwrap()
+            .unwrap()
+            .state;
+        let (t0, t1) = (body.kinetic_energy(&state), body.kinetic_energy(&after));
+        assert!((t1 - t0).abs() < 1e-15 * t0, "{t0} → {t1}");
+        let rough = flat_disk(
+            0.25 * M * A * A,
+            ContactLaw::new(0.2).try_with_restitution(1.0).unwrap(),
+        );
+        let after = face_impact(&rough, &state, 0, 1e-9, 0.0)
+            .unwrap()
+            .unwrap()
+            .state;
+        assert!(rough.kinetic_energy(&after) < t0);
+    }
+
+    #[test]
+    fn a_face_whose_pressure_would_leave_it_or_that_does_not_strike_face_first_is_no_face_impact() {
+        let law = ContactLaw::new(0.0).try_with_restitution(0.5).unwrap();
+        // A long body (I_h = 10 m a²): reversing a|ω_h| = |v_z|/2 needs
+        // a couple 5 a P_N, its centre of pressure 5 a from the face's
+        // centre.
+        let long = flat_disk(10.0 * M * A * A, law);
+        let state = striking(
+            &long,
+            DVec3::new(0.0, 0.0, -1.0),
+            DVec3::new(0.5 / A, 0.0, 0.0),
+        );
+        assert!(face_impact(&long, &state, 0, 1e-9, 0.0).unwrap().is_none());
+        // A thin disk rocking faster than it falls: a rim point rises.
+        let thin = flat_disk(0.25 * M * A * A, law);
+        let state = striking(
+            &thin,
+            DVec3::new(0.0, 0.0, -1.0),
+            DVec3::new(0.0, 2.0 / A, 0.0),
+        );
+        assert!(face_impact(&thin, &state, 0, 1e-9, 0.0).unwrap().is_none());
+        // Rising: no impact.
+        let state = striking(&thin, DVec3::new(0.0, 0.0, 1.0), DVec3::ZERO);
+        assert!(face_impact(&thin, &state, 0, 1e-9, 0.0).unwrap().is_none());
+    }
 }
