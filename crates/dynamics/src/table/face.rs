@@ -24,10 +24,15 @@
 //! the centre of pressure inside the face, else
 //! [`DynamicsError::DiskFlat`].
 //!
-//! The face lands plastically (a face does not bounce here: a disk
-//! rocking through flat strikes with its far rim point, which the rim
-//! contact models with its restitution); applied inputs are not followed
-//! on the face ([`DynamicsError::DiskFlat`]).
+//! The landing is plastic. Before it, a face closing from flight with
+//! the rim's restitution `e > 0` bounces (`impact::face_impact`: Newton's
+//! law at every point of the face, `(v_z, ω_x, ω_y)⁺ = −e (v_z, ω_x,
+//! ω_y)⁻` with the impulse wrench's centre of pressure inside the face,
+//! Coulomb–Contensou friction at the impact with the lever `ε` below);
+//! its bounces accumulate and the face lands here. A disk rocking through
+//! flat strikes with its far rim point instead, which the rim contact
+//! models with its restitution. Applied inputs are not followed on the
+//! face ([`DynamicsError::DiskFlat`]).
 
 use glam::{DMat3, DQuat, DVec3};
 

@@ -369,11 +369,11 @@ pub(crate) fn face_impact(
     }))
 }
 
-/// The face's impulses `P = (P_N, M_x, M_y, P_x, P_y, P_d)` with `ξ = y_free
-/// + G P` zero in its normal part (`ξ_N = ξ_α = ξ_β = 0`) and Coulomb's law
-/// on its friction part: sticking (`ξ_T = 0`) when that impulse lies in
-/// the cone `|P_T| ≤ μ P_N`, else slipping along the slip after, `P_T =
-/// −μ P_N ξ_T/|ξ_T|` (by bisection on `μ P_N/|ξ_T|`).
+/// The face's impulses `P = (P_N, M_x, M_y, P_x, P_y, P_d)` with
+/// `ξ = y_free + G P` zero in its normal part (`ξ_N = ξ_α = ξ_β = 0`) and
+/// Coulomb's law on its friction part: sticking (`ξ_T = 0`) when that
+/// impulse lies in the cone `|P_T| ≤ μ P_N`, else slipping along the slip
+/// after, `P_T = −μ P_N ξ_T/|ξ_T|` (by bisection on `μ P_N/|ξ_T|`).
 /// `None` when the normal part is singular.
 ///
 /// # Errors

@@ -79,7 +79,8 @@ pub const SLIP_BAND: f64 = 1e-6;
 /// normal velocities `|v_z| + a |ω × n|` below it. Faster, the rim rocks
 /// on through flat (its far point strikes, `impact::rim_flip_impact`).
 /// The last rocking the landing stops holds below 10⁻⁴ of the body's
-/// energy scale `m g ℓ`.
+/// energy scale `m g ℓ`. A face closing from flight with restitution
+/// `e > 0` strikes at any speed (Newton's law over the face).
 pub const FACE_LANDING: f64 = 1e-2;
 
 /// The smallest step, relative to `max(|t|, τ)` (`τ = √(ℓ/g)`).
@@ -766,11 +767,16 @@ impl TableMotion {
     /// Lands a disk on its face when a closed (or touching) rim's axis is
     /// within [`DISK_FLAT_TILT`] of the vertical: the rim's lowest point is
     /// then ill-defined and the face carries the disk (`face`): `true`
-    /// when it landed.
+    /// when it landed. A face closing from flight (its rim open, at or
+    /// below the table) with restitution `e > 0` strikes face first
+    /// instead ([`TableMotion::strike_face`]): it bounces off, or lands
+    /// once its bounces are summed; rising from its strike it does not
+    /// land.
     ///
     /// # Errors
     /// Those of the landing ([`DynamicsError::DiskFlat`] when the face
-    /// cannot hold the disk flat or inputs act).
+    /// cannot hold the disk flat or inputs act) and of the strike
+    /// ([`DynamicsError::ImpactGainsEnergy`]).
     fn land_flat_disks(&mut self) -> Result<bool, DynamicsError> {
         if self.face.is_some() {
             return Ok(true);
