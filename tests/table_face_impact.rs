@@ -27,8 +27,12 @@
 use glam::{DMat3, DQuat, DVec3};
 use kreisel::dynamics::{
     AdaptiveTolerance, ContactLaw, ContactShape, DiskContact, GroundTopState, TableBody,
-    TableContact, TableEventKind, TableMotion,
+    TableContact, TableMotion,
 };
+
+mod common;
+
+use common::bounces::{assert_accumulates_at, impacts};
 
 const M: f64 = 0.01;
 const A: f64 = 0.02;
@@ -59,20 +63,6 @@ fn dropped_flat(mu: f64, velocity: DVec3, omega_z: f64) -> TableMotion {
 /// `(t₁, v₁)`.
 fn first_impact() -> (f64, f64) {
     ((2.0 * H / G).sqrt(), (2.0 * G * H).sqrt())
-}
-
-/// The impacts so far: time, approach and rebound speeds.
-fn impacts(run: &TableMotion) -> Vec<(f64, f64, f64)> {
-    run.events()
-        .iter()
-        .filter_map(|e| match e.kind {
-            TableEventKind::Impact {
-                approach_speed,
-                rebound_speed,
-            } => Some((e.time, approach_speed, rebound_speed)),
-            _ => None,
-        })
-        .collect()
 }
 
 #[test]
@@ -122,37 +112,12 @@ fn the_face_bounces_accumulate_at_the_zeno_point_and_the_disk_rests_flat() {
     run.try_advance_to(2.0 * zeno).unwrap();
     assert!(run.is_resting());
     assert_eq!(run.lying_flat_on(), Some(0));
-    let accumulated = run
-        .events()
-        .iter()
-        .find_map(|e| match e.kind {
-            TableEventKind::ImpactsAccumulate { accumulation_time } => Some(accumulation_time),
-            _ => None,
-        })
-        .expect("the bounces accumulate");
-    assert!((accumulated - zeno).abs() < 1e-9, "{accumulated} vs {zeno}");
-    let rest = run.events().last().unwrap();
-    assert_eq!(rest.kind, TableEventKind::Rest);
-    assert!(
-        (rest.time - zeno).abs() < 1e-9,
-        "rest at {} vs {zeno}",
-        rest.time
-    );
     let s = run.state();
     assert!(s.com_world.z.abs() < 1e-15, "{}", s.com_world.z);
     assert_eq!(s.velocity_world, DVec3::ZERO);
     assert_eq!(s.l_world, DVec3::ZERO);
-    let found = impacts(&run);
-    let (last, bounces) = found.split_last().unwrap();
-    assert!(bounces.len() > 40, "{} bounces followed", bounces.len());
-    for &(t, approach, rebound) in bounces {
-        assert!(
-            (rebound - E * approach).abs() <= 1e-12 * approach,
-            "at {t}: {approach} → {rebound}"
-        );
-    }
-    // The last is summed: plastic, its rebound below the accumulation speed.
-    assert!(last.2.abs() < 1e-15, "{last:?}");
+    let (followed, _) = assert_accumulates_at(&run, zeno, E);
+    assert!(followed > 40, "{followed} bounces followed");
 }
 
 /// The slip `s⁺` after a face impact from `s⁻` with `β = μ (1 + e) v_n`

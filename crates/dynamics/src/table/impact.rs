@@ -102,19 +102,7 @@ pub(crate) fn impact(
             total = total.plus(frame.rows[i].directions[k].scaled(*pk));
         }
     }
-    let after = GroundTopState {
-        velocity_world: state.velocity_world + total.force * frame.inverse_mass,
-        l_world: state.l_world + total.torque,
-        ..*state
-    };
-    let (before_t, after_t) = (body.kinetic_energy(state), body.kinetic_energy(&after));
-    if after_t > before_t * (1.0 + 1e-12) {
-        return Err(DynamicsError::ImpactGainsEnergy {
-            time,
-            before: before_t,
-            after: after_t,
-        });
-    }
+    let after = struck(body, state, &frame, total, time)?;
     let speeds = participants
         .iter()
         .map(|&i| {
@@ -132,6 +120,35 @@ pub(crate) fn impact(
         speeds,
         accumulations,
     })
+}
+
+/// `state` after the impulse wrench `total` (velocities only), checked
+/// against the kinetic energy before.
+///
+/// # Errors
+/// [`DynamicsError::ImpactGainsEnergy`] (at `time`) when the kinetic
+/// energy rises beyond rounding.
+fn struck(
+    body: &TableBody,
+    state: &GroundTopState,
+    frame: &ContactFrame,
+    total: Wrench,
+    time: f64,
+) -> Result<GroundTopState, DynamicsError> {
+    let after = GroundTopState {
+        velocity_world: state.velocity_world + total.force * frame.inverse_mass,
+        l_world: state.l_world + total.torque,
+        ..*state
+    };
+    let (before, kinetic) = (body.kinetic_energy(state), body.kinetic_energy(&after));
+    if kinetic > before * (1.0 + 1e-12) {
+        return Err(DynamicsError::ImpactGainsEnergy {
+            time,
+            before,
+            after: kinetic,
+        });
+    }
+    Ok(after)
 }
 
 /// `e` with its time set, where it has one.
@@ -347,19 +364,7 @@ pub(crate) fn face_impact(
         .iter()
         .zip(p)
         .fold(Wrench::default(), |t, (wk, pk)| t.plus(wk.scaled(pk)));
-    let after = GroundTopState {
-        velocity_world: state.velocity_world + total.force * frame.inverse_mass,
-        l_world: state.l_world + total.torque,
-        ..*state
-    };
-    let (before_t, after_t) = (body.kinetic_energy(state), body.kinetic_energy(&after));
-    if after_t > before_t * (1.0 + 1e-12) {
-        return Err(DynamicsError::ImpactGainsEnergy {
-            time,
-            before: before_t,
-            after: after_t,
-        });
-    }
+    let after = struck(body, state, &frame, total, time)?;
     let omega_after = ContactFrame::of(body, &after, time).omega;
     let rebound = w[0].dot_motion(after.velocity_world, omega_after);
     Ok(Some(ImpactOutcome {
