@@ -49,3 +49,53 @@ pub fn assert_accumulates_at(run: &TableMotion, zeno: f64, e: f64) -> (usize, f6
     assert!(last.2.abs() < 1e-15, "{last:?}");
     (bounces.len(), last.1)
 }
+
+/// The closed form of bounces: the first impact at `t1` with speed `v1`,
+/// restitution `e`, gravity `g`.
+pub struct Bounces {
+    pub t1: f64,
+    pub v1: f64,
+    pub e: f64,
+    pub g: f64,
+}
+
+impl Bounces {
+    /// Advances `run` to the apex of each of its first `count` bounces
+    /// (after impact n it rises at `eⁿ v₁`), asserting the centre of
+    /// mass's height there against `apex(n)` and then each impact's time
+    /// (`t₁ + 2 v₁ (e + … + eⁿ)/g`) to 10⁻¹² relative; `each` runs at
+    /// every apex. The impacts found.
+    pub fn assert_followed(
+        &self,
+        run: &mut TableMotion,
+        count: i32,
+        apex: &dyn Fn(i32) -> f64,
+        each: &mut dyn FnMut(&TableMotion),
+    ) -> Vec<(f64, f64, f64)> {
+        let mut t_impact = self.t1;
+        for n in 1..=count {
+            let rebound = self.e.powi(n) * self.v1;
+            run.try_advance_to(t_impact + rebound / self.g).unwrap();
+            let z = run.state().com_world.z;
+            let apex = apex(n);
+            assert!(
+                ((z - apex) / apex).abs() < 1e-12,
+                "apex {n}: {z} vs {apex} (relative {:e})",
+                (z - apex) / apex
+            );
+            each(run);
+            t_impact += 2.0 * rebound / self.g;
+        }
+        let found = impacts(run);
+        assert_eq!(found.len(), count as usize);
+        let mut expected = self.t1;
+        for (n, &(t, _, _)) in found.iter().enumerate() {
+            assert!(
+                ((t - expected) / expected).abs() < 1e-12,
+                "impact {n}: {t} vs {expected}"
+            );
+            expected += 2.0 * self.e.powi(n as i32 + 1) * self.v1 / self.g;
+        }
+        found
+    }
+}
