@@ -552,6 +552,32 @@ mod tests {
     }
 
     #[test]
+    fn an_impulse_that_would_raise_the_kinetic_energy_is_a_typed_error() {
+        let law = ContactLaw::new(0.3).try_with_restitution(0.5).unwrap();
+        let body = flat_disk(0.25 * M * A * A, law);
+        let state = striking(&body, DVec3::new(0.0, 0.0, -1.0), DVec3::ZERO);
+        let frame = ContactFrame::of(&body, &state, 0.0);
+        // Pushed down harder: |v_z| rises from 1 to 1.5 m/s.
+        let down = Wrench {
+            force: DVec3::new(0.0, 0.0, -0.5 * M),
+            torque: DVec3::ZERO,
+        };
+        match struck(&body, &state, &frame, down, 0.25) {
+            Err(DynamicsError::ImpactGainsEnergy {
+                time,
+                before,
+                after,
+            }) => {
+                assert_eq!(time, 0.25);
+                assert!((before - 0.5 * M).abs() < 1e-18 && (after - 0.5 * M * 2.25).abs() < 1e-17);
+            }
+            other => panic!("{other:?}"),
+        }
+        // The face's own impulse (e = 0.5) loses energy.
+        assert!(struck(&body, &state, &frame, down.scaled(-3.0), 0.25).is_ok());
+    }
+
+    #[test]
     fn a_face_whose_pressure_would_leave_it_or_that_does_not_strike_face_first_is_no_face_impact() {
         let law = ContactLaw::new(0.0).try_with_restitution(0.5).unwrap();
         // A long body (I_h = 10 m a²): reversing a|ω_h| = |v_z|/2 needs
