@@ -10,8 +10,9 @@
 
 mod common;
 
-use kreisel::dynamics::{TableEventKind, TableMotion};
+use kreisel::dynamics::TableMotion;
 
+use common::bounces::{Bounces, assert_accumulates_at};
 use common::bouncing_ball::{E, G, H0, R, dropped_ball};
 
 fn ball_run(rtol: f64) -> TableMotion {
@@ -30,35 +31,8 @@ fn impact_times_and_apex_heights_follow_the_closed_form() {
     let (t1, v1) = first_impact();
     assert!((t1 - 0.42835).abs() < 1e-5, "t1 = {t1}");
     let d = H0 - R;
-    let mut t_impact = t1;
-    for n in 1..=20 {
-        let rebound = E.powi(n) * v1;
-        let apex_time = t_impact + rebound / G;
-        run.try_advance_to(apex_time).unwrap();
-        let z = run.state().com_world.z;
-        let apex = R + E.powi(2 * n) * d;
-        assert!(
-            ((z - apex) / apex).abs() < 1e-12,
-            "apex {n}: {z} vs {apex} (relative {:e})",
-            (z - apex) / apex
-        );
-        t_impact += 2.0 * rebound / G;
-    }
-    let impacts: Vec<f64> = run
-        .events()
-        .iter()
-        .filter(|e| matches!(e.kind, TableEventKind::Impact { .. }))
-        .map(|e| e.time)
-        .collect();
-    assert_eq!(impacts.len(), 20);
-    let mut expected = t1;
-    for (n, t) in impacts.iter().enumerate() {
-        assert!(
-            ((t - expected) / expected).abs() < 1e-12,
-            "impact {n}: {t} vs {expected}"
-        );
-        expected += 2.0 * E.powi(n as i32 + 1) * v1 / G;
-    }
+    let bounces = Bounces { t1, v1, e: E, g: G };
+    bounces.assert_followed(&mut run, 20, &|n| R + E.powi(2 * n) * d, &mut |_| {});
 }
 
 #[test]
@@ -74,45 +48,12 @@ fn the_bounces_accumulate_at_the_zeno_point_and_the_ball_rests() {
     );
     run.try_advance_to(20.0).unwrap();
     assert!(run.is_resting());
-    let accumulated = run
-        .events()
-        .iter()
-        .find_map(|e| match e.kind {
-            TableEventKind::ImpactsAccumulate { accumulation_time } => Some(accumulation_time),
-            _ => None,
-        })
-        .expect("the bounces accumulate");
-    assert!((accumulated - zeno).abs() < 1e-9, "{accumulated} vs {zeno}");
-    let rest = run.events().last().unwrap();
-    assert_eq!(rest.kind, TableEventKind::Rest);
-    assert!(
-        (rest.time - zeno).abs() < 1e-9,
-        "rest at {} vs {zeno}",
-        rest.time
-    );
     // At rest on the table: the centre at R, no speed.
     let s = run.state();
     assert!((s.com_world.z - R).abs() < 1e-12 && s.velocity_world.length() < 1e-9);
     // Each rebound is e times its approach, to rounding, but the last:
     // there the bounces are summed and the contact closes.
-    let impacts: Vec<(f64, f64, f64)> = run
-        .events()
-        .iter()
-        .filter_map(|e| match e.kind {
-            TableEventKind::Impact {
-                approach_speed,
-                rebound_speed,
-            } => Some((e.time, approach_speed, rebound_speed)),
-            _ => None,
-        })
-        .collect();
-    let (last, bounces) = impacts.split_last().unwrap();
-    assert!(bounces.len() > 100, "{} bounces followed", bounces.len());
-    for &(t, approach, rebound) in bounces {
-        assert!(
-            (rebound - E * approach).abs() <= 1e-12 * approach,
-            "at {t}: {approach} → {rebound}"
-        );
-    }
-    assert!(last.2.abs() < 1e-15 && E * last.1 <= kreisel::dynamics::TABLE_ACCUMULATION * 1.0);
+    let (followed, last_approach) = assert_accumulates_at(&run, zeno, E);
+    assert!(followed > 100, "{followed} bounces followed");
+    assert!(E * last_approach <= kreisel::dynamics::TABLE_ACCUMULATION * 1.0);
 }

@@ -2,6 +2,7 @@
 //! and meshes of primitive solids ([`shapes`]).
 #![allow(dead_code)]
 
+pub mod bounces;
 pub mod bouncing_ball;
 pub mod coin;
 pub mod contact;

@@ -131,7 +131,7 @@ impl ContactFrame {
             .contacts()
             .iter()
             .map(|c| {
-                let (rho, rho_dot) = c.shape.offset_and_rate(q, omega);
+                let (rho, rho_dot) = super::face::offset_and_rate(&c.shape, q, omega);
                 let v_p = state.velocity_world + omega.cross(rho);
                 let spin = omega.cross(rho_dot);
                 let along = |axis: DVec3| Wrench {

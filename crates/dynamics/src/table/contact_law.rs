@@ -42,6 +42,10 @@ use crate::DynamicsError;
 /// the tangential one (0: the slip after the impact is the one friction
 /// allows; Garwin's superball, Am. J. Phys. 37 (1969) 88, has `e_T > 0`,
 /// the contact point's tangential velocity reversed while it sticks).
+/// A disk rim's law also rules its face striking flat: `e` reverses the
+/// face's normal velocities (its centre's and both tilting rates), `μ`
+/// bounds its friction impulse with the face's own drilling lever `⅔ a`
+/// (the patch radius `r_c` is the rim's).
 ///
 /// ```
 /// use kreisel_dynamics::ContactLaw;

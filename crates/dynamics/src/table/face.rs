@@ -24,10 +24,15 @@
 //! the centre of pressure inside the face, else
 //! [`DynamicsError::DiskFlat`].
 //!
-//! The face lands plastically (a face does not bounce here: a disk
-//! rocking through flat strikes with its far rim point, which the rim
-//! contact models with its restitution); applied inputs are not followed
-//! on the face ([`DynamicsError::DiskFlat`]).
+//! The landing is plastic. Before it, a face closing from flight with
+//! the rim's restitution `e > 0` bounces (`impact::face_impact`: Newton's
+//! law at every point of the face, `(v_z, ω_x, ω_y)⁺ = −e (v_z, ω_x,
+//! ω_y)⁻` with the impulse wrench's centre of pressure inside the face,
+//! Coulomb–Contensou friction at the impact with the lever `ε` below);
+//! its bounces accumulate and the face lands here. A disk rocking through
+//! flat strikes with its far rim point instead, which the rim contact
+//! models with its restitution. Applied inputs are not followed on the
+//! face ([`DynamicsError::DiskFlat`]).
 
 use glam::{DMat3, DQuat, DVec3};
 
@@ -112,7 +117,8 @@ impl FaceSlide {
         // The turn taking the axis onto the vertical, about the rim's
         // lowest point P.
         let turn = DQuat::from_rotation_arc(n, down);
-        let p = state.com_world + disk.contact_from_com_world(q);
+        let p =
+            state.com_world + offset_and_rate(&body.contacts()[contact].shape, q, DVec3::ZERO).0;
         let q_flat = (turn * q).normalize();
         let mut com = p + turn * (state.com_world - p);
         // The face's plane on the table exactly.
@@ -127,7 +133,13 @@ impl FaceSlide {
         };
         let before = body.energy(state);
         let after = body.energy(&landed);
-        if after > before + 1e-12 * before.abs().max(body.kinetic_energy(state)) {
+        // Rounding: of the energy, and of the face's height set onto the
+        // table (a located touchdown leaves it ulps of ℓ below: m g ℓ).
+        let scale = before
+            .abs()
+            .max(body.kinetic_energy(state))
+            .max(body.mass() * body.gravity() * body.length_scale());
+        if after > before + 1e-12 * scale {
             return Err(DynamicsError::ImpactGainsEnergy {
                 time: t,
                 before,
@@ -137,7 +149,7 @@ impl FaceSlide {
         let (m, g) = (body.mass(), body.gravity());
         let mu = body.contacts()[contact].law.mu();
         let radius = disk.radius();
-        let lever = 2.0 * radius / 3.0;
+        let lever = face_lever(radius);
         // The face holds the disk flat when the horizontal torque it must
         // supply keeps the centre of pressure inside it.
         let height = com.z;
@@ -317,4 +329,35 @@ impl FaceSlide {
 fn inertia_world(body: &TableBody, q: DQuat) -> DMat3 {
     let a = DMat3::from_quat(q);
     a * body.inertia_body() * a.transpose()
+}
+
+/// The face's friction lever `ε = ⅔ a` for a face of radius `a`, m: the
+/// pure-spin torque `∫ μ p r dA = ⅔ μ N a` of a uniform pressure per
+/// newton of friction (the same for the impulses of a face striking flat:
+/// its pressure is uniform when only `v_z` reverses).
+pub(crate) fn face_lever(radius: f64) -> f64 {
+    2.0 * radius / 3.0
+}
+
+/// `ρ` and `ρ̇` of `shape` (its lowest point from the centre of mass and
+/// that point's rate) at the unit attitude `q` and angular velocity
+/// `omega_world`; for a disk rim lying exactly flat (no single lowest
+/// point, the shape's own `ρ` NaN) the rim's centre, at the height of the
+/// whole rim, moving with the body (`ρ̇ = ω × A c`).
+pub(crate) fn offset_and_rate(
+    shape: &ContactShape,
+    q: DQuat,
+    omega_world: DVec3,
+) -> (DVec3, DVec3) {
+    let (rho, rate) = shape.offset_and_rate(q, omega_world);
+    if rho.is_finite() {
+        return (rho, rate);
+    }
+    match shape {
+        ContactShape::Disk(d) => {
+            let centre = q * d.center_body();
+            (centre, omega_world.cross(centre))
+        }
+        _ => (rho, rate),
+    }
 }

@@ -102,19 +102,7 @@ pub(crate) fn impact(
             total = total.plus(frame.rows[i].directions[k].scaled(*pk));
         }
     }
-    let after = GroundTopState {
-        velocity_world: state.velocity_world + total.force * frame.inverse_mass,
-        l_world: state.l_world + total.torque,
-        ..*state
-    };
-    let (before_t, after_t) = (body.kinetic_energy(state), body.kinetic_energy(&after));
-    if after_t > before_t * (1.0 + 1e-12) {
-        return Err(DynamicsError::ImpactGainsEnergy {
-            time,
-            before: before_t,
-            after: after_t,
-        });
-    }
+    let after = struck(body, state, &frame, total, time)?;
     let speeds = participants
         .iter()
         .map(|&i| {
@@ -132,6 +120,35 @@ pub(crate) fn impact(
         speeds,
         accumulations,
     })
+}
+
+/// `state` after the impulse wrench `total` (velocities only), checked
+/// against the kinetic energy before.
+///
+/// # Errors
+/// [`DynamicsError::ImpactGainsEnergy`] (at `time`) when the kinetic
+/// energy rises beyond rounding.
+fn struck(
+    body: &TableBody,
+    state: &GroundTopState,
+    frame: &ContactFrame,
+    total: Wrench,
+    time: f64,
+) -> Result<GroundTopState, DynamicsError> {
+    let after = GroundTopState {
+        velocity_world: state.velocity_world + total.force * frame.inverse_mass,
+        l_world: state.l_world + total.torque,
+        ..*state
+    };
+    let (before, kinetic) = (body.kinetic_energy(state), body.kinetic_energy(&after));
+    if kinetic > before * (1.0 + 1e-12) {
+        return Err(DynamicsError::ImpactGainsEnergy {
+            time,
+            before,
+            after: kinetic,
+        });
+    }
+    Ok(after)
 }
 
 /// `e` with its time set, where it has one.
@@ -214,7 +231,14 @@ pub(crate) fn rim_flip_impact(
         return impact(body, state, &[i], resolution_speed, time);
     };
     let q = state.world_from_body.normalize();
-    let rho_b = disk.contact_from_com_world(q);
+    let mut rho_b = disk.contact_from_com_world(q);
+    if !rho_b.is_finite() {
+        // Lying exactly flat (no lowest rim point): the rim point that
+        // approaches fastest, `γ_N + (ω × r)_z` least.
+        let omega = ContactFrame::of(body, state, time).omega;
+        let toward = glam::DVec3::new(omega.y, -omega.x, 0.0).normalize_or(glam::DVec3::X);
+        rho_b = q * disk.center_body() + disk.radius() * toward;
+    }
     let rho_a = 2.0 * (q * disk.center_body()) - rho_b;
     // A point contact at A: a small sphere whose lowest point is A while
     // the disk lies flat (its centre above A along the upward axis).
@@ -242,4 +266,351 @@ pub(crate) fn rim_flip_impact(
         a.0 = i;
     }
     Ok(outcome)
+}
+
+/// The impact of disk `i`'s face closing flat on the table (the disk's
+/// axis within [`super::DISK_FLAT_TILT`] of the vertical): the face as a
+/// distributed unilateral contact with Newton's law at each of its
+/// points and Coulomb–Contensou friction, solved for the impulse wrench
+/// at the face's centre `C` (`ρ_c = A c`):
+///
+/// ```text
+/// face point r (horizontal, |r| ≤ a, from C):  γ_N(r) = γ_N + (ω × r)_z = γ_N + ω_x r_y − ω_y r_x
+/// normal wrench:  w_N = (ẑ, ρ_c × ẑ),  w_α = (0, x̂),  w_β = (0, ŷ)        γ = (γ_N, ω_x, ω_y)
+/// friction:       w_x, w_y at C,  w_d = (0, ε ẑ),  ε = ⅔ a (the face's lever, `face`)
+/// impulses:       (P_N, M) ∈ K = {|M| ≤ a P_N}   (pressure ≥ 0 over the face: its centre within it)
+/// Newton:         ξ = γ⁺ + e γ⁻ ∈ K* = {ξ_N ≥ a |ξ_M|}  (ξ(r) ≥ 0 everywhere),  ⟨ξ, P⟩ = 0
+/// friction:       ξ_T = γ_T⁺ + e_T γ_T⁻,  |P_T| ≤ μ P_N,  P_T = −μ P_N ξ_T/|ξ_T| when ξ_T ≠ 0
+/// ```
+///
+/// The face strikes face first (every point approaching, `γ_N + a|ω_h| <
+/// 0`): then `ξ ≡ 0` over the face — the centre's normal speed and both
+/// tilting rates reverse, `(γ_N, ω_x, ω_y)⁺ = −e (γ_N, ω_x, ω_y)⁻` — is
+/// the solution whenever its wrench lies in `K` (the normal problem is
+/// the complementarity of the cone `K` and its dual with a positive
+/// definite Delassus matrix: that solution is the only one). A disk
+/// dropped exactly flat has `ω_h = 0`, `M = 0`: `v_z⁺ = −e v_z⁻`, the
+/// pressure uniform. `None` when the wrench leaves `K` (the pressure
+/// gathers on the rim: the rim strikes, [`rim_flip_impact`]). A rebound
+/// `e |γ_N⁻|` at or below `resolution_speed` is summed (`e = 0`, the
+/// accumulation reported) as in [`impact`].
+///
+/// # Errors
+/// [`DynamicsError::ImpactGainsEnergy`] when the impulses would raise the
+/// kinetic energy beyond rounding; [`DynamicsError::ContactUnsolved`]
+/// when the slipping impulse is not found.
+pub(crate) fn face_impact(
+    body: &TableBody,
+    state: &GroundTopState,
+    i: usize,
+    resolution_speed: f64,
+    time: f64,
+) -> Result<Option<ImpactOutcome>, DynamicsError> {
+    let contact = body.contacts()[i];
+    let crate::ContactShape::Disk(disk) = contact.shape else {
+        return Ok(None);
+    };
+    let frame = ContactFrame::of(body, state, time);
+    let q = state.world_from_body.normalize();
+    let rho = q * disk.center_body();
+    let at_centre = |axis: glam::DVec3| Wrench {
+        force: axis,
+        torque: rho.cross(axis),
+    };
+    let couple = |axis: glam::DVec3| Wrench {
+        force: glam::DVec3::ZERO,
+        torque: axis,
+    };
+    let (x, y, z) = (glam::DVec3::X, glam::DVec3::Y, glam::DVec3::Z);
+    let lever = super::face::face_lever(disk.radius());
+    let w = [
+        at_centre(z),
+        couple(x),
+        couple(y),
+        at_centre(x),
+        at_centre(y),
+        couple(z * lever),
+    ];
+    let omega = frame.omega;
+    let gamma: Vec<f64> = w
+        .iter()
+        .map(|wk| wk.dot_motion(state.velocity_world, omega))
+        .collect();
+    let approach = -gamma[0];
+    let tilting = omega.truncate().length();
+    if approach <= 0.0 || approach <= disk.radius() * tilting {
+        return Ok(None);
+    }
+    let law = contact.law;
+    let (mut e, mut e_t) = (law.restitution(), law.tangential_restitution());
+    let mut accumulations = Vec::new();
+    if e > 0.0 && e * approach <= resolution_speed {
+        // The face centre's own acceleration in flight, into the table.
+        let free = (frame.free_velocity_rate, frame.free_omega_rate);
+        let a = -(w[0].dot_motion(free.0, free.1) + omega.cross(omega.cross(rho)).z);
+        if a > 0.0 && e < 1.0 {
+            accumulations.push((i, 2.0 * e * approach / (a * (1.0 - e))));
+        }
+        (e, e_t) = (0.0, 0.0);
+    }
+    let mut g = [[0.0; 6]; 6];
+    for (a, row) in g.iter_mut().enumerate() {
+        for (b, v) in row.iter_mut().enumerate() {
+            *v = frame.delassus(&w[a], &w[b]);
+        }
+    }
+    let mut y_free = [0.0; 6];
+    for (k, yk) in y_free.iter_mut().enumerate() {
+        *yk = (1.0 + if k < 3 { e } else { e_t }) * gamma[k];
+    }
+    let p = face_impulses(&g, &y_free, law.mu()).map_err(|e| at_time(e, time))?;
+    let Some(p) = p else {
+        return Ok(None);
+    };
+    let couple_size = (p[1] * p[1] + p[2] * p[2]).sqrt();
+    if p[0] <= 0.0 || couple_size > disk.radius() * p[0] * (1.0 + 1e-12) {
+        return Ok(None);
+    }
+    let total = w
+        .iter()
+        .zip(p)
+        .fold(Wrench::default(), |t, (wk, pk)| t.plus(wk.scaled(pk)));
+    let after = struck(body, state, &frame, total, time)?;
+    let omega_after = ContactFrame::of(body, &after, time).omega;
+    let rebound = w[0].dot_motion(after.velocity_world, omega_after);
+    Ok(Some(ImpactOutcome {
+        state: after,
+        speeds: vec![(i, approach, rebound, true)],
+        accumulations,
+    }))
+}
+
+/// The face's impulses `P = (P_N, M_x, M_y, P_x, P_y, P_d)` with
+/// `ξ = y_free + G P` zero in its normal part (`ξ_N = ξ_α = ξ_β = 0`) and
+/// Coulomb's law on its friction part: sticking (`ξ_T = 0`) when that
+/// impulse lies in the cone `|P_T| ≤ μ P_N`, else slipping along the slip
+/// after, `P_T = −μ P_N ξ_T/|ξ_T|` (by bisection on `μ P_N/|ξ_T|`).
+/// `None` when the normal part is singular.
+///
+/// # Errors
+/// [`DynamicsError::ContactUnsolved`] (its time NaN) when no slip
+/// satisfies the cone (the bracket is not found).
+fn face_impulses(
+    g: &[[f64; 6]; 6],
+    y_free: &[f64; 6],
+    mu: f64,
+) -> Result<Option<[f64; 6]>, DynamicsError> {
+    let solve = |n: usize| {
+        let mut a = [0.0; 36];
+        let mut rhs = [0.0; 6];
+        for r in 0..n {
+            for k in 0..n {
+                a[r * n + k] = g[r][k];
+            }
+            rhs[r] = -y_free[r];
+        }
+        super::dense::solve_in_place(&mut a, &mut rhs, n).then_some(rhs)
+    };
+    if mu == 0.0 {
+        return Ok(solve(3));
+    }
+    // Sticking: ξ = 0 in all six.
+    let Some(stick) = solve(6) else {
+        return Ok(None);
+    };
+    let friction = glam::DVec3::new(stick[3], stick[4], stick[5]);
+    if stick[0] > 0.0 && friction.length() <= mu * stick[0] * (1.0 + 1e-12) {
+        return Ok(Some(stick));
+    }
+    // Slipping: P_T = −λ ξ_T with λ = μ P_N/|ξ_T| > 0. For a given λ the
+    // impulses and the slip after are linear; λ is the root of
+    // h(λ) = λ |ξ_T| − μ P_N (h(0) = −μ P_N < 0; h → |P_T| of sticking
+    // > μ P_N as λ → ∞), bracketed and bisected to rounding.
+    let at = |lambda: f64| {
+        let mut a = [0.0; 36];
+        let mut rhs = [0.0; 6];
+        for r in 0..6 {
+            for k in 0..6 {
+                a[r * 6 + k] = if k < 3 {
+                    g[r][k]
+                } else {
+                    -lambda * g[r][k] - if k == r { 1.0 } else { 0.0 }
+                };
+            }
+            rhs[r] = -y_free[r];
+        }
+        super::dense::solve_in_place(&mut a, &mut rhs, 6).then_some(rhs)
+    };
+    let h = |z: &[f64; 6], lambda: f64| {
+        lambda * glam::DVec3::new(z[3], z[4], z[5]).length() - mu * z[0]
+    };
+    let (mut lo, mut hi) = (0.0, 1.0 / g[3][3]);
+    let mut bracketed = false;
+    for _ in 0..200 {
+        let Some(z) = at(hi) else {
+            return Ok(None);
+        };
+        if h(&z, hi) > 0.0 {
+            bracketed = true;
+            break;
+        }
+        (lo, hi) = (hi, 2.0 * hi);
+    }
+    if !bracketed {
+        return Err(DynamicsError::ContactUnsolved { time: f64::NAN });
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        let Some(z) = at(mid) else {
+            return Ok(None);
+        };
+        if h(&z, mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let lambda = 0.5 * (lo + hi);
+    let Some(z) = at(lambda) else {
+        return Ok(None);
+    };
+    // The friction on the cone exactly: P_T = −μ P_N ξ_T/|ξ_T|.
+    let d = glam::DVec3::new(z[3], z[4], z[5]).normalize_or_zero();
+    let mut p = [0.0; 6];
+    p[..3].copy_from_slice(&z[..3]);
+    for c in 0..3 {
+        p[3 + c] = -mu * z[0] * d[c];
+    }
+    Ok(Some(p))
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::{DMat3, DQuat, DVec3};
+
+    use super::*;
+    use crate::table::{ContactLaw, TableContact};
+    use crate::{ContactShape, DiskContact};
+
+    const M: f64 = 0.01;
+    const A: f64 = 0.02;
+
+    /// A disk of radius `A` lying flat, its face in the centre of mass's
+    /// plane, horizontal inertia `i_h`, law `law`.
+    fn flat_disk(i_h: f64, law: ContactLaw) -> TableBody {
+        let rim = DiskContact::try_new(A, DVec3::ZERO, DVec3::Z).unwrap();
+        let inertia = DMat3::from_diagonal(DVec3::new(i_h, i_h, 0.5 * M * A * A));
+        let contacts = vec![TableContact {
+            shape: ContactShape::Disk(rim),
+            law,
+        }];
+        TableBody::try_new(M, inertia, contacts, 9.81).unwrap()
+    }
+
+    /// Flat on the table, striking at `v_z` with tilting rates `omega`.
+    fn striking(body: &TableBody, v: DVec3, omega: DVec3) -> GroundTopState {
+        let i = body.inertia_body();
+        GroundTopState {
+            com_world: DVec3::ZERO,
+            velocity_world: v,
+            world_from_body: DQuat::IDENTITY,
+            l_world: i * omega,
+        }
+    }
+
+    #[test]
+    fn the_centre_speed_and_both_tilting_rates_reverse_by_e() {
+        let law = ContactLaw::new(0.0).try_with_restitution(0.5).unwrap();
+        let body = flat_disk(0.25 * M * A * A, law);
+        let omega = DVec3::new(5.0, -3.0, 7.0);
+        let state = striking(&body, DVec3::new(0.2, 0.0, -1.0), omega);
+        let out = face_impact(&body, &state, 0, 1e-9, 0.0).unwrap().unwrap();
+        let after = out.state;
+        let omega_after = body.omega_world(&after);
+        // v_z⁺ = −e v_z⁻, ω_h⁺ = −e ω_h⁻; sliding and spin untouched.
+        assert!((after.velocity_world - DVec3::new(0.2, 0.0, 0.5)).length() < 1e-15);
+        assert!((omega_after - DVec3::new(-2.5, 1.5, 7.0)).length() < 1e-13);
+        assert_eq!(out.speeds, vec![(0, 1.0, 0.5, true)]);
+    }
+
+    #[test]
+    fn an_elastic_frictionless_face_keeps_the_energy_and_friction_loses_it() {
+        let elastic = ContactLaw::new(0.0).try_with_restitution(1.0).unwrap();
+        let body = flat_disk(0.25 * M * A * A, elastic);
+        let state = striking(
+            &body,
+            DVec3::new(0.3, 0.1, -1.0),
+            DVec3::new(2.0, 1.0, 30.0),
+        );
+        let after = face_impact(&body, &state, 0, 1e-9, 0.0)
+            .unwrap()
+            .unwrap()
+            .state;
+        let (t0, t1) = (body.kinetic_energy(&state), body.kinetic_energy(&after));
+        assert!((t1 - t0).abs() < 1e-15 * t0, "{t0} → {t1}");
+        let rough = flat_disk(
+            0.25 * M * A * A,
+            ContactLaw::new(0.2).try_with_restitution(1.0).unwrap(),
+        );
+        let after = face_impact(&rough, &state, 0, 1e-9, 0.0)
+            .unwrap()
+            .unwrap()
+            .state;
+        assert!(rough.kinetic_energy(&after) < t0);
+    }
+
+    #[test]
+    fn an_impulse_that_would_raise_the_kinetic_energy_is_a_typed_error() {
+        let law = ContactLaw::new(0.3).try_with_restitution(0.5).unwrap();
+        let body = flat_disk(0.25 * M * A * A, law);
+        let state = striking(&body, DVec3::new(0.0, 0.0, -1.0), DVec3::ZERO);
+        let frame = ContactFrame::of(&body, &state, 0.0);
+        // Pushed down harder: |v_z| rises from 1 to 1.5 m/s.
+        let down = Wrench {
+            force: DVec3::new(0.0, 0.0, -0.5 * M),
+            torque: DVec3::ZERO,
+        };
+        match struck(&body, &state, &frame, down, 0.25) {
+            Err(DynamicsError::ImpactGainsEnergy {
+                time,
+                before,
+                after,
+            }) => {
+                assert_eq!(time, 0.25);
+                assert!((before - 0.5 * M).abs() < 1e-18 && (after - 0.5 * M * 2.25).abs() < 1e-17);
+            }
+            other => panic!("{other:?}"),
+        }
+        // The face's own impulse (e = 0.5) loses energy.
+        assert!(struck(&body, &state, &frame, down.scaled(-3.0), 0.25).is_ok());
+    }
+
+    #[test]
+    fn a_face_whose_pressure_would_leave_it_or_that_does_not_strike_face_first_is_no_face_impact() {
+        let law = ContactLaw::new(0.0).try_with_restitution(0.5).unwrap();
+        // A long body (I_h = 10 m a²): reversing a|ω_h| = |v_z|/2 needs
+        // a couple 5 a P_N, its centre of pressure 5 a from the face's
+        // centre.
+        let long = flat_disk(10.0 * M * A * A, law);
+        let state = striking(
+            &long,
+            DVec3::new(0.0, 0.0, -1.0),
+            DVec3::new(0.5 / A, 0.0, 0.0),
+        );
+        assert!(face_impact(&long, &state, 0, 1e-9, 0.0).unwrap().is_none());
+        // A thin disk rocking faster than it falls: a rim point rises.
+        let thin = flat_disk(0.25 * M * A * A, law);
+        let state = striking(
+            &thin,
+            DVec3::new(0.0, 0.0, -1.0),
+            DVec3::new(0.0, 2.0 / A, 0.0),
+        );
+        assert!(face_impact(&thin, &state, 0, 1e-9, 0.0).unwrap().is_none());
+        // Rising: no impact.
+        let state = striking(&thin, DVec3::new(0.0, 0.0, 1.0), DVec3::ZERO);
+        assert!(face_impact(&thin, &state, 0, 1e-9, 0.0).unwrap().is_none());
+    }
 }

@@ -45,12 +45,16 @@
 //! face arrives slowly (normal speeds below [`FACE_LANDING`] of the speed
 //! scale), lands on its face (a plastic landing, [`TableEventKind::LandsFlat`])
 //! and slides and spins there under the face's Coulomb–Contensou friction
-//! until it rests (`face`). [`AirLayer`] is Moffatt's viscous air layer
-//! under a rim, the dissipation of Euler's disk.
+//! until it rests (`face`). A face closing flat from flight with the rim's
+//! restitution `e > 0` bounces: Newton's law over the face (its centre's
+//! normal speed and both tilting rates reverse by `e`) with friction at
+//! the impact; the bounces accumulate and the disk lands flat.
+//! [`AirLayer`] is Moffatt's viscous air layer under a rim, the
+//! dissipation of Euler's disk.
 //!
 //! # What it does not do (yet)
 //! The rolling resistance acts between impacts, not in them (its impulse
-//! would be at most `δ P_N`). A face does not bounce, and inputs
+//! would be at most `δ P_N`). Inputs
 //! are not followed on a face ([`crate::DynamicsError::DiskFlat`]). Free
 //! flight is exact (parabola and the torque-free
 //! [`crate::ExactSolution`]); applied inputs ([`TableBody::try_with_inputs`])

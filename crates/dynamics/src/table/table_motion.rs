@@ -39,7 +39,7 @@ use super::contact_problem::{
     Block, ContactMode, Mode, ModeForces, mode_forces, roll_direction, slip_direction,
 };
 use super::face::FaceSlide;
-use super::impact::{at_time, impact, rim_flip_impact, stop_slip};
+use super::impact::{at_time, face_impact, impact, rim_flip_impact, stop_slip};
 use super::rolling_resistance::{Rolling, solve_with_rolling};
 use super::{TableBody, TableEvent, TableEventKind};
 use crate::contact::{DOPRI_A, DOPRI_B_HAT, DOPRI_C, Flight, MAX_GROWTH, MIN_SHRINK, SAFETY};
@@ -88,7 +88,8 @@ pub const SLIP_BAND: f64 = 1e4;
 /// normal velocities `|v_z| + a |ω × n|` below it. Faster, the rim rocks
 /// on through flat (its far point strikes, `impact::rim_flip_impact`).
 /// The last rocking the landing stops holds below 10⁻⁴ of the body's
-/// energy scale `m g ℓ`.
+/// energy scale `m g ℓ`. A face closing from flight with restitution
+/// `e > 0` strikes at any speed (Newton's law over the face).
 pub const FACE_LANDING: f64 = 1e-2;
 
 /// The smallest step, relative to `max(|t|, τ)` (`τ = √(ℓ/g)`).
@@ -541,7 +542,8 @@ impl TableMotion {
                     });
                     self.resting = true;
                     self.events.push(TableEvent {
-                        time: t,
+                        // No earlier than the face's bounces accumulate.
+                        time: t.max(self.accumulation),
                         contact: None,
                         kind: TableEventKind::Rest,
                     });
@@ -807,11 +809,16 @@ impl TableMotion {
     /// Lands a disk on its face when a closed (or touching) rim's axis is
     /// within [`DISK_FLAT_TILT`] of the vertical: the rim's lowest point is
     /// then ill-defined and the face carries the disk (`face`): `true`
-    /// when it landed.
+    /// when it landed. A face closing from flight (its rim open, at or
+    /// below the table) with restitution `e > 0` strikes face first
+    /// instead ([`TableMotion::strike_face`]): it bounces off, or lands
+    /// once its bounces are summed; rising from its strike it does not
+    /// land.
     ///
     /// # Errors
     /// Those of the landing ([`DynamicsError::DiskFlat`] when the face
-    /// cannot hold the disk flat or inputs act).
+    /// cannot hold the disk flat or inputs act) and of the strike
+    /// ([`DynamicsError::ImpactGainsEnergy`]).
     fn land_flat_disks(&mut self) -> Result<bool, DynamicsError> {
         if self.face.is_some() {
             return Ok(true);
@@ -821,24 +828,50 @@ impl TableMotion {
         let omega = self.current.frame.omega;
         let v_z = self.current.state.velocity_world.z.abs();
         let v_land = FACE_LANDING * self.speed;
-        let flat = self
+        let v_res = self.resolution_speed();
+        // Each flat disk that touches: (contact, its face arrives slowly,
+        // its face may strike — the rim open, restitution e > 0).
+        let flat: Vec<(usize, bool, bool)> = self
             .body
             .contacts()
             .iter()
             .enumerate()
-            .find(|(i, c)| match c.shape {
+            .filter_map(|(i, c)| match c.shape {
                 ContactShape::Disk(d) => {
                     let n = q * d.normal_body();
-                    let touching = self.modes[*i].mode != ContactMode::Open
-                        || self.current.frame.rows[*i].gap <= gap_tol;
+                    let row = &self.current.frame.rows[i];
+                    let open = self.modes[i].mode == ContactMode::Open;
+                    let touching = !open || row.gap <= gap_tol;
                     // The face arrives slowly: its normal velocities below
                     // FACE_LANDING of the speed scale.
                     let slow = v_z + d.radius() * omega.cross(n).length() <= v_land;
-                    touching && slow && DVec3::Z.cross(n).length() < DISK_FLAT_TILT
+                    // With restitution, an open face strikes, and one
+                    // rebounding from its strike flies off.
+                    let bouncing = open && c.law.restitution() > 0.0;
+                    let strikes = bouncing && row.gap <= 0.0;
+                    let rising = bouncing && row.velocity[0] > v_res;
+                    (touching && DVec3::Z.cross(n).length() < DISK_FLAT_TILT).then_some((
+                        i,
+                        slow && !rising,
+                        strikes,
+                    ))
                 }
-                _ => false,
-            });
-        let Some((i, _)) = flat else {
+                _ => None,
+            })
+            .collect();
+        let mut landing = None;
+        for &(i, slow, strikes) in &flat {
+            if strikes && let Some(rests) = self.strike_face(i)? {
+                // Struck: it lands when the bounces stopped, else flies.
+                landing = rests.then_some(i);
+                break;
+            }
+            if slow {
+                landing = Some(i);
+                break;
+            }
+        }
+        let Some(i) = landing else {
             return Ok(false);
         };
         let face = FaceSlide::land(
@@ -865,6 +898,55 @@ impl TableMotion {
             kind: TableEventKind::LandsFlat,
         });
         Ok(true)
+    }
+
+    /// The face of flat disk `i`, its rim open, striking the table face
+    /// first ([`face_impact`]: Newton's restitution over the face, with
+    /// friction): the impact recorded and applied, `Some(true)` when the
+    /// face then rests on the table (its rebound summed or plastic),
+    /// `Some(false)` when it flies off; `None` when the face does not
+    /// strike face first or its pressure would leave it (the rim strikes).
+    ///
+    /// # Errors
+    /// Those of [`face_impact`].
+    fn strike_face(&mut self, i: usize) -> Result<Option<bool>, DynamicsError> {
+        let Some(outcome) = face_impact(
+            &self.body,
+            &self.current.state,
+            i,
+            TABLE_ACCUMULATION * self.speed,
+            self.time,
+        )?
+        else {
+            return Ok(None);
+        };
+        let mut rebound = 0.0;
+        for &(c, approach_speed, rebound_speed, _) in &outcome.speeds {
+            rebound = rebound_speed;
+            self.events.push(TableEvent {
+                time: self.time,
+                contact: Some(c),
+                kind: TableEventKind::Impact {
+                    approach_speed,
+                    rebound_speed,
+                },
+            });
+        }
+        for &(c, tau) in &outcome.accumulations {
+            self.accumulation = self.accumulation.max(self.time + tau);
+            self.events.push(TableEvent {
+                time: self.time,
+                contact: Some(c),
+                kind: TableEventKind::ImpactsAccumulate {
+                    accumulation_time: self.time + tau,
+                },
+            });
+        }
+        self.flight = None;
+        self.current = self
+            .snapshot(outcome.state, self.time)
+            .map_err(|e| at_time(e, self.time))?;
+        Ok(Some(rebound <= self.resolution_speed()))
     }
 
     /// At an event (or the start): impacts where a contact approaches,
