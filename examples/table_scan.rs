@@ -157,14 +157,16 @@ fn main() {
         };
         let scale = body.mass() * G * LENGTH + body.energy(&start).abs();
         let clock = Instant::now();
-        let outcome = match TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10)) {
+        let outcome = match TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10))
+        {
             Err(e) => format!("start: {}", kind(&e)),
             Ok(mut run) => {
                 let mut energy = run.body().energy(run.state());
                 let mut rose = false;
                 let mut end = "through 2 s".to_owned();
                 for frame in 1..=200 {
-                    if let Err(e) = run.try_advance_to(f64::from(frame) * 0.01) {
+                    let t_frame = f64::from(frame) * 0.01;
+                    if let Err(e) = run.try_advance_to(t_frame) {
                         end = kind(&e);
                         break;
                     }
@@ -213,5 +215,9 @@ fn main() {
 
 /// The error's variant name.
 fn kind(e: &DynamicsError) -> String {
-    format!("{e:?}").split([' ', '{', '(']).next().unwrap_or("?").to_owned()
+    format!("{e:?}")
+        .split([' ', '{', '('])
+        .next()
+        .unwrap_or("?")
+        .to_owned()
 }

@@ -98,3 +98,80 @@ fn a_spun_coin_wobbles_through_stick_and_slip_without_stalling() {
     let stats = run.stats();
     assert!(stats.accepted + stats.rejected < 500_000, "{stats:?}");
 }
+
+/// An ellipsoid thrown spinning onto the table (μ = 0.355, e = 0.557,
+/// its centre off the centre of mass; case 5 of `examples/table_scan.rs`,
+/// seed 26) bounces, sticks, slips again at 1.912 s, and at 1.983 s its
+/// slip decays into the band within which its direction is held. The step
+/// that crossed into the band switched to the direction of the mode's last
+/// decision, 70 ms stale: the right-hand side jumped at the band's edge,
+/// the error control shrank the steps towards it without reaching it — 1.4
+/// million steps between 1.98 s and 1.99 s, 20 s of wall time. Now the held
+/// direction is the slip's at the band's edge, and the 2 s take a few
+/// thousand steps.
+#[test]
+fn a_slip_decaying_into_the_band_enters_it() {
+    let ellipsoid = EllipsoidContact::try_new(
+        DVec3::new(
+            0.020947418183570682,
+            0.02045878977087027,
+            0.016412428572012677,
+        ),
+        DVec3::new(
+            0.004942919151675613,
+            0.004638872944597664,
+            0.008047553107124917,
+        ),
+    )
+    .unwrap();
+    let law = ContactLaw::try_new(0.35512342814528103)
+        .and_then(|l| l.try_with_restitution(0.5572645449691389))
+        .unwrap();
+    let inertia = DMat3::from_diagonal(DVec3::new(
+        0.0003837855156109424,
+        0.0002928943701170023,
+        0.0005505087456193576,
+    ));
+    let contacts = vec![TableContact {
+        shape: ContactShape::Ellipsoid(ellipsoid),
+        law,
+    }];
+    let body = TableBody::try_new(0.8012711454678257, inertia, contacts, 9.81).unwrap();
+    let start = GroundTopState {
+        com_world: DVec3::new(0.0, 0.0, 0.05309241435548037),
+        velocity_world: DVec3::new(
+            -0.33134288109647764,
+            -0.8592693489398455,
+            -0.5681973676342071,
+        ),
+        world_from_body: DQuat::from_xyzw(
+            -0.28210432322712287,
+            0.134215815435441,
+            -0.7475216040608289,
+            0.5861865890361977,
+        ),
+        l_world: DVec3::new(
+            0.011619679705964546,
+            -0.0011762362517209065,
+            -0.029648424791151755,
+        ),
+    };
+    let mut run = TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10)).unwrap();
+    let e0 = run.body().energy(run.state());
+    for frame in 1..=200 {
+        run.try_advance_to(f64::from(frame) * 0.01).unwrap();
+        assert!(
+            run.stats().accepted < 50_000,
+            "{} steps by {} s",
+            run.stats().accepted,
+            run.time()
+        );
+    }
+    assert!(run.body().energy(run.state()) <= e0);
+    let slips = run
+        .events()
+        .iter()
+        .filter(|e| e.kind == TableEventKind::Slip)
+        .count();
+    assert!(slips >= 2, "{:?}", run.events());
+}

@@ -646,6 +646,7 @@ impl TableMotion {
             in_place = 0;
             self.time = if last { t_end } else { self.time + h };
             self.current = trial.end;
+            self.hold_directions();
             if self.land_flat_disks()? && stop_at_event {
                 return Ok(true);
             }
@@ -707,6 +708,25 @@ impl TableMotion {
             value = value.min(v).min(side);
         }
         value
+    }
+
+    /// Keeps each slipping contact's direction (and each rolling one's)
+    /// at its slip's while the slip lies beyond the band: the direction it
+    /// holds once the slip enters the band is the one it had there, also
+    /// in the stages of the step that crosses into it (a direction kept
+    /// from the mode's last decision made that step's right-hand side
+    /// jump at the band's edge: the error control then shrank the steps
+    /// towards the edge without ever reaching it — 10⁵ steps per ms).
+    fn hold_directions(&mut self) {
+        let band = self.band();
+        for (mode, row) in self.modes.iter_mut().zip(&self.current.frame.rows) {
+            if mode.mode == ContactMode::Slipping && row.slip().length() > band {
+                mode.direction = row.slip().normalize();
+            }
+            if mode.roll == ContactMode::Slipping && row.roll().length() > band {
+                mode.roll_direction = row.roll().normalize();
+            }
+        }
     }
 
     /// Whether a slipping contact's slip lies within the resolution speed:
