@@ -60,6 +60,7 @@ mod contact_problem;
 mod dense;
 mod face;
 mod impact;
+mod slip_onset;
 mod table_body;
 mod table_event;
 mod table_motion;
