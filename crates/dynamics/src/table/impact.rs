@@ -145,30 +145,35 @@ pub(crate) fn at_time(e: DynamicsError, time: f64) -> DynamicsError {
     }
 }
 
-/// The impulse `P_T = −G_TT⁻¹ γ_T` that stops the residual slip of a
-/// contact that starts to stick (dissipative: `ΔT = −½ γ_Tᵀ G_TT⁻¹ γ_T`).
+/// The impulse `P = −G⁻¹ (ġ, γ_T)` on the contact's normal and friction
+/// directions that stops the residual slip of a contact that starts to
+/// stick, and its normal drift with it (dissipative: `ΔT = −½ yᵀ G⁻¹ y`,
+/// `y = (ġ, γ_T)`). Stopping the slip alone (`P_T = −G_TT⁻¹ γ_T`) moved
+/// the normal velocity by `G_NT P_T`: the thrown ellipsoid at μ = 1000
+/// stuck with `ġ = +1.3·10⁻¹⁰` m/s, and the closed contact's normal force
+/// then did work `N ġ` (+2.6·10⁻¹¹ J in 0.05 s of rolling).
 pub(crate) fn stop_slip(body: &TableBody, state: &GroundTopState, i: usize) -> GroundTopState {
     // Impulses only: the velocities, not the (time-dependent) loads, matter.
     let frame = ContactFrame::of(body, state, 0.0);
     let row = &frame.rows[i];
-    let n = row.friction_dimensions;
-    if n == 0 {
+    if row.friction_dimensions == 0 {
         return *state;
     }
-    let mut a = [0.0; 9];
-    let mut rhs = [0.0; 3];
+    let n = 1 + row.friction_dimensions;
+    let mut a = [0.0; 16];
+    let mut rhs = [0.0; 4];
     for r in 0..n {
         for k in 0..n {
-            a[r * n + k] = frame.delassus(&row.directions[1 + r], &row.directions[1 + k]);
+            a[r * n + k] = frame.delassus(&row.directions[r], &row.directions[k]);
         }
-        rhs[r] = -row.velocity[1 + r];
+        rhs[r] = -row.velocity[r];
     }
     if !super::dense::solve_in_place(&mut a, &mut rhs, n) {
         return *state;
     }
     let mut total = Wrench::default();
     for (k, pk) in rhs.iter().enumerate().take(n) {
-        total = total.plus(row.directions[1 + k].scaled(*pk));
+        total = total.plus(row.directions[k].scaled(*pk));
     }
     GroundTopState {
         velocity_world: state.velocity_world + total.force * frame.inverse_mass,

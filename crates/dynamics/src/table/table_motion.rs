@@ -722,7 +722,7 @@ impl TableMotion {
         let (mut lo, mut hi) = (0.0, h);
         let mut f_lo = self.event_value(&self.current);
         let mut f_hi = self.event_value(&at_h);
-        let mut end = at_h;
+        let mut end = Some(at_h);
         let resolution = 2.0 * f64::EPSILON * (self.time.abs() + h);
         let (mut side, mut bisect) = (0i8, false);
         while hi - lo > resolution {
@@ -739,12 +739,23 @@ impl TableMotion {
             }
             let width = hi - lo;
             let secant_trial = usable && !bisect;
-            let trial = self.trial(mid).map_err(|e| at_time(e, self.time + mid))?;
+            let trial = match self.trial(mid) {
+                Ok(trial) => trial,
+                Err(DynamicsError::ContactIndeterminate { .. }) => {
+                    // A stage beyond the event may be indeterminate (a slip
+                    // past its band along a direction no normal force
+                    // holds): the event lies before `mid`, bisected.
+                    (hi, f_hi, end) = (mid, 0.0, None);
+                    bisect = true;
+                    continue;
+                }
+                Err(e) => return Err(at_time(e, self.time + mid)),
+            };
             let value = self.event_value(&trial.end);
             if self.event_in(&trial.end, mid) {
                 hi = mid;
                 f_hi = value.min(0.0);
-                end = trial.end;
+                end = Some(trial.end);
                 if side == -1 {
                     f_lo *= 0.5;
                 }
@@ -759,7 +770,15 @@ impl TableMotion {
             }
             bisect = secant_trial && hi - lo > 0.5 * width;
         }
-        Ok((hi, end))
+        match end {
+            Some(end) => Ok((hi, end)),
+            // Indeterminate at the bracket's end: the event at its start.
+            None if lo == 0.0 => Ok((0.0, self.current.clone())),
+            None => {
+                let at_lo = self.trial(lo).map_err(|e| at_time(e, self.time + lo))?;
+                Ok((lo, at_lo.end))
+            }
+        }
     }
 
     /// Lands a disk on its face when a closed (or touching) rim's axis is
@@ -988,7 +1007,28 @@ impl TableMotion {
                 &frame.rows[touching[b]].directions[cb],
             )
         };
-        let x = solve_blocks(&blocks, &y_free, &g).map_err(|e| at_time(e, self.time))?;
+        // A slip within its band whose direction no normal force holds
+        // (Painlevé's case for that direction; the direction within the
+        // band is not resolved, SLIP_BAND): that contact decided afresh.
+        let band = SLIP_BAND * self.speed;
+        let unresolved: Vec<usize> = (0..touching.len())
+            .filter(|&a| {
+                blocks[a].slipping.is_some_and(|d| {
+                    let kappa = (0..blocks[a].size - 1).fold(g(a, 0, a, 0), |k, c| {
+                        k - blocks[a].mu * g(a, 0, a, 1 + c) * d[c]
+                    });
+                    frame.rows[touching[a]].slip().length() <= band && !(kappa > 0.0)
+                })
+            })
+            .collect();
+        let x = match solve_blocks(&blocks, &y_free, &g) {
+            Err(DynamicsError::ContactIndeterminate { .. }) if !unresolved.is_empty() => {
+                unresolved.iter().for_each(|&a| blocks[a].slipping = None);
+                solve_blocks(&blocks, &y_free, &g)
+            }
+            solved => solved,
+        }
+        .map_err(|e| at_time(e, self.time))?;
         let mut modes = vec![Mode::OPEN; self.modes.len()];
         for ((&i, xi), block) in touching.iter().zip(&x).zip(&blocks) {
             if xi[0].is_nan() || xi[0] <= 0.0 {
