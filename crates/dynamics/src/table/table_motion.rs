@@ -492,6 +492,8 @@ impl TableMotion {
             });
         }
         let mut in_place = 0;
+        // When the modes were last decided afresh for a step too small.
+        let mut afresh_at = f64::NAN;
         while self.time < t_end {
             if self.resting {
                 self.time = t_end;
@@ -544,18 +546,8 @@ impl TableMotion {
                     // force would, Painlevé's case for that direction): the
                     // modes are decided afresh, stick where the cone holds.
                     // Still indeterminate in the modes found: the error.
-                    self.afresh = true;
-                    let decided = self.settle();
-                    self.afresh = false;
-                    decided?;
+                    self.decide_afresh(&mut in_place)?;
                     self.h = h.max(min);
-                    in_place += 1;
-                    if in_place > MAX_EVENTS_IN_PLACE {
-                        return Err(DynamicsError::ContactModesChatter {
-                            time: self.time,
-                            count: in_place,
-                        });
-                    }
                     continue;
                 }
                 Err(e) => return Err(at_time(e, self.time)),
@@ -568,6 +560,14 @@ impl TableMotion {
                     MIN_SHRINK
                 };
                 self.h = h * factor;
+                if self.h < min && afresh_at != self.time {
+                    // No step holds the modes (a slip's friction turning
+                    // at its band's edge): decided afresh, once here.
+                    afresh_at = self.time;
+                    self.decide_afresh(&mut in_place)?;
+                    self.h = h;
+                    continue;
+                }
                 if self.h < min {
                     return Err(DynamicsError::StepTooSmall {
                         method: METHOD,
@@ -631,6 +631,28 @@ impl TableMotion {
             }
         }
         Ok(false)
+    }
+
+    /// The modes decided afresh (no contact kept slipping along its slip)
+    /// where no step holds the current ones; `in_place` counts the
+    /// decisions at one instant.
+    ///
+    /// # Errors
+    /// Those of [`TableMotion::settle`]; [`DynamicsError::ContactModesChatter`]
+    /// past [`MAX_EVENTS_IN_PLACE`] decisions in place.
+    fn decide_afresh(&mut self, in_place: &mut usize) -> Result<(), DynamicsError> {
+        self.afresh = true;
+        let decided = self.settle();
+        self.afresh = false;
+        decided?;
+        *in_place += 1;
+        if *in_place > MAX_EVENTS_IN_PLACE {
+            return Err(DynamicsError::ContactModesChatter {
+                time: self.time,
+                count: *in_place,
+            });
+        }
+        Ok(())
     }
 
     /// A continuous measure of how far `end` is from the events the
