@@ -382,9 +382,9 @@ fn a_thrown_ellipsoid_at_mu_1000_has_one_outcome_on_every_grid() {
 /// normal force holds (κ = −193 1/kg, in a trial of the event location),
 /// and at 0.22418634 s, where the slip reversed along the held direction
 /// but not across it (2.3e-9 m/s left, κ = −4755 1/kg); on the 10⁻⁵ s grid
-/// at rtol = 10⁻⁸ with `StepTooSmall` at 0.35393462 s (no step held the
-/// friction turning at the band's edge). Such a slip, whose direction the
-/// band does not resolve, is decided afresh: it sticks.
+/// at rtol = 10⁻⁸ with `StepTooSmall` at 0.35393462 s (its slip, just past
+/// the band, near Painlevé's case: κ → 0⁺, N = 4·10⁶ N; no step held it).
+/// Such slips are decided afresh: the ellipsoid sticks.
 #[test]
 fn the_thrown_ellipsoid_at_mu_1000_runs_through_at_every_tolerance() {
     let body = thrown_ellipsoid(0.0);
@@ -400,7 +400,7 @@ fn the_thrown_ellipsoid_at_mu_1000_runs_through_at_every_tolerance() {
         let error = ellipsoid_event_error(&r);
         eprintln!("events within {error:?} s");
         // Measured: within 2.9e-8 s (rtol = 1e-8 on the 1e-5 s grid, the
-        // stick decided afresh where no step holds the band's edge; 2.7e-10 s
+        // stick decided afresh where no step holds the slip; 2.7e-10 s
         // on the 1e-3 s grid).
         assert!(
             error.is_some_and(|e| e < 1e-7),

@@ -560,9 +560,12 @@ impl TableMotion {
                     MIN_SHRINK
                 };
                 self.h = h * factor;
-                if self.h < min && afresh_at != self.time {
-                    // No step holds the modes (a slip's friction turning
-                    // at its band's edge): decided afresh, once here.
+                let slipping = self.slip_within(f64::INFINITY);
+                if self.h < min && slipping && afresh_at != self.time {
+                    // No step holds a slip (near Painlevé's case for its
+                    // direction, κ → 0⁺, the normal force without bound:
+                    // 4e6 N on the 0.3 kg ellipsoid at μ = 1000): the modes
+                    // decided afresh, once here, stick where the cone holds.
                     afresh_at = self.time;
                     self.decide_afresh(&mut in_place)?;
                     self.h = h;
@@ -617,7 +620,7 @@ impl TableMotion {
             if self.land_flat_disks()? && stop_at_event {
                 return Ok(true);
             }
-            if self.slip_within_resolution() {
+            if self.slip_within(self.resolution_speed()) {
                 // A slip that has fallen into the resolution band (without
                 // reversing) is decided again: stick where the cone holds.
                 let before = self.events.len();
@@ -691,11 +694,11 @@ impl TableMotion {
         value
     }
 
-    /// Whether a slipping contact's slip lies within the resolution speed:
-    /// its direction is then not resolved, and following it would chatter
-    /// about the band's edge.
-    fn slip_within_resolution(&self) -> bool {
-        let floor = self.resolution_speed();
+    /// Whether a slipping contact's slip lies within `floor` (m/s): within
+    /// the resolution speed its direction is not resolved, and following it
+    /// would chatter about the band's edge; within [`SLIP_BAND`] its
+    /// direction is held.
+    fn slip_within(&self, floor: f64) -> bool {
         self.modes.iter().enumerate().any(|(i, m)| {
             let row = &self.current.frame.rows[i];
             m.mode == ContactMode::Slipping
