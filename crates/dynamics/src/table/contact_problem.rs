@@ -20,7 +20,9 @@
 //! Glocker, Acta Mech. 2006, call it the successive solution of the
 //! inclusions), each block exactly: separation if `y_N⁰ ≥ 0`, else
 //! sticking if its force lies in the cone, else slipping on the cone's
-//! boundary with the direction found by fixed-point iteration.
+//! boundary with the direction found by Newton's method
+//! ([`super::slip_onset`]; a damped fixed point, then the projected
+//! iteration, where it does not settle).
 
 use glam::DVec3;
 
@@ -260,7 +262,10 @@ pub(crate) fn solve_blocks(
     Err(unsolved())
 }
 
-/// One block exactly: separation, sticking, or slipping on the cone.
+/// One block exactly: separation, sticking, or slipping on the cone (the
+/// slip's direction by [`slip_onset`] from the direction opposite the
+/// sticking force; where that does not settle, the damped fixed point
+/// `d ← (d + y_T/|y_T|)/|…|`, then [`prox_block`]).
 fn solve_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Result<[f64; 4], DynamicsError> {
     let n = b.size;
     let mut x = [0.0; 4];

@@ -1042,7 +1042,8 @@ impl TableMotion {
                     let kappa = (0..blocks[a].size - 1).fold(g(a, 0, a, 0), |k, c| {
                         k - blocks[a].mu * g(a, 0, a, 1 + c) * d[c]
                     });
-                    frame.rows[touching[a]].slip().length() <= band && !(kappa > 0.0)
+                    frame.rows[touching[a]].slip().length() <= band
+                        && (kappa.is_nan() || kappa <= 0.0)
                 })
             })
             .collect();
