@@ -9,8 +9,11 @@
 //! Bodies whose contact point is off the vertical through the centre of
 //! mass have a Painlevé bound in some slip directions. The tippe top at
 //! μ = 1000 sticks where its slip dies (a regression below); the thrown
-//! ellipsoid's run is still grid-dependent and its rolling gains energy at
-//! the integration error's level (ignored, with its times and states).
+//! ellipsoid has one outcome on every grid (regressions below), but while
+//! it rolls its energy drifts with the integration error, 7.3 rtol E0
+//! between frames of 1/60 s — above 10⁻¹² E0 at the default rtol = 10⁻¹⁰
+//! (ignored, with the measurement; the drift's proportionality to rtol is
+//! tested).
 
 mod common;
 
@@ -18,7 +21,7 @@ use common::tippe_top::{A, G, I1, I3, M, OMEGA0, R, THETA0, stem};
 use glam::{DQuat, DVec3};
 use kreisel::dynamics::{
     Body, BodyBuilder, BodyId, BodyState, ContactLaw, ContactShape, DynamicsError,
-    EllipsoidContact, SphereContact, TableContact, TableEvent, TableEventKind, World,
+    EllipsoidContact, SphereContact, TableContact, TableEvent, TableEventKind, Tolerance, World,
 };
 
 /// The friction coefficient of every run here.
@@ -34,12 +37,27 @@ struct Run {
     frames: Vec<BodyState>,
     events: Vec<TableEvent>,
     stopped: Option<DynamicsError>,
+    /// The largest energy change from one frame to the next, J.
+    rise: f64,
 }
 
 /// Moves `body` in a World of step `dt` frame by frame up to `t_end` (or
 /// an error); each frame's energy at most the last one's plus `slack` J.
 fn run(body: &BodyBuilder, dt: f64, t_end: f64, slack: f64) -> Run {
+    run_to(body, dt, t_end, slack, None)
+}
+
+/// [`run`] in a World with `tolerance` (its table runs at
+/// `rtol = atol = attitude/1000`).
+fn run_to(
+    body: &BodyBuilder,
+    dt: f64,
+    t_end: f64,
+    slack: f64,
+    tolerance: Option<Tolerance>,
+) -> Run {
     let mut world = World::try_new(DVec3::new(0.0, 0.0, -G), dt).unwrap();
+    world.set_tolerance(tolerance).unwrap();
     let id: BodyId = world.add(body.clone().try_build().unwrap()).unwrap();
     let mut frames = vec![world.state(id).unwrap()];
     let n = (t_end / dt).round() as u64;
@@ -70,6 +88,7 @@ fn run(body: &BodyBuilder, dt: f64, t_end: f64, slack: f64) -> Run {
         frames,
         events: world.events(id).unwrap().to_vec(),
         stopped,
+        rise,
     }
 }
 
@@ -267,31 +286,191 @@ fn the_tippe_top_at_mu_1000_sticks_when_its_slip_dies() {
     assert!(worst[0] < 1e-8 && worst[1] < 1e-10, "{worst:?}");
 }
 
-/// Open (issue 26): the ellipsoid thrown
-/// at μ = 1000 (plastic) lands at 0.0803 s and sticks, slips at 0.14518 s
-/// as its normal force vanishes, lifts off at 0.1614 s and lands again at
-/// 0.2106 s — then the outcome depends on the grid: dt = 1/60 stops with
-/// `ContactIndeterminate` at 0.2241863 s (κ = −1279 1/kg), dt = 1e-3 with
-/// `ContactUnsolved` at 0.4256222 s, dt = 1e-5 with `ContactUnsolved` at
-/// 0.1451844045986 s (the slip's own time). In its rolling phase the
-/// energy also rises by up to 7.5e-12 J on 0.99 J between frames (the
-/// integration error at rtol 1e-10, above the 1e-12 E0 asked here).
+/// The velocity of the thrown ellipsoid's lowest point in `state`,
+/// computed here from its geometry (not the library's contact code): the
+/// lowest point of `x²/a² + y²/b² + z²/c² = 1` along `−ẑ` is
+/// `p = −A² u/√(uᵀ A² u)` with `u` the world's `ẑ` in body axes, and
+/// `v_P = v_G + ω × q p`.
+fn lowest_point_velocity(state: &BodyState) -> DVec3 {
+    let axes = DVec3::new(0.06, 0.04, 0.015);
+    let q = state.world_from_body.normalize();
+    let u = q.inverse() * DVec3::Z;
+    let a2u = axes * axes * u;
+    let p = -a2u / u.dot(a2u).sqrt();
+    state.velocity + (q * state.omega_body).cross(q * p)
+}
+
+/// The events of the thrown ellipsoid at μ = 1000 (plastic): it lands and
+/// sticks, slips as its normal force vanishes, lifts off, lands again
+/// slipping, sticks, slips, sticks, slips and lifts off.
+const ELLIPSOID_EVENTS: [(TableEventKind, f64); 9] = [
+    (
+        TableEventKind::Impact {
+            approach_speed: 0.0,
+            rebound_speed: 0.0,
+        },
+        0.080_320_154_87,
+    ),
+    (TableEventKind::Slip, 0.145_184_404_59),
+    (TableEventKind::LiftOff, 0.161_405_197_98),
+    (
+        TableEventKind::Impact {
+            approach_speed: 0.0,
+            rebound_speed: 0.0,
+        },
+        0.210_579_103_99,
+    ),
+    (TableEventKind::Stick, 0.224_186_340_23),
+    (TableEventKind::Slip, 0.301_864_842_06),
+    (TableEventKind::Stick, 0.353_934_649_30),
+    (TableEventKind::Slip, 0.425_622_215_71),
+    (TableEventKind::LiftOff, 0.432_025_719_01),
+];
+
+/// How far the events of `run` lie from the thrown ellipsoid's (those of
+/// a run at rtol = 10⁻¹²), s: `None` unless they are the same kinds.
+fn ellipsoid_event_error(run: &Run) -> Option<f64> {
+    let same_kind = |a: TableEventKind, b: TableEventKind| {
+        matches!(
+            (a, b),
+            (TableEventKind::Impact { .. }, TableEventKind::Impact { .. })
+        ) || a == b
+    };
+    let kinds = run.events.len() == ELLIPSOID_EVENTS.len()
+        && run
+            .events
+            .iter()
+            .zip(ELLIPSOID_EVENTS)
+            .all(|(e, (kind, _))| same_kind(e.kind, kind));
+    kinds.then(|| {
+        run.events
+            .iter()
+            .zip(ELLIPSOID_EVENTS)
+            .map(|(e, (_, t))| (e.time - t).abs())
+            .fold(0.0, f64::max)
+    })
+}
+
+/// Regression (issue 26): the ellipsoid thrown at μ = 1000 (plastic) ended
+/// differently on each grid — `ContactUnsolved` at its first slip
+/// (0.14518 s) on one grid, at a later one on another, through on the
+/// third. Where it slips out of sticking its sticking force lies on the
+/// cone's edge and the slip's acceleration is at rounding (2·10⁻¹⁴ m/s²):
+/// the damped fixed point on the slip direction wandered off. Newton's
+/// method on the direction (`slip_onset`) solves it; the run goes through
+/// its nine events on every grid, at the same times. (The energy is
+/// checked in the tests below: here no slack binds.)
 #[test]
-#[ignore = "grid-dependent ContactUnsolved/ContactIndeterminate at mu = 1000: reported to the lead (issue 26)"]
 fn a_thrown_ellipsoid_at_mu_1000_has_one_outcome_on_every_grid() {
     let body = thrown_ellipsoid(0.0);
-    let e0 = run(&body, 1.0, 0.0, 0.0).frames[0].energy;
-    let (runs, worst) = on_every_grid(&body, 0.5, RISE * e0);
-    let outcome = |r: &Run| r.stopped.as_ref().map(ToString::to_string);
-    for r in &runs[1..] {
-        assert_eq!(outcome(r), outcome(&runs[0]));
-        assert_eq!(r.events.len(), runs[0].events.len());
-        for (a, b) in r.events.iter().zip(&runs[0].events) {
-            assert!(
-                a.kind == b.kind && (a.time - b.time).abs() < 1e-9,
-                "{a} vs {b}"
-            );
-        }
+    let (runs, worst) = on_every_grid(&body, 0.5, f64::INFINITY);
+    for r in &runs {
+        assert!(r.stopped.is_none(), "{:?}", r.stopped);
+        let error = ellipsoid_event_error(r);
+        eprintln!("events within {error:?} s");
+        // Measured: within 5.4e-10 s of the run at rtol = 1e-12.
+        assert!(error.is_some_and(|e| e < 1e-9), "{:?}", r.events);
     }
+    // Measured: 8.6e-10 rad, 2.3e-11 m, 1.7e-10 m/s.
     assert!(worst[0] < 1e-8 && worst[1] < 1e-10, "{worst:?}");
+}
+
+/// Regression: the thrown ellipsoid's run at other tolerances (World
+/// tolerances of 10⁻⁵, 10⁻⁶ and 10⁻⁸ rad: rtol = 10⁻⁸, 10⁻⁹, 10⁻¹¹) on the
+/// 10⁻³ s grid stopped with `ContactIndeterminate` — at 0.35393 s, where a
+/// slip within its band (its direction held) grew along a direction no
+/// normal force holds (κ = −193 1/kg, in a trial of the event location),
+/// and at 0.22418634 s, where the slip reversed along the held direction
+/// but not across it (2.3e-9 m/s left, κ = −4755 1/kg); on the 10⁻⁵ s grid
+/// at rtol = 10⁻⁸ with `StepTooSmall` at 0.35393462 s (its slip, just past
+/// the band, near Painlevé's case: κ → 0⁺, N = 4·10⁶ N; no step held it).
+/// Such slips are decided afresh: the ellipsoid sticks.
+#[test]
+fn the_thrown_ellipsoid_at_mu_1000_runs_through_at_every_tolerance() {
+    let body = thrown_ellipsoid(0.0);
+    for (dt, attitude) in [(1e-3, 1e-5), (1e-3, 1e-6), (1e-3, 1e-8), (1e-5, 1e-5)] {
+        let r = run_to(
+            &body,
+            dt,
+            0.5,
+            f64::INFINITY,
+            Some(Tolerance::new(attitude, 1.0)),
+        );
+        assert!(r.stopped.is_none(), "{attitude:e}: {:?}", r.stopped);
+        let error = ellipsoid_event_error(&r);
+        eprintln!("events within {error:?} s");
+        // Measured: within 2.9e-8 s (rtol = 1e-8 on the 1e-5 s grid, the
+        // stick decided afresh where no step holds the slip; 2.7e-10 s
+        // on the 1e-3 s grid).
+        assert!(
+            error.is_some_and(|e| e < 1e-7),
+            "{attitude:e}: {:?}",
+            r.events
+        );
+    }
+}
+
+/// Regression: the impulse that stops the residual slip of a contact that
+/// starts to stick also moved its normal velocity (`G_NT P_T`): the thrown
+/// ellipsoid stuck at 0.22419 s rolling off the table at 1.3·10⁻¹⁰ m/s,
+/// its normal force doing work on it (+2.6·10⁻¹¹ J from 0.25 s to 0.30 s,
+/// sticking all along). The impulse now stops both: its lowest point
+/// stays at rest to the integration error.
+#[test]
+fn the_thrown_ellipsoid_rolls_without_drift_after_it_sticks() {
+    let body = thrown_ellipsoid(0.0);
+    let r = run(&body, 1e-5, 0.30, f64::INFINITY);
+    assert!(r.stopped.is_none(), "{:?}", r.stopped);
+    let mut worst: f64 = 0.0;
+    for s in r
+        .frames
+        .iter()
+        .filter(|s| s.time > 0.225 && s.time < 0.3005)
+    {
+        worst = worst.max(lowest_point_velocity(s).length());
+    }
+    // Measured: 1.8e-14 m/s (1.2e-10 m/s before).
+    assert!(worst < 5e-11, "{worst:e} m/s");
+    // Measured: −6.6e-15 J (+2.6e-11 J before).
+    let (a, b) = (at(&r, 0.25).energy, at(&r, 0.30).energy);
+    assert!((b - a).abs() < 1e-13, "{:e} J", b - a);
+}
+
+/// Open (issue 26, reported to the lead): while the thrown ellipsoid
+/// rolls (sticking, conservative) its energy drifts with the integration
+/// error — the constraints hold at the acceleration level, so the
+/// velocities of its lowest point drift with the error of the run and the
+/// contact forces do work on that drift. Between frames of 1/60 s the
+/// largest rise is 7.3 rtol E0 at every tolerance (7.6e-10, 7.2e-11,
+/// 7.3e-12, 7.2e-13, 7.3e-14 J for rtol = 1e-8 … 1e-12): above the
+/// 10⁻¹² E0 asked here at the default rtol = 10⁻¹⁰.
+#[test]
+#[ignore = "the rolling ellipsoid's energy drifts by 7.3 rtol E0 per 1/60 s frame (integration error): reported to the lead (issue 26)"]
+fn a_thrown_ellipsoid_at_mu_1000_never_gains_energy_on_any_grid() {
+    let body = thrown_ellipsoid(0.0);
+    let e0 = run(&body, 1.0, 0.0, 0.0).frames[0].energy;
+    on_every_grid(&body, 0.5, RISE * e0);
+}
+
+/// The rolling ellipsoid's energy rise between frames is the integration
+/// error: it scales with the tolerance (rtol = 10⁻⁹ and 10⁻¹², World
+/// tolerances 10⁻⁶ and 10⁻⁹ rad), and at 10⁻¹² it is below 10⁻¹² E0 on
+/// every grid.
+#[test]
+fn the_thrown_ellipsoids_energy_rise_is_the_integration_error() {
+    let body = thrown_ellipsoid(0.0);
+    let e0 = run(&body, 1.0, 0.0, 0.0).frames[0].energy;
+    let rise = |dt: f64, attitude: f64, slack: f64| {
+        let r = run_to(&body, dt, 0.5, slack, Some(Tolerance::new(attitude, 1.0)));
+        assert!(r.stopped.is_none(), "{:?}", r.stopped);
+        r.rise
+    };
+    let coarse = rise(1.0 / 60.0, 1e-6, f64::INFINITY);
+    let fine = rise(1.0 / 60.0, 1e-9, RISE * e0);
+    // Measured: 7.20e-11 J and 7.28e-14 J.
+    let ratio = fine / coarse;
+    assert!(ratio > 0.5e-3 && ratio < 2e-3, "{coarse:e} J, {fine:e} J");
+    for dt in [1e-3, 1e-5] {
+        rise(dt, 1e-9, RISE * e0);
+    }
 }

@@ -21,13 +21,16 @@
 //! Glocker, Acta Mech. 2006, call it the successive solution of the
 //! inclusions), each block exactly: separation if `y_N⁰ ≥ 0`, else
 //! sticking if its force lies in the cone, else slipping on the cone's
-//! boundary with the direction found by fixed-point iteration.
+//! boundary with the direction found by Newton's method
+//! ([`super::slip_onset`]; a damped fixed point, then the projected
+//! iteration, where it does not settle).
 
 use glam::DVec3;
 
 use super::TableBody;
 use super::contact_frame::{ContactFrame, ROLLING, Wrench};
 use super::dense::solve_in_place;
+use super::slip_onset::slip_onset;
 use crate::DynamicsError;
 
 /// What a contact does between two events.
@@ -314,7 +317,10 @@ pub(crate) fn solve_blocks(
     Err(unsolved())
 }
 
-/// One block exactly: separation, sticking, or slipping on the cone.
+/// One block exactly: separation, sticking, or slipping on the cone (the
+/// slip's direction by [`slip_onset`] from the direction opposite the
+/// sticking force; where that does not settle, the damped fixed point
+/// `d ← (d + y_T/|y_T|)/|…|`, then [`prox_block`]).
 fn solve_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Result<[f64; 4], DynamicsError> {
     let n = b.size;
     let mut x = [0.0; 4];
@@ -347,8 +353,12 @@ fn solve_block(b: &Block, g: &[[f64; 4]; 4], y0: &[f64; 4]) -> Result<[f64; 4], 
             x[..n].copy_from_slice(&rhs[..n]);
             return Ok(x);
         }
-        // Slipping: start from the direction opposite the sticking force.
+        // Slipping: start from the direction opposite the sticking force,
+        // Newton's method on the slip direction first.
         let mut d = -t.normalize_or_zero();
+        if let Some(x) = slip_onset(g, y0, n, b.mu, d) {
+            return Ok(x);
+        }
         for _ in 0..MAX_SWEEPS {
             let xs = slip_along(b, g, y0, d)?;
             let y_t = tangential(g, y0, &xs, n);
@@ -492,5 +502,37 @@ mod tests {
             solve_block(&b, &g, &[1.0, 3.0, 0.0, 0.0]).unwrap(),
             [0.0; 4]
         );
+    }
+
+    /// Regression: the thrown ellipsoid at μ = 1000 where its sticking
+    /// force reaches the cone (t = 0.14518 s): the slip's acceleration is
+    /// at rounding there, the damped fixed point on its direction wandered
+    /// off and the projected iteration did not settle — `ContactUnsolved`
+    /// on the 1/60 s grid, a slip on the others. It slips along the
+    /// direction opposite the sticking force, with that force.
+    #[test]
+    fn a_block_whose_sticking_force_is_on_the_cone_edge_slips_with_it() {
+        let (g, y0) = crate::table::slip_onset::tests::ellipsoid_at_the_cone();
+        let b = Block {
+            size: 3,
+            mu: 1000.0,
+            slipping: None,
+        };
+        let x = solve_block(&b, &g, &y0).unwrap();
+        let mut a = [0.0; 16];
+        let mut stick = [-y0[0], -y0[1], -y0[2], 0.0];
+        for r in 0..3 {
+            for k in 0..3 {
+                a[r * 3 + k] = g[r][k];
+            }
+        }
+        assert!(solve_in_place(&mut a, &mut stick, 3));
+        for k in 0..3 {
+            assert!(
+                (x[k] - stick[k]).abs() < 1e-9 * stick[k].abs(),
+                "{x:?} vs {stick:?}"
+            );
+        }
+        assert!((x[1].hypot(x[2]) / x[0] - 1000.0).abs() < 1e-9);
     }
 }

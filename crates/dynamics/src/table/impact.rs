@@ -162,10 +162,17 @@ pub(crate) fn at_time(e: DynamicsError, time: f64) -> DynamicsError {
     }
 }
 
-/// The impulse `P = −G⁻¹ γ` that stops the residual slip (`slip`) and
-/// the residual rolling (`roll`) of contact `i` as it starts to stick or
-/// its rolling resistance starts to hold (dissipative:
-/// `ΔT = −½ γᵀ G⁻¹ γ`; `γ` and `G` over the components stopped).
+/// The impulse `P = −G⁻¹ (0, γ)` on the contact's normal direction and
+/// the components stopped — the residual slip (`slip`) of a contact that
+/// starts to stick, the residual rolling (`roll`) of one whose rolling
+/// resistance starts to hold — that stops them and keeps the normal
+/// velocity `ġ` (`ΔT = −½ (0, γ)ᵀ G⁻¹ (0, γ) + P_N ġ`, both velocities
+/// below the resolution speed). Stopping the slip by `P_T = −G_TT⁻¹ γ_T`
+/// alone moved the normal velocity by `G_NT P_T`: the thrown ellipsoid at
+/// μ = 1000 stuck with `ġ = +1.3·10⁻¹⁰` m/s, and the closed contact's
+/// normal force then did work `N ġ` on it (+2.6·10⁻¹¹ J in 0.05 s of
+/// rolling). (Zeroing `ġ` as well stalled the spun coin of
+/// `tests/table_regressions.rs`.)
 pub(crate) fn stop_slip(
     body: &TableBody,
     state: &GroundTopState,
@@ -178,18 +185,20 @@ pub(crate) fn stop_slip(
     let row = &frame.rows[i];
     let slipping = (1..=row.friction_dimensions).filter(|_| slip);
     let rolling = ROLLING.into_iter().filter(|_| roll && row.rolls);
-    let components: Vec<usize> = slipping.chain(rolling).collect();
-    let n = components.len();
-    if n == 0 {
+    let stopped: Vec<usize> = slipping.chain(rolling).collect();
+    if stopped.is_empty() {
         return *state;
     }
-    let mut a = [0.0; 25];
-    let mut rhs = [0.0; 5];
+    let components: Vec<usize> = std::iter::once(0).chain(stopped).collect();
+    let n = components.len();
+    let mut a = [0.0; 36];
+    let mut rhs = [0.0; 6];
     for (r, &cr) in components.iter().enumerate() {
         for (k, &ck) in components.iter().enumerate() {
             a[r * n + k] = frame.delassus(&row.directions[cr], &row.directions[ck]);
         }
-        rhs[r] = -row.velocity[cr];
+        // The normal velocity kept, the slip (and rolling) stopped.
+        rhs[r] = if cr == 0 { 0.0 } else { -row.velocity[cr] };
     }
     if !super::dense::solve_in_place(&mut a, &mut rhs, n) {
         return *state;

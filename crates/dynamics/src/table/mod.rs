@@ -69,6 +69,7 @@ mod dense;
 mod face;
 mod impact;
 mod rolling_resistance;
+mod slip_onset;
 mod table_body;
 mod table_event;
 mod table_motion;

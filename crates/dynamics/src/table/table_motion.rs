@@ -523,6 +523,8 @@ impl TableMotion {
             });
         }
         let mut in_place = 0;
+        // When the modes were last decided afresh for a step too small.
+        let mut afresh_at = f64::NAN;
         while self.time < t_end {
             if self.resting {
                 self.time = t_end;
@@ -576,18 +578,8 @@ impl TableMotion {
                     // force would, Painlevé's case for that direction): the
                     // modes are decided afresh, stick where the cone holds.
                     // Still indeterminate in the modes found: the error.
-                    self.afresh = true;
-                    let decided = self.settle();
-                    self.afresh = false;
-                    decided?;
+                    self.decide_afresh(&mut in_place)?;
                     self.h = h.max(min);
-                    in_place += 1;
-                    if in_place > MAX_EVENTS_IN_PLACE {
-                        return Err(DynamicsError::ContactModesChatter {
-                            time: self.time,
-                            count: in_place,
-                        });
-                    }
                     continue;
                 }
                 Err(e) => return Err(at_time(e, self.time)),
@@ -600,6 +592,17 @@ impl TableMotion {
                     MIN_SHRINK
                 };
                 self.h = h * factor;
+                let slipping = self.slip_within(f64::INFINITY);
+                if self.h < min && slipping && afresh_at != self.time {
+                    // No step holds a slip (near Painlevé's case for its
+                    // direction, κ → 0⁺, the normal force without bound:
+                    // 4e6 N on the 0.3 kg ellipsoid at μ = 1000): the modes
+                    // decided afresh, once here, stick where the cone holds.
+                    afresh_at = self.time;
+                    self.decide_afresh(&mut in_place)?;
+                    self.h = h;
+                    continue;
+                }
                 if self.h < min {
                     return Err(DynamicsError::StepTooSmall {
                         method: METHOD,
@@ -650,7 +653,7 @@ impl TableMotion {
             if self.land_flat_disks()? && stop_at_event {
                 return Ok(true);
             }
-            if self.slip_within_resolution() {
+            if self.slip_within(self.resolution_speed()) {
                 // A slip that has fallen into the resolution band (without
                 // reversing) is decided again: stick where the cone holds.
                 let before = self.events.len();
@@ -664,6 +667,28 @@ impl TableMotion {
             }
         }
         Ok(false)
+    }
+
+    /// The modes decided afresh (no contact kept slipping along its slip)
+    /// where no step holds the current ones; `in_place` counts the
+    /// decisions at one instant.
+    ///
+    /// # Errors
+    /// Those of [`TableMotion::settle`]; [`DynamicsError::ContactModesChatter`]
+    /// past [`MAX_EVENTS_IN_PLACE`] decisions in place.
+    fn decide_afresh(&mut self, in_place: &mut usize) -> Result<(), DynamicsError> {
+        self.afresh = true;
+        let decided = self.settle();
+        self.afresh = false;
+        decided?;
+        *in_place += 1;
+        if *in_place > MAX_EVENTS_IN_PLACE {
+            return Err(DynamicsError::ContactModesChatter {
+                time: self.time,
+                count: *in_place,
+            });
+        }
+        Ok(())
     }
 
     /// A continuous measure of how far `end` is from the events the
@@ -729,11 +754,11 @@ impl TableMotion {
         }
     }
 
-    /// Whether a slipping contact's slip lies within the resolution speed:
-    /// its direction is then not resolved, and following it would chatter
-    /// about the band's edge.
-    fn slip_within_resolution(&self) -> bool {
-        let floor = self.resolution_speed();
+    /// Whether a slipping contact's slip lies within `floor` (m/s): within
+    /// the resolution speed its direction is not resolved, and following it
+    /// would chatter about the band's edge; within [`SLIP_BAND`] its
+    /// direction is held.
+    fn slip_within(&self, floor: f64) -> bool {
         self.modes.iter().enumerate().any(|(i, m)| {
             let row = &self.current.frame.rows[i];
             (m.mode == ContactMode::Slipping
@@ -786,7 +811,7 @@ impl TableMotion {
         let (mut lo, mut hi) = (0.0, h);
         let mut f_lo = self.event_value(&self.current);
         let mut f_hi = self.event_value(&at_h);
-        let mut end = at_h;
+        let mut end = Some(at_h);
         let resolution = 2.0 * f64::EPSILON * (self.time.abs() + h);
         let (mut side, mut bisect) = (0i8, false);
         while hi - lo > resolution {
@@ -803,12 +828,23 @@ impl TableMotion {
             }
             let width = hi - lo;
             let secant_trial = usable && !bisect;
-            let trial = self.trial(mid).map_err(|e| at_time(e, self.time + mid))?;
+            let trial = match self.trial(mid) {
+                Ok(trial) => trial,
+                Err(DynamicsError::ContactIndeterminate { .. }) => {
+                    // A stage beyond the event may be indeterminate (a slip
+                    // past its band along a direction no normal force
+                    // holds): the event lies before `mid`, bisected.
+                    (hi, f_hi, end) = (mid, 0.0, None);
+                    bisect = true;
+                    continue;
+                }
+                Err(e) => return Err(at_time(e, self.time + mid)),
+            };
             let value = self.event_value(&trial.end);
             if self.event_in(&trial.end, mid) {
                 hi = mid;
                 f_hi = value.min(0.0);
-                end = trial.end;
+                end = Some(trial.end);
                 if side == -1 {
                     f_lo *= 0.5;
                 }
@@ -823,7 +859,15 @@ impl TableMotion {
             }
             bisect = secant_trial && hi - lo > 0.5 * width;
         }
-        Ok((hi, end))
+        match end {
+            Some(end) => Ok((hi, end)),
+            // Indeterminate at the bracket's end: the event at its start.
+            None if lo == 0.0 => Ok((0.0, self.current.clone())),
+            None => {
+                let at_lo = self.trial(lo).map_err(|e| at_time(e, self.time + lo))?;
+                Ok((lo, at_lo.end))
+            }
+        }
     }
 
     /// Lands a disk on its face when a closed (or touching) rim's axis is
@@ -1157,8 +1201,35 @@ impl TableMotion {
                 Rolling::Cone
             });
         }
-        let (x, x_r) = solve_with_rolling(frame, &touching, &blocks, &y_free, &rolling)
-            .map_err(|e| at_time(e, self.time))?;
+        let g = |a: usize, ca: usize, b: usize, cb: usize| {
+            frame.delassus(
+                &frame.rows[touching[a]].directions[ca],
+                &frame.rows[touching[b]].directions[cb],
+            )
+        };
+        // A slip within its band whose direction no normal force holds
+        // (Painlevé's case for that direction; the direction within the
+        // band is not resolved, SLIP_BAND): that contact decided afresh.
+        let band = self.band();
+        let unresolved: Vec<usize> = (0..touching.len())
+            .filter(|&a| {
+                blocks[a].slipping.is_some_and(|d| {
+                    let kappa = (0..blocks[a].size - 1).fold(g(a, 0, a, 0), |k, c| {
+                        k - blocks[a].mu * g(a, 0, a, 1 + c) * d[c]
+                    });
+                    frame.rows[touching[a]].slip().length() <= band
+                        && (kappa.is_nan() || kappa <= 0.0)
+                })
+            })
+            .collect();
+        let (x, x_r) = match solve_with_rolling(frame, &touching, &blocks, &y_free, &rolling) {
+            Err(DynamicsError::ContactIndeterminate { .. }) if !unresolved.is_empty() => {
+                unresolved.iter().for_each(|&a| blocks[a].slipping = None);
+                solve_with_rolling(frame, &touching, &blocks, &y_free, &rolling)
+            }
+            solved => solved,
+        }
+        .map_err(|e| at_time(e, self.time))?;
         let mut modes = vec![Mode::OPEN; self.modes.len()];
         for (k, &i) in touching.iter().enumerate() {
             let (xi, block) = (&x[k], &blocks[k]);
