@@ -159,7 +159,12 @@ fn main() {
         let clock = Instant::now();
         let outcome = match TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10))
         {
-            Err(e) => format!("start: {}", kind(&e)),
+            Err(e) => {
+                if trace.is_some() {
+                    println!("{e}");
+                }
+                format!("start: {}", kind(&e))
+            }
             Ok(mut run) => {
                 let mut energy = run.body().energy(run.state());
                 let mut rose = false;
@@ -167,6 +172,9 @@ fn main() {
                 for frame in 1..=200 {
                     let t_frame = f64::from(frame) * 0.01;
                     if let Err(e) = run.try_advance_to(t_frame) {
+                        if trace.is_some() {
+                            println!("{e}");
+                        }
                         end = kind(&e);
                         break;
                     }

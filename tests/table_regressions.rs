@@ -175,3 +175,73 @@ fn a_slip_decaying_into_the_band_enters_it() {
         .count();
     assert!(slips >= 2, "{:?}", run.events());
 }
+
+/// An ellipsoid thrown onto the table (μ = 0.35, e = 0.94, e_T = 0; case 44
+/// of `examples/table_scan.rs`, seed 26) strikes at 0.147 s: Newton's law
+/// with e_T = 0 would raise its kinetic energy from 0.313 J to 0.363 J
+/// (Kane's paradox: the impact reverses the slip, and the friction impulse
+/// works along the slip before it) — `ImpactGainsEnergy`, the run ended.
+/// With e_T = e the law cannot gain (Glocker 2013), and the impact takes
+/// it: the run goes on and the energy never rises.
+#[test]
+fn an_impact_that_newtons_law_would_make_gain_energy_takes_e_t_equal_to_e() {
+    let ellipsoid = EllipsoidContact::try_new(
+        DVec3::new(0.03910203397216193, 0.0335245213173597, 0.0337922373945311),
+        DVec3::new(
+            -0.004954873923510915,
+            0.009037791740041856,
+            0.016220515000530965,
+        ),
+    )
+    .unwrap();
+    let law = ContactLaw::try_new(0.34935540491913214)
+        .and_then(|l| l.try_with_restitution(0.9372078311434561))
+        .unwrap();
+    let inertia = DMat3::from_diagonal(DVec3::new(
+        4.6460939314877445e-5,
+        4.7592618248103335e-5,
+        1.9051550421458362e-5,
+    ));
+    let contacts = vec![TableContact {
+        shape: ContactShape::Ellipsoid(ellipsoid),
+        law,
+    }];
+    let body = TableBody::try_new(0.11579308863071851, inertia, contacts, 9.81).unwrap();
+    let start = GroundTopState {
+        com_world: DVec3::new(0.0, 0.0, 0.06668038786503698),
+        velocity_world: DVec3::new(-0.2608498759534783, -1.1708524327296521, 0.3501335373856606),
+        world_from_body: DQuat::from_xyzw(
+            -0.3656690318333469,
+            0.09304257753973053,
+            0.055648405477435096,
+            0.9244092669865686,
+        ),
+        l_world: DVec3::new(
+            0.0036385509234935103,
+            -0.002795569875963509,
+            0.0006380463111117074,
+        ),
+    };
+    let mut run = TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10)).unwrap();
+    let mut energy = run.body().energy(run.state());
+    let scale = energy.abs();
+    while run.time() < 2.0 {
+        run.try_advance_until_event(2.0).unwrap();
+        let now = run.body().energy(run.state());
+        assert!(
+            now <= energy + 1e-12 * scale,
+            "{now} > {energy} at {}",
+            run.time()
+        );
+        energy = now;
+    }
+    // The impact that gained struck at 0.147354507 s.
+    assert!(
+        run.events()
+            .iter()
+            .any(|e| matches!(e.kind, TableEventKind::Impact { .. })
+                && (e.time - 0.14735450702802427).abs() < 1e-9),
+        "{:?}",
+        run.events()
+    );
+}

@@ -42,6 +42,11 @@ use crate::DynamicsError;
 /// the tangential one (0: the slip after the impact is the one friction
 /// allows; Garwin's superball, Am. J. Phys. 37 (1969) 88, has `e_T > 0`,
 /// the contact point's tangential velocity reversed while it sticks).
+/// Newton's law with `e_T ≠ e` can raise the energy (Kane's paradox: an
+/// impact that reverses the slip, its friction impulse working along the
+/// slip before it); with `e_T = e` at every contact it cannot (Glocker,
+/// Multibody Syst. Dyn. 2013). Where the law as given would gain, that
+/// impact takes `e_T = e`.
 /// A disk rim's law also rules its face striking flat: `e` reverses the
 /// face's normal velocities (its centre's and both tilting rates), `μ`
 /// bounds its friction impulse with the face's own drilling lever `⅔ a`

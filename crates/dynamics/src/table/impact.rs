@@ -35,11 +35,13 @@ pub(crate) struct ImpactOutcome {
 }
 
 /// The impact of `body` in `state` at the contacts `participants`; a
-/// rebound at or below `resolution_speed` closes the contact.
+/// rebound at or below `resolution_speed` closes the contact. Where the
+/// laws as given would raise the kinetic energy, the impact takes `e_T = e`
+/// at every participant, which cannot (see the body).
 ///
 /// # Errors
 /// [`DynamicsError::ImpactGainsEnergy`] (at `time`) when the impulses
-/// would raise the kinetic energy beyond rounding;
+/// would raise the kinetic energy beyond rounding even so;
 /// [`DynamicsError::ContactIndeterminate`] when the impulse problem has no
 /// solution the block solver finds.
 pub(crate) fn impact(
@@ -51,9 +53,9 @@ pub(crate) fn impact(
 ) -> Result<ImpactOutcome, DynamicsError> {
     let frame = ContactFrame::of(body, state, time);
     let free = (frame.free_velocity_rate, frame.free_omega_rate);
-    let mut blocks = Vec::with_capacity(participants.len());
-    let mut y_free = Vec::with_capacity(participants.len());
     let mut accumulations = Vec::new();
+    // Each participant's (e, e_T).
+    let mut coefficients = Vec::with_capacity(participants.len());
     for &i in participants {
         let row = &frame.rows[i];
         let law = body.contacts()[i].law;
@@ -72,18 +74,7 @@ pub(crate) fn impact(
             }
             (e, e_t) = (0.0, 0.0);
         }
-        let size = 1 + row.friction_dimensions;
-        let mut y = [0.0; 4];
-        y[0] = (1.0 + e) * row.velocity[0];
-        for (yk, vk) in y.iter_mut().zip(row.velocity).take(size).skip(1) {
-            *yk = (1.0 + e_t) * vk;
-        }
-        y_free.push(y);
-        blocks.push(Block {
-            size,
-            mu: row.mu,
-            slipping: None,
-        });
+        coefficients.push((e, e_t));
     }
     let g = |a: usize, ca: usize, b: usize, cb: usize| {
         frame.delassus(
@@ -91,18 +82,53 @@ pub(crate) fn impact(
             &frame.rows[participants[b]].directions[cb],
         )
     };
-    let impulses = solve_blocks(&blocks, &y_free, &g).map_err(|e| at_time(e, time))?;
-    let mut total = Wrench::default();
-    for (p, &i) in impulses.iter().zip(participants) {
-        for (k, pk) in p
-            .iter()
-            .enumerate()
-            .take(1 + frame.rows[i].friction_dimensions)
-        {
-            total = total.plus(frame.rows[i].directions[k].scaled(*pk));
+    // The impulses and the state after them under the coefficients given.
+    let solve = |coefficients: &[(f64, f64)]| {
+        let mut blocks = Vec::with_capacity(participants.len());
+        let mut y_free = Vec::with_capacity(participants.len());
+        for (&i, &(e, e_t)) in participants.iter().zip(coefficients) {
+            let row = &frame.rows[i];
+            let size = 1 + row.friction_dimensions;
+            let mut y = [0.0; 4];
+            y[0] = (1.0 + e) * row.velocity[0];
+            for (yk, vk) in y.iter_mut().zip(row.velocity).take(size).skip(1) {
+                *yk = (1.0 + e_t) * vk;
+            }
+            y_free.push(y);
+            blocks.push(Block {
+                size,
+                mu: row.mu,
+                slipping: None,
+            });
         }
-    }
-    let after = struck(body, state, &frame, total, time)?;
+        let impulses = solve_blocks(&blocks, &y_free, &g).map_err(|e| at_time(e, time))?;
+        let mut total = Wrench::default();
+        for (p, &i) in impulses.iter().zip(participants) {
+            for (k, pk) in p
+                .iter()
+                .enumerate()
+                .take(1 + frame.rows[i].friction_dimensions)
+            {
+                total = total.plus(frame.rows[i].directions[k].scaled(*pk));
+            }
+        }
+        struck(body, state, &frame, total, time)
+    };
+    // Newton's law with e_T ≠ e can raise the energy (Kane's paradox: the
+    // friction impulse along the slip before the impact, when the impact
+    // reverses the slip); with e_T = e at every participant it cannot
+    // (with γ⁺ = γ⁻ + G P and ξ = γ⁺ + e γ⁻ in every component,
+    // ΔT = ½ Pᵀ(γ⁺ + γ⁻) = (ξᵀP − ½ (1 − e) Pᵀ G P)/(1 + e) ≤ 0, as ξᵀP ≤ 0
+    // on the friction cone; Glocker, "Energetic consistency conditions for
+    // standard impacts", Multibody Syst. Dyn. 2013). Where the law as given
+    // would gain, the impact takes e_T = e.
+    let consistent: Vec<(f64, f64)> = coefficients.iter().map(|&(e, _)| (e, e)).collect();
+    let after = match solve(&coefficients) {
+        Err(DynamicsError::ImpactGainsEnergy { .. }) if consistent != coefficients => {
+            solve(&consistent)?
+        }
+        outcome => outcome?,
+    };
     let speeds = participants
         .iter()
         .map(|&i| {

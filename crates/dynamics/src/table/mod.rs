@@ -34,8 +34,10 @@
 //!
 //! and at an impact (a contact closing with speed) Newton's law with
 //! friction on the impulses ([`ContactLaw`] has the formulas). The energy
-//! never rises: friction dissipates `μ N |γ_T|`, the impact law is checked
-//! (a gain is [`crate::DynamicsError::ImpactGainsEnergy`]), a contact that
+//! never rises: friction dissipates `μ N |γ_T|`, an impact that Newton's
+//! law with `e_T ≠ e` would make gain energy takes `e_T = e` (which cannot),
+//! every impact is checked (a gain is
+//! [`crate::DynamicsError::ImpactGainsEnergy`]), a contact that
 //! starts to stick loses its residual slip by a dissipative impulse.
 //!
 //! # Disks: rim, face and air
