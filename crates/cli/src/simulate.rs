@@ -226,7 +226,8 @@ Output (CSV; standard output unless --output):
   --events FILE writes the events of the bodies on the table, in time order:
   time,body,contact,kind,approach_speed,rebound_speed,accumulation_time
   (contact: the [[body.contact]] table's number, empty for the whole body;
-  kind: impact, impacts_accumulate, touchdown, lift_off, stick, slip, rest;
+  kind: impact, impacts_accumulate, touchdown, lift_off, stick, slip,
+  stops_rolling, starts_rolling, lands_flat, rest;
   the speeds, m/s, for an impact, accumulation_time, s, where the bounces
   end); written whole with the CSV, or not at all.
   Rows at t = 0, after every step that ends at a multiple of output_interval
