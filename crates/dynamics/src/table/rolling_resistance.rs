@@ -159,8 +159,8 @@ fn rolling_cone(
         let mut x = [-y0[0], -y0[1]];
         solve_in_place(&mut a, &mut x, 2).then(|| DVec3::new(x[0], x[1], 0.0))
     };
-    let unsolved = DynamicsError::ContactUnsolved { time: f64::NAN };
-    let hold = torque(0.0).ok_or(unsolved.clone())?;
+    let unsolved = || DynamicsError::ContactUnsolved { time: f64::NAN };
+    let hold = torque(0.0).ok_or_else(unsolved)?;
     if hold.length() <= n * (1.0 + 1e-12) {
         return Ok(hold);
     }
@@ -170,14 +170,14 @@ fn rolling_cone(
         if mid <= lo || mid >= hi {
             break;
         }
-        if torque(mid).ok_or(unsolved.clone())?.length() > n {
+        if torque(mid).ok_or_else(unsolved)?.length() > n {
             lo = mid;
         } else {
             hi = mid;
         }
     }
     // On the edge exactly: the direction of x(λ), the length n.
-    Ok(torque(hi).ok_or(unsolved)?.normalize() * n)
+    Ok(torque(hi).ok_or_else(unsolved)?.normalize() * n)
 }
 
 #[cfg(test)]

@@ -960,11 +960,7 @@ impl TableMotion {
             };
         }
         self.face = Some(face);
-        self.events.push(TableEvent {
-            time: self.time,
-            contact: Some(i),
-            kind: TableEventKind::LandsFlat,
-        });
+        self.record(Some(i), TableEventKind::LandsFlat);
         Ok(true)
     }
 
@@ -991,30 +987,42 @@ impl TableMotion {
         let mut rebound = 0.0;
         for &(c, approach_speed, rebound_speed, _) in &outcome.speeds {
             rebound = rebound_speed;
-            self.events.push(TableEvent {
-                time: self.time,
-                contact: Some(c),
-                kind: TableEventKind::Impact {
+            self.record(
+                Some(c),
+                TableEventKind::Impact {
                     approach_speed,
                     rebound_speed,
                 },
-            });
+            );
         }
-        for &(c, tau) in &outcome.accumulations {
-            self.accumulation = self.accumulation.max(self.time + tau);
-            self.events.push(TableEvent {
-                time: self.time,
-                contact: Some(c),
-                kind: TableEventKind::ImpactsAccumulate {
-                    accumulation_time: self.time + tau,
-                },
-            });
-        }
+        self.record_accumulations(&outcome.accumulations);
         self.flight = None;
         self.current = self
             .snapshot(outcome.state, self.time)
             .map_err(|e| at_time(e, self.time))?;
         Ok(Some(rebound <= self.resolution_speed()))
+    }
+
+    /// Records an event of `contact` (`None`: the body) now.
+    fn record(&mut self, contact: Option<usize>, kind: TableEventKind) {
+        self.events.push(TableEvent {
+            time: self.time,
+            contact,
+            kind,
+        });
+    }
+
+    /// Records the accumulations of an impact's bounces, `(contact, τ)`:
+    /// each at `t + τ`, the body resting no earlier than the latest.
+    fn record_accumulations(&mut self, accumulations: &[(usize, f64)]) {
+        for &(i, tau) in accumulations {
+            self.accumulation = self.accumulation.max(self.time + tau);
+            let accumulation_time = self.time + tau;
+            self.record(
+                Some(i),
+                TableEventKind::ImpactsAccumulate { accumulation_time },
+            );
+        }
     }
 
     /// At an event (or the start): impacts where a contact approaches,
@@ -1061,26 +1069,16 @@ impl TableMotion {
                 let flipped = flipping == Some(i);
                 if (was_open || flipped) && approached && approach > v_res {
                     struck[i] = true;
-                    self.events.push(TableEvent {
-                        time: self.time,
-                        contact: Some(i),
-                        kind: TableEventKind::Impact {
+                    self.record(
+                        Some(i),
+                        TableEventKind::Impact {
                             approach_speed: approach,
                             rebound_speed: rebound,
                         },
-                    });
+                    );
                 }
             }
-            for &(i, tau) in &outcome.accumulations {
-                self.accumulation = self.accumulation.max(self.time + tau);
-                self.events.push(TableEvent {
-                    time: self.time,
-                    contact: Some(i),
-                    kind: TableEventKind::ImpactsAccumulate {
-                        accumulation_time: self.time + tau,
-                    },
-                });
-            }
+            self.record_accumulations(&outcome.accumulations);
             // Modes are chosen below; the snapshot is refreshed there.
             self.current.state = outcome.state;
             self.current.frame = ContactFrame::of(&self.body, &outcome.state, self.time);
@@ -1123,22 +1121,14 @@ impl TableMotion {
                     ContactMode::Open => None,
                 };
                 if let Some(kind) = kind {
-                    self.events.push(TableEvent {
-                        time: self.time,
-                        contact: Some(i),
-                        kind,
-                    });
+                    self.record(Some(i), kind);
                 }
             }
             if new.mode == ContactMode::Open && old.mode != ContactMode::Open {
                 self.accumulation = f64::NEG_INFINITY;
             }
             if let Some(kind) = kind {
-                self.events.push(TableEvent {
-                    time: self.time,
-                    contact: Some(i),
-                    kind,
-                });
+                self.record(Some(i), kind);
             }
         }
         self.current = self
