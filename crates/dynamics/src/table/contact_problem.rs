@@ -23,13 +23,21 @@
 //! sticking if its force lies in the cone, else slipping on the cone's
 //! boundary with the direction found by Newton's method
 //! ([`super::slip_onset`]; a damped fixed point, then the projected
-//! iteration, where it does not settle).
+//! iteration, where it does not settle). The sweeps have settled when the
+//! unknowns stop moving or move only along the null space of `G`
+//! (contacts that overconstrain the body); where they converge slowly the
+//! modes they show are finished exactly ([`super::active_set`]).
+//! Between events, the forces of contacts that overconstrain the body are
+//! those deepest inside the cones ([`super::force_distribution`]): the
+//! accelerations do not depend on that choice, the end of sticking does.
 
 use glam::DVec3;
 
 use super::TableBody;
+use super::active_set::finish;
 use super::contact_frame::{ContactFrame, ROLLING, Wrench};
-use super::dense::solve_in_place;
+use super::dense::{solve_in_place, solve_with_null_space};
+use super::force_distribution::{Cone, largest_margin};
 use super::slip_onset::slip_onset;
 use crate::DynamicsError;
 
@@ -128,7 +136,9 @@ fn indeterminate(compliance: f64) -> DynamicsError {
 /// # Errors
 /// [`DynamicsError::ContactIndeterminate`] (its time NaN: the caller
 /// knows it) when a slipping contact's normal coefficient
-/// `w_Nᵀ M⁻¹ (w_N − μ W_T d)` is not positive or the system is singular.
+/// `w_Nᵀ M⁻¹ (w_N − μ W_T d)` is not positive or the system has an entry
+/// that is not finite. A singular system (contacts that overconstrain the
+/// body) is solved with the forces of the largest margin.
 pub(crate) fn mode_forces(
     frame: &ContactFrame,
     modes: &[Mode],
@@ -202,14 +212,22 @@ pub(crate) fn mode_forces(
         }
     }
     let n = rhs.len();
-    let mut a = vec![0.0; n * n];
-    for (r, row) in rows.iter().enumerate() {
-        for (k, col) in cols.iter().enumerate() {
-            a[r * n + k] = frame.delassus(row, col);
+    let matrix = || {
+        let mut a = vec![0.0; n * n];
+        for (r, row) in rows.iter().enumerate() {
+            for (k, col) in cols.iter().enumerate() {
+                a[r * n + k] = frame.delassus(row, col);
+            }
         }
-    }
-    if !solve_in_place(&mut a, &mut rhs, n) {
-        return Err(indeterminate(0.0));
+        a
+    };
+    let b = rhs.clone();
+    if !solve_in_place(&mut matrix(), &mut rhs, n) {
+        // Contacts that overconstrain the body: the accelerations are
+        // unique, the forces are taken deepest inside the cones.
+        let (x0, null) =
+            solve_with_null_space(&mut matrix(), &b, n).ok_or_else(|| indeterminate(0.0))?;
+        rhs = largest_margin(&x0, &null, &cones_of(&owner, frame, modes)).0;
     }
     let mut total = Wrench::default();
     let mut out = ModeForces {
@@ -244,6 +262,46 @@ pub(crate) fn mode_forces(
     Ok(out)
 }
 
+/// The cones of the closed contacts over the unknowns `owner` ((contact,
+/// component) of each) of a mode system: each normal, the friction of
+/// each sticking contact, the rolling of each holding one.
+fn cones_of(owner: &[(usize, usize)], frame: &ContactFrame, modes: &[Mode]) -> Vec<Cone> {
+    let index = |i: usize, c: usize| owner.iter().position(|&o| o == (i, c));
+    let mut cones = Vec::new();
+    for (i, mode) in modes.iter().enumerate() {
+        let Some(normal) = index(i, 0) else {
+            continue;
+        };
+        let row = &frame.rows[i];
+        let mut cone = Cone {
+            normal,
+            bounded: [0; 3],
+            count: 0,
+            factor: row.mu,
+        };
+        if mode.mode == ContactMode::Sticking {
+            for c in 0..row.friction_dimensions {
+                cone.bounded[c] = index(i, 1 + c).unwrap_or(normal);
+            }
+            cone.count = row.friction_dimensions;
+        }
+        cones.push(cone);
+        if row.rolls && mode.roll == ContactMode::Sticking {
+            cones.push(Cone {
+                normal,
+                bounded: [
+                    index(i, ROLLING[0]).unwrap_or(normal),
+                    index(i, ROLLING[1]).unwrap_or(normal),
+                    0,
+                ],
+                count: 2,
+                factor: 1.0,
+            });
+        }
+    }
+    cones
+}
+
 /// One contact's share of a set-valued problem: its Delassus block and
 /// its law.
 #[derive(Debug, Clone, Copy)]
@@ -259,6 +317,15 @@ pub(crate) struct Block {
 /// The relative change of the unknowns below which block Gauss–Seidel
 /// stops.
 pub(crate) const SWEEP_TOLERANCE: f64 = 1e-15;
+
+/// The change of the accelerations `G Δx` over a sweep, relative to
+/// `max G_ii · max |x|`, below which the sweeps have settled while the
+/// unknowns still move (along the null space of `G`).
+pub(crate) const NULL_TOLERANCE: f64 = 1e-14;
+
+/// How many sweeps between two tries to finish the problem from the
+/// sweeps' modes ([`finish`]).
+const FINISH_EVERY: usize = 50;
 
 /// The most sweeps (and slip-direction iterations) before the problem is
 /// called unsolved.
@@ -281,7 +348,11 @@ pub(crate) fn solve_blocks(
 ) -> Result<Vec<[f64; 4]>, DynamicsError> {
     let m = blocks.len();
     let mut x = vec![[0.0; 4]; m];
-    for _sweep in 0..MAX_SWEEPS {
+    let g_scale = (0..m)
+        .flat_map(|i| (0..blocks[i].size).map(move |a| (i, a)))
+        .fold(0.0_f64, |s, (i, a)| s.max(g(i, a, i, a).abs()));
+    for sweep in 0..MAX_SWEEPS {
+        let before = x.clone();
         let mut change: f64 = 0.0;
         let mut size: f64 = 0.0;
         for i in 0..m {
@@ -311,6 +382,30 @@ pub(crate) fn solve_blocks(
             x[i] = xi;
         }
         if m == 1 || change <= SWEEP_TOLERANCE * size {
+            return Ok(x);
+        }
+        // The sweep moved the unknowns only along the null space of G
+        // (several sticking contacts overconstrain the body: their forces
+        // are not unique, the accelerations are): settled.
+        let mut moved: f64 = 0.0;
+        for i in 0..m {
+            for a in 0..blocks[i].size {
+                let mut dy = 0.0;
+                for j in 0..m {
+                    for b in 0..blocks[j].size {
+                        dy += g(i, a, j, b) * (x[j][b] - before[j][b]);
+                    }
+                }
+                moved = moved.max(dy.abs());
+            }
+        }
+        if moved <= NULL_TOLERANCE * g_scale * size {
+            return Ok(x);
+        }
+        // Slow sweeps: the modes they show, finished exactly.
+        if sweep % FINISH_EVERY == FINISH_EVERY - 1
+            && let Some(x) = finish(blocks, y_free, g, &x)
+        {
             return Ok(x);
         }
     }

@@ -63,12 +63,14 @@
 //! and air layers
 //! act beside the contacts (the flight is then integrated).
 
+mod active_set;
 mod air_layer;
 mod contact_frame;
 mod contact_law;
 mod contact_problem;
 mod dense;
 mod face;
+mod force_distribution;
 mod impact;
 mod rolling_resistance;
 mod slip_onset;
