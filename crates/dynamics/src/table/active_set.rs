@@ -82,9 +82,11 @@ pub(crate) fn finish(
             if let Guess::Slipping(d) = guess {
                 let t = DVec3::new(y[k][1], y[k][2], y[k][3]);
                 if blocks[k].slipping.is_none() && t.length() > SLACK * y_scale {
+                    // Damped: the plain fixed point may alternate
+                    // between two directions.
                     let next = t.normalize();
                     moved = moved.max((next - *d).length());
-                    *d = next;
+                    *d = (*d + next).normalize_or(next);
                 }
             }
         }
