@@ -4,8 +4,8 @@
 
 use glam::{DMat3, DQuat, DVec3};
 use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactMode, ContactShape, EllipsoidContact, GroundTopState,
-    TableBody, TableContact, TableEventKind, TableMotion,
+    AdaptiveTolerance, ContactLaw, ContactMode, ContactShape, DiskContact, DynamicsError,
+    EllipsoidContact, GroundTopState, TableBody, TableContact, TableEventKind, TableMotion,
 };
 
 mod common;
@@ -244,4 +244,88 @@ fn an_impact_that_newtons_law_would_make_gain_energy_takes_e_t_equal_to_e() {
         "{:?}",
         run.events()
     );
+}
+
+/// An ellipsoid and a disk rim (with a tiny Contensou patch and a rolling
+/// resistance) settling after a throw: at 0.5482 s the decision sticks
+/// the ellipsoid and the predicates end that stick 3e-13 s later, over
+/// and over, the modes unchanged — the run crept on by 1e-13 s per event
+/// and never returned. It now stops with a typed error at that instant.
+#[test]
+fn events_that_creep_without_changing_a_mode_end_in_a_typed_error() {
+    let ellipsoid = EllipsoidContact::try_new(
+        DVec3::new(
+            0.04468821685132768,
+            0.030986565487188186,
+            0.019607773375010892,
+        ),
+        DVec3::new(
+            0.0007225220826804086,
+            -0.006644287737735455,
+            0.007889579160009708,
+        ),
+    )
+    .unwrap();
+    let rim = DiskContact::try_new(
+        0.043398245838990934,
+        DVec3::new(
+            0.0005808043970899834,
+            -0.001391527349684984,
+            0.0003151751942393154,
+        ),
+        DVec3::new(-0.20752330275602807, 0.9293230530732978, 0.3054386056800195),
+    )
+    .unwrap();
+    let contacts = vec![
+        TableContact {
+            shape: ContactShape::Ellipsoid(ellipsoid),
+            law: ContactLaw::try_new(0.19441052579657297)
+                .and_then(|l| l.try_with_restitution(0.5764538293426642))
+                .and_then(|l| l.try_with_contensou_radius(3.7693721517226277e-6))
+                .unwrap(),
+        },
+        TableContact {
+            shape: ContactShape::Disk(rim),
+            law: ContactLaw::try_new(0.17804774714534832)
+                .and_then(|l| l.try_with_restitution(0.2637423474316566))
+                .and_then(|l| l.try_with_contensou_radius(0.0012938500381888896))
+                .and_then(|l| l.try_with_rolling_resistance(0.0004162120290844527))
+                .unwrap(),
+        },
+    ];
+    let inertia = DMat3::from_diagonal(DVec3::new(
+        0.0003519742458706319,
+        0.00038095890959413594,
+        0.00038163974523758857,
+    ));
+    let body = TableBody::try_new(0.9261924496479546, inertia, contacts, 9.81).unwrap();
+    let start = GroundTopState {
+        com_world: DVec3::new(0.0, 0.0, 0.06516259322385515),
+        velocity_world: DVec3::new(
+            0.36285971450506577,
+            -0.1783297952395001,
+            0.022423903780674746,
+        ),
+        world_from_body: DQuat::from_xyzw(
+            0.025567897268095878,
+            -0.1485542779045339,
+            -0.007979152583442286,
+            0.9885414722051882,
+        ),
+        l_world: DVec3::new(
+            0.002919017927771097,
+            -0.00869997114676425,
+            -0.00026352322098158155,
+        ),
+    };
+    let mut run = TableMotion::try_new(body, start, AdaptiveTolerance::new(1e-10, 1e-10)).unwrap();
+    match run.try_advance_to(0.6) {
+        Err(DynamicsError::ContactModesChatter { time, count }) => {
+            assert!(
+                (time - 0.5482).abs() < 1e-3 && count > 1000,
+                "{time} {count}"
+            );
+        }
+        other => panic!("{other:?} at {}", run.time()),
+    }
 }

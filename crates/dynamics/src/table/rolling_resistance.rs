@@ -20,7 +20,7 @@
 use glam::DVec3;
 
 use super::contact_frame::{ContactFrame, ROLLING};
-use super::contact_problem::{Block, MAX_SWEEPS, solve_blocks};
+use super::contact_problem::{Block, solve_blocks};
 
 /// The relative change of the forces below which the sweeps between the
 /// contacts' problem and the rolling cones stop: each sweep re-solves the
@@ -29,6 +29,12 @@ use super::contact_problem::{Block, MAX_SWEEPS, solve_blocks};
 /// rolling resistance, settled at changes of 4e-15 of the forces and never
 /// below 1e-15: `ContactUnsolved`).
 const OUTER_TOLERANCE: f64 = 1e-13;
+
+/// The most sweeps between the contacts and the rolling cones: each
+/// solves the contacts' problem whole, so a problem that does not settle
+/// in these (contacts that overconstrain the body with their rolling
+/// held) is unsolved, not a hang of millions of sweeps.
+const OUTER_SWEEPS: usize = 200;
 use super::dense::solve_in_place;
 use crate::DynamicsError;
 
@@ -77,7 +83,7 @@ pub(crate) fn solve_with_rolling(
             .map(|(b, c, r)| g(a, ca, b, r) * x_r[b][c])
             .sum()
     };
-    for _ in 0..MAX_SWEEPS {
+    for _ in 0..OUTER_SWEEPS {
         let shifted: Vec<[f64; 4]> = (0..m)
             .map(|a| {
                 let mut y = y_free[a];

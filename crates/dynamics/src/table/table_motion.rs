@@ -102,6 +102,17 @@ const MIN_STEP_RELATIVE: f64 = 1e-14;
 /// Events in a row at one instant before the modes are called chattering.
 const MAX_EVENTS_IN_PLACE: usize = 64;
 
+/// How many events in a row, each within [`CREEP`] of the last and each
+/// leaving the modes as they were, make a chatter: the decision and the
+/// predicates disagree (a decision on the cone's edge), and the run would
+/// creep on by 1e-13 s per event forever (a random throw took 10⁵ such
+/// events per second of wall time).
+const MAX_CREEPING_EVENTS: usize = 1000;
+
+/// The step, relative to the time scale, below which an event that
+/// changes no mode counts towards [`MAX_CREEPING_EVENTS`].
+const CREEP: f64 = 1e-10;
+
 /// The time derivative of a state.
 #[derive(Debug, Clone, Copy)]
 struct Derivative {
@@ -527,6 +538,7 @@ impl TableMotion {
             });
         }
         let mut in_place = 0;
+        let mut creeping = 0;
         // When the modes were last decided afresh for a step too small.
         let mut afresh_at = f64::NAN;
         while self.time < t_end {
@@ -644,7 +656,21 @@ impl TableMotion {
                     });
                 }
                 let before = self.events.len();
+                let kinds =
+                    |modes: &[Mode]| -> Vec<_> { modes.iter().map(|m| (m.mode, m.roll)).collect() };
+                let modes = kinds(&self.modes);
                 self.settle()?;
+                creeping = if tau < CREEP * self.time_scale && kinds(&self.modes) == modes {
+                    creeping + 1
+                } else {
+                    0
+                };
+                if creeping > MAX_CREEPING_EVENTS {
+                    return Err(DynamicsError::ContactModesChatter {
+                        time: self.time,
+                        count: creeping,
+                    });
+                }
                 if stop_at_event && self.events.len() > before {
                     return Ok(true);
                 }
