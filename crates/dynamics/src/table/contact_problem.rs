@@ -346,8 +346,21 @@ pub(crate) fn solve_blocks(
     y_free: &[[f64; 4]],
     g: &dyn Fn(usize, usize, usize, usize) -> f64,
 ) -> Result<Vec<[f64; 4]>, DynamicsError> {
+    solve_blocks_from(blocks, y_free, g, vec![[0.0; 4]; blocks.len()])
+}
+
+/// [`solve_blocks`] from the unknowns `x` (a warm start: the previous
+/// solution of a problem that changed a little).
+///
+/// # Errors
+/// Those of [`solve_blocks`].
+pub(crate) fn solve_blocks_from(
+    blocks: &[Block],
+    y_free: &[[f64; 4]],
+    g: &dyn Fn(usize, usize, usize, usize) -> f64,
+    mut x: Vec<[f64; 4]>,
+) -> Result<Vec<[f64; 4]>, DynamicsError> {
     let m = blocks.len();
-    let mut x = vec![[0.0; 4]; m];
     let g_scale = (0..m)
         .flat_map(|i| (0..blocks[i].size).map(move |a| (i, a)))
         .fold(0.0_f64, |s, (i, a)| s.max(g(i, a, i, a).abs()));

@@ -20,7 +20,7 @@
 use glam::DVec3;
 
 use super::contact_frame::{ContactFrame, ROLLING};
-use super::contact_problem::{Block, solve_blocks};
+use super::contact_problem::{Block, solve_blocks, solve_blocks_from};
 
 /// The relative change of the forces below which the sweeps between the
 /// contacts' problem and the rolling cones stop: each sweep re-solves the
@@ -83,6 +83,7 @@ pub(crate) fn solve_with_rolling(
             .map(|(b, c, r)| g(a, ca, b, r) * x_r[b][c])
             .sum()
     };
+    let mut x = vec![[0.0; 4]; m];
     for _ in 0..OUTER_SWEEPS {
         let shifted: Vec<[f64; 4]> = (0..m)
             .map(|a| {
@@ -93,7 +94,9 @@ pub(crate) fn solve_with_rolling(
                 y
             })
             .collect();
-        let x = solve_blocks(blocks, &shifted, &g)?;
+        // From the last sweep's solution: the rolling torques moved it a
+        // little.
+        x = solve_blocks_from(blocks, &shifted, &g, x)?;
         let (mut change, mut size) = (0.0_f64, 0.0_f64);
         for a in 0..m {
             if rolling[a] == Rolling::Free {

@@ -102,16 +102,16 @@ const MIN_STEP_RELATIVE: f64 = 1e-14;
 /// Events in a row at one instant before the modes are called chattering.
 const MAX_EVENTS_IN_PLACE: usize = 64;
 
-/// How many events in a row, each within [`CREEP`] of the last and each
-/// leaving the modes as they were, make a chatter: the decision and the
-/// predicates disagree (a decision on the cone's edge), and the run would
-/// creep on by 1e-13 s per event forever (a random throw took 10⁵ such
-/// events per second of wall time).
+/// How many events within [`CREEP`] of time, each leaving the modes as
+/// they were, make a chatter: the decision and the predicates disagree (a
+/// decision on the cone's edge, or two slips starting in directions that
+/// do not agree), and the run would creep on by 1e-13 s per event for
+/// ever (a random throw took 10⁵ such events per second of wall time).
 const MAX_CREEPING_EVENTS: usize = 1000;
 
-/// The step, relative to the time scale, below which an event that
-/// changes no mode counts towards [`MAX_CREEPING_EVENTS`].
-const CREEP: f64 = 1e-10;
+/// The span of time, relative to the time scale, within which
+/// [`MAX_CREEPING_EVENTS`] make a chatter.
+const CREEP: f64 = 1e-8;
 
 /// The time derivative of a state.
 #[derive(Debug, Clone, Copy)]
@@ -538,7 +538,8 @@ impl TableMotion {
             });
         }
         let mut in_place = 0;
-        let mut creeping = 0;
+        // Events in a row that changed no mode, and when the first was.
+        let (mut creeping, mut creep_start) = (0, f64::NAN);
         // When the modes were last decided afresh for a step too small.
         let mut afresh_at = f64::NAN;
         while self.time < t_end {
@@ -660,11 +661,12 @@ impl TableMotion {
                     |modes: &[Mode]| -> Vec<_> { modes.iter().map(|m| (m.mode, m.roll)).collect() };
                 let modes = kinds(&self.modes);
                 self.settle()?;
-                creeping = if tau < CREEP * self.time_scale && kinds(&self.modes) == modes {
-                    creeping + 1
+                if kinds(&self.modes) == modes && self.time - creep_start < CREEP * self.time_scale
+                {
+                    creeping += 1;
                 } else {
-                    0
-                };
+                    (creeping, creep_start) = (0, self.time);
+                }
                 if creeping > MAX_CREEPING_EVENTS {
                     return Err(DynamicsError::ContactModesChatter {
                         time: self.time,
