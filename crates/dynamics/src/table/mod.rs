@@ -40,6 +40,18 @@
 //! [`crate::DynamicsError::ImpactGainsEnergy`]), a contact that
 //! starts to stick loses its residual slip by a dissipative impulse.
 //!
+//! # Contacts that overconstrain the body
+//! Two sticking contacts (a dumbbell on both feet, a body pivoting about
+//! the line through two contact points) fix fewer freedoms than they have
+//! force components: the motion is unique, the forces are not. The mode
+//! system is then solved by complete pivoting (its least-norm solution and
+//! null space) and the forces taken deepest inside the cones
+//! (`force_distribution`, a barrier method on the margin): sticking ends
+//! where no admissible distribution is left. At events, block
+//! Gauss–Seidel has settled once its sweeps move only along that null
+//! space; where it converges slowly, the modes it shows are solved exactly
+//! and checked (`active_set`).
+//!
 //! # Disks: rim, face and air
 //! A disk rim that reaches flat (its axis within [`DISK_FLAT_TILT`] of the
 //! vertical) while touching either rocks on through flat — its far rim
@@ -56,7 +68,10 @@
 //!
 //! # What it does not do (yet)
 //! The rolling resistance acts between impacts, not in them (its impulse
-//! would be at most `δ P_N`). Inputs
+//! would be at most `δ P_N`). Two contacts that start to slip together
+//! decide their directions by Gauss–Seidel over the contacts, which may
+//! not settle (`ContactUnsolved`); some throws with two contacts run
+//! slowly (the scan of random throws in `BENCHMARKS.md` counts them). Inputs
 //! are not followed on a face ([`crate::DynamicsError::DiskFlat`]). Free
 //! flight is exact (parabola and the torque-free
 //! [`crate::ExactSolution`]); applied inputs ([`TableBody::try_with_inputs`])
