@@ -84,7 +84,11 @@ pub const DISK_FLAT_TILT: f64 = 1e-6;
 ///
 /// — `SLIP_BAND` at the default rtol 10⁻¹⁰ and above (a wider band at a
 /// looser tolerance moved the thrown ellipsoid's events at rtol 10⁻⁸ by
-/// 1.8·10⁻⁷ s against 2.9·10⁻⁸ s with this one).
+/// 1.8·10⁻⁷ s against 2.9·10⁻⁸ s with this one). Over the band's outer
+/// half the direction passes over from the slip's own to the kept one,
+/// so the friction is continuous at the edge (a slip hovering there
+/// while its direction turned made the right-hand side jump, and the
+/// error control took steps of 10⁻⁹ s).
 pub const SLIP_BAND: f64 = 1e-6;
 
 /// The speed, relative to the body's speed scale, below which a disk
@@ -538,8 +542,8 @@ impl TableMotion {
             });
         }
         let mut in_place = 0;
-        // Events in a row that changed no mode, and when the first was.
-        let (mut creeping, mut creep_start) = (0, f64::NAN);
+        // Decisions in a row that changed no mode, and when the first was.
+        let mut creep = (0, f64::NAN);
         // When the modes were last decided afresh for a step too small.
         let mut afresh_at = f64::NAN;
         while self.time < t_end {
@@ -657,22 +661,7 @@ impl TableMotion {
                     });
                 }
                 let before = self.events.len();
-                let kinds =
-                    |modes: &[Mode]| -> Vec<_> { modes.iter().map(|m| (m.mode, m.roll)).collect() };
-                let modes = kinds(&self.modes);
-                self.settle()?;
-                if kinds(&self.modes) == modes && self.time - creep_start < CREEP * self.time_scale
-                {
-                    creeping += 1;
-                } else {
-                    (creeping, creep_start) = (0, self.time);
-                }
-                if creeping > MAX_CREEPING_EVENTS {
-                    return Err(DynamicsError::ContactModesChatter {
-                        time: self.time,
-                        count: creeping,
-                    });
-                }
+                self.settle_creeping(&mut creep)?;
                 if stop_at_event && self.events.len() > before {
                     return Ok(true);
                 }
@@ -689,7 +678,7 @@ impl TableMotion {
                 // A slip that has fallen into the resolution band (without
                 // reversing) is decided again: stick where the cone holds.
                 let before = self.events.len();
-                self.settle()?;
+                self.settle_creeping(&mut creep)?;
                 if stop_at_event && self.events.len() > before {
                     return Ok(true);
                 }
@@ -699,6 +688,31 @@ impl TableMotion {
             }
         }
         Ok(false)
+    }
+
+    /// [`TableMotion::settle`], counting in `creep` (how many, since
+    /// when) the decisions in a row that leave every mode as it was.
+    ///
+    /// # Errors
+    /// Those of [`TableMotion::settle`]; [`DynamicsError::ContactModesChatter`]
+    /// past [`MAX_CREEPING_EVENTS`] such decisions within [`CREEP`] of the
+    /// time scale.
+    fn settle_creeping(&mut self, creep: &mut (usize, f64)) -> Result<(), DynamicsError> {
+        let kinds = |modes: &[Mode]| -> Vec<_> { modes.iter().map(|m| (m.mode, m.roll)).collect() };
+        let before = kinds(&self.modes);
+        self.settle()?;
+        if kinds(&self.modes) == before && self.time - creep.1 < CREEP * self.time_scale {
+            creep.0 += 1;
+        } else {
+            *creep = (0, self.time);
+        }
+        if creep.0 > MAX_CREEPING_EVENTS {
+            return Err(DynamicsError::ContactModesChatter {
+                time: self.time,
+                count: creep.0,
+            });
+        }
+        Ok(())
     }
 
     /// The modes decided afresh (no contact kept slipping along its slip)
