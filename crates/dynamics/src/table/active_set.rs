@@ -22,7 +22,7 @@
 
 use glam::DVec3;
 
-use super::contact_problem::Block;
+use super::contact_problem::{Block, add_delassus_product};
 use super::dense::solve_with_null_space;
 use super::force_distribution::{Cone, largest_margin};
 
@@ -70,13 +70,13 @@ pub(crate) fn finish(
             }
         })
         .collect();
+    let y_scale = y_free.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
     for _ in 0..100 {
         let solved = solve_guess(blocks, y_free, g, &guesses)?;
         let y = accelerations(blocks, y_free, g, &solved);
         // Settle the free slip directions (those the problem decides;
         // a slip that only starts, its acceleration at rounding, keeps
         // the direction opposite its force).
-        let y_scale = y_free.iter().flatten().fold(0.0_f64, |m, v| m.max(v.abs()));
         let mut moved: f64 = 0.0;
         for (k, guess) in guesses.iter_mut().enumerate() {
             if let Guess::Slipping(d) = guess {
@@ -105,15 +105,7 @@ fn accelerations(
     x: &[[f64; 4]],
 ) -> Vec<[f64; 4]> {
     let mut y = y_free.to_vec();
-    for (i, yi) in y.iter_mut().enumerate() {
-        for (a, v) in yi.iter_mut().enumerate().take(blocks[i].size) {
-            for (j, xj) in x.iter().enumerate() {
-                for (b, xb) in xj.iter().enumerate().take(blocks[j].size) {
-                    *v += g(i, a, j, b) * xb;
-                }
-            }
-        }
-    }
+    add_delassus_product(&mut y, blocks, g, x);
     y
 }
 

@@ -238,13 +238,17 @@ pub(crate) fn mode_forces(
         }
         a
     };
-    let b = rhs.clone();
     if !solve_in_place(&mut matrix(), &mut rhs, n) {
         // Contacts that overconstrain the body: the accelerations are
-        // unique, the forces are taken deepest inside the cones.
+        // unique, the forces are taken deepest inside the cones (the
+        // right-hand side built again: the failed solve consumed it).
+        let b: Vec<f64> = owner
+            .iter()
+            .map(|&(i, k)| -frame.rate(i, k, free))
+            .collect();
         let (x0, null) =
             solve_with_null_space(&mut matrix(), &b, n).ok_or_else(|| indeterminate(0.0))?;
-        rhs = largest_margin(&x0, &null, &cones_of(&owner, frame, modes)).0;
+        rhs = largest_margin(&x0, &null, &cones_of(&owner, frame)).0;
     }
     let mut total = Wrench::default();
     let mut out = ModeForces {
@@ -280,40 +284,37 @@ pub(crate) fn mode_forces(
 }
 
 /// The cones of the closed contacts over the unknowns `owner` ((contact,
-/// component) of each) of a mode system: each normal, the friction of
-/// each sticking contact, the rolling of each holding one.
-fn cones_of(owner: &[(usize, usize)], frame: &ContactFrame, modes: &[Mode]) -> Vec<Cone> {
-    let index = |i: usize, c: usize| owner.iter().position(|&o| o == (i, c));
-    let mut cones = Vec::new();
-    for (i, mode) in modes.iter().enumerate() {
-        let Some(normal) = index(i, 0) else {
-            continue;
-        };
-        let row = &frame.rows[i];
-        let mut cone = Cone {
-            normal,
-            bounded: [0; 3],
-            count: 0,
-            factor: row.mu,
-        };
-        if mode.mode == ContactMode::Sticking {
-            for c in 0..row.friction_dimensions {
-                cone.bounded[c] = index(i, 1 + c).unwrap_or(normal);
-            }
-            cone.count = row.friction_dimensions;
-        }
-        cones.push(cone);
-        if row.rolls && mode.roll == ContactMode::Sticking {
+/// component) of each, as [`mode_forces`] lays them out: each contact's
+/// normal, then its friction if it sticks, then its rolling if that
+/// holds): each normal, the friction of each sticking contact, the
+/// rolling of each holding one.
+fn cones_of(owner: &[(usize, usize)], frame: &ContactFrame) -> Vec<Cone> {
+    let mut cones: Vec<Cone> = Vec::new();
+    let mut normal = 0;
+    for (k, &(i, c)) in owner.iter().enumerate() {
+        if c == 0 {
+            normal = k;
             cones.push(Cone {
                 normal,
-                bounded: [
-                    index(i, ROLLING[0]).unwrap_or(normal),
-                    index(i, ROLLING[1]).unwrap_or(normal),
-                    0,
-                ],
+                bounded: [0; 3],
+                count: 0,
+                factor: frame.rows[i].mu,
+            });
+        } else if c == ROLLING[0] {
+            // Both rolling components follow each other.
+            cones.push(Cone {
+                normal,
+                bounded: [k, k + 1, 0],
                 count: 2,
                 factor: 1.0,
             });
+        } else if c < ROLLING[0]
+            // A friction component: its contact's cone is the last pushed
+            // (the normal comes first, the rolling after the friction).
+            && let Some(cone) = cones.last_mut()
+        {
+            cone.bounded[cone.count] = k;
+            cone.count += 1;
         }
     }
     cones
@@ -381,8 +382,11 @@ pub(crate) fn solve_blocks_from(
     let g_scale = (0..m)
         .flat_map(|i| (0..blocks[i].size).map(move |a| (i, a)))
         .fold(0.0_f64, |s, (i, a)| s.max(g(i, a, i, a).abs()));
+    // The unknowns before a sweep, then its change; and G times that.
+    let mut step = x.clone();
+    let mut moved_by = vec![[0.0; 4]; m];
     for sweep in 0..MAX_SWEEPS {
-        let before = x.clone();
+        step.copy_from_slice(&x);
         let mut change: f64 = 0.0;
         let mut size: f64 = 0.0;
         for i in 0..m {
@@ -417,18 +421,15 @@ pub(crate) fn solve_blocks_from(
         // The sweep moved the unknowns only along the null space of G
         // (several sticking contacts overconstrain the body: their forces
         // are not unique, the accelerations are): settled.
-        let mut moved: f64 = 0.0;
-        for i in 0..m {
-            for a in 0..blocks[i].size {
-                let mut dy = 0.0;
-                for j in 0..m {
-                    for b in 0..blocks[j].size {
-                        dy += g(i, a, j, b) * (x[j][b] - before[j][b]);
-                    }
-                }
-                moved = moved.max(dy.abs());
-            }
+        for (d, now) in step.iter_mut().zip(&x) {
+            d.iter_mut().zip(now).for_each(|(d, now)| *d = now - *d);
         }
+        moved_by.iter_mut().for_each(|y| *y = [0.0; 4]);
+        add_delassus_product(&mut moved_by, blocks, g, &step);
+        let moved = moved_by
+            .iter()
+            .flatten()
+            .fold(0.0_f64, |m, v| m.max(v.abs()));
         if moved <= NULL_TOLERANCE * g_scale * size {
             return Ok(x);
         }
@@ -440,6 +441,25 @@ pub(crate) fn solve_blocks_from(
         }
     }
     Err(unsolved())
+}
+
+/// `y += G x` over the blocks' components (`g(i, a, j, b)` the entry
+/// between component `a` of block `i` and component `b` of block `j`).
+pub(crate) fn add_delassus_product(
+    y: &mut [[f64; 4]],
+    blocks: &[Block],
+    g: &dyn Fn(usize, usize, usize, usize) -> f64,
+    x: &[[f64; 4]],
+) {
+    for (i, yi) in y.iter_mut().enumerate() {
+        for (a, v) in yi.iter_mut().enumerate().take(blocks[i].size) {
+            for (j, xj) in x.iter().enumerate() {
+                for (b, xb) in xj.iter().enumerate().take(blocks[j].size) {
+                    *v += g(i, a, j, b) * xb;
+                }
+            }
+        }
+    }
 }
 
 /// One block exactly: separation, sticking, or slipping on the cone (the

@@ -21,6 +21,8 @@ use glam::DVec3;
 
 use super::contact_frame::{ContactFrame, ROLLING};
 use super::contact_problem::{Block, solve_blocks, solve_blocks_from};
+use super::dense::solve_in_place;
+use crate::DynamicsError;
 
 /// The relative change of the forces below which the sweeps between the
 /// contacts' problem and the rolling cones stop: each sweep re-solves the
@@ -35,8 +37,6 @@ const OUTER_TOLERANCE: f64 = 1e-13;
 /// in these (contacts that overconstrain the body with their rolling
 /// held) is unsolved, not a hang of millions of sweeps.
 const OUTER_SWEEPS: usize = 200;
-use super::dense::solve_in_place;
-use crate::DynamicsError;
 
 /// What is known of a touching contact's rolling before the solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
