@@ -11,7 +11,7 @@
 //! ```
 //!
 //! With `TRACE` the case of that number alone, frame by frame: its body,
-//! start, steps, modes and events.
+//! start, steps, modes, events and state (a regression test's start).
 
 use std::collections::BTreeMap;
 use std::time::Instant;
@@ -181,12 +181,13 @@ fn main() {
                     if trace.is_some() {
                         let s = run.stats();
                         println!(
-                            "t {:.2}: {} steps, {} rejected, modes {:?}, events {:?}",
+                            "t {:.2}: {} steps, {} rejected, modes {:?}, events {:?}\n  state {:?}",
                             run.time(),
                             s.accepted,
                             s.rejected,
                             run.modes(),
-                            run.events().iter().rev().take(3).collect::<Vec<_>>()
+                            run.events().iter().rev().take(3).collect::<Vec<_>>(),
+                            run.state()
                         );
                     }
                     let now = run.body().energy(run.state());
@@ -202,6 +203,9 @@ fn main() {
                     }
                 }
                 rises += usize::from(rose);
+                if rose {
+                    end.push_str(", energy rose");
+                }
                 end
             }
         };

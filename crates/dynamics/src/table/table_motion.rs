@@ -1267,6 +1267,7 @@ impl TableMotion {
         }
         .map_err(|e| at_time(e, self.time))?;
         let mut modes = vec![Mode::OPEN; self.modes.len()];
+        let mut on_edge = Vec::new();
         for (k, &i) in touching.iter().enumerate() {
             let (xi, block) = (&x[k], &blocks[k]);
             if xi[0].is_nan() || xi[0] <= 0.0 {
@@ -1296,8 +1297,40 @@ impl TableMotion {
                 roll,
                 roll_direction,
             };
+            if block.slipping.is_none() && block.size > 1 && mode == ContactMode::Slipping {
+                on_edge.push(i);
+            }
         }
-        Ok(modes)
+        Ok(self.held_on_the_edge(modes, &on_edge))
+    }
+
+    /// `modes` with the contacts `on_edge` (the cone's solve left their
+    /// friction on the cone's edge) sticking, where the forces of those
+    /// modes keep every contact inside its cone: where contacts
+    /// overconstrain the body the forces are not unique, and the solve's
+    /// are one admissible distribution of many; the slip it reads off one
+    /// on the edge need not be the motion's (case 27 of the scan: its
+    /// direction flipped at every decision, each slip reversing at once).
+    fn held_on_the_edge(&self, modes: Vec<Mode>, on_edge: &[usize]) -> Vec<Mode> {
+        if on_edge.is_empty() {
+            return modes;
+        }
+        let mut held = modes.clone();
+        for &i in on_edge {
+            held[i].mode = ContactMode::Sticking;
+            held[i].direction = DVec3::ZERO;
+        }
+        let Ok(forces) = mode_forces(&self.current.frame, &held, self.band()) else {
+            return modes;
+        };
+        let admissible = held.iter().enumerate().all(|(i, m)| {
+            let (n, mu) = (forces.normal[i], self.current.frame.rows[i].mu);
+            m.mode == ContactMode::Open
+                || (n >= 0.0
+                    && (m.mode != ContactMode::Sticking || forces.friction[i].length() <= mu * n)
+                    && (m.roll != ContactMode::Sticking || forces.rolling[i].length() <= n))
+        });
+        if admissible { held } else { modes }
     }
 
     /// Rest: a closed contact, every closed contact sticking (or
@@ -1356,7 +1389,16 @@ enum Along {
 /// the slip has reversed (the contact may stick). A slip that has just
 /// started (`|γ_T(0)|` below `floor`, its direction the mode's) is
 /// measured from its start value, the residual the sticking phase left:
-/// that residual is not a reversal.
+/// that residual is not a reversal; nor is a change back by less than
+/// `floor`, which the resolution does not resolve (a slip starting on the
+/// cone's edge, its acceleration ~0, read the rounding of every step as a
+/// reversal: case 32 of the scan decided 10⁴ times per second of wall
+/// time, 10⁻⁹ s apart).
+///
+/// ```text
+/// |γ_T(0)| > floor:  γ_T(τ)·d₀
+/// otherwise:         c = (γ_T(τ) − γ_T(0))·d₀;  c if c ≥ 0, min(c + floor, 0) if c < 0
+/// ```
 fn progress(
     r0: &ContactRow,
     r1: &ContactRow,
@@ -1369,8 +1411,16 @@ fn progress(
         Along::Slip => (r0.slip(), r1.slip(), slip_direction(r0.slip(), mode, band)),
         Along::Roll => (r0.roll(), r1.roll(), roll_direction(r0.roll(), mode, band)),
     };
-    let residual = if s0.length() > floor { DVec3::ZERO } else { s0 };
-    (s1 - residual).dot(d0)
+    if s0.length() > floor {
+        s1.dot(d0)
+    } else {
+        let change = (s1 - s0).dot(d0);
+        if change < 0.0 {
+            (change + floor).min(0.0)
+        } else {
+            change
+        }
+    }
 }
 
 /// Whether a slip (or rolling rate) crossed the edge of the band within
@@ -1393,4 +1443,46 @@ fn dips_below(g0: f64, d0: f64, g1: f64, d1: f64, h: f64) -> bool {
             + (s3 - s2) * h * d1;
         value < floor
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::table::contact_frame::Wrench;
+
+    /// A contact row with three friction directions slipping at `slip`.
+    fn row(slip: f64) -> ContactRow {
+        ContactRow {
+            gap: 0.0,
+            friction_dimensions: 3,
+            rolls: false,
+            mu: 0.5,
+            directions: [Wrench::default(); 6],
+            velocity: [0.0, slip, 0.0, 0.0, 0.0, 0.0],
+            bias: [0.0; 6],
+        }
+    }
+
+    #[test]
+    fn a_slip_from_rest_reverses_only_beyond_the_resolution() {
+        let mode = Mode {
+            mode: ContactMode::Slipping,
+            direction: DVec3::X,
+            ..Mode::OPEN
+        };
+        let (floor, band) = (1e-9, 1e-6);
+        let along =
+            |s0: f64, s1: f64| progress(&row(s0), &row(s1), &mode, floor, band, Along::Slip);
+        // A slip started on the cone's edge (from 1e-14, the residual), its
+        // acceleration ~0: the rounding of a step is no reversal.
+        assert_eq!(along(1e-14, 1e-14 - 1e-17), 0.0);
+        assert_eq!(along(1e-14, 1e-14 - 0.9e-9), 0.0);
+        // Back beyond the resolution: reversed, continuous at its edge.
+        assert!((along(1e-14, 1e-14 - 3e-9) + 2e-9).abs() < 1e-22);
+        // Growing: its change from the residual.
+        assert!((along(1e-14, 1e-14 + 3e-9) - 3e-9).abs() < 1e-22);
+        // A resolved slip reverses at zero.
+        assert!(along(1e-8, -1e-15) < 0.0);
+        assert!(along(1e-8, 1e-15) > 0.0);
+    }
 }
