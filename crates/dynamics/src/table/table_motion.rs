@@ -613,7 +613,7 @@ impl TableMotion {
                     MIN_SHRINK
                 };
                 self.h = h * factor;
-                let slipping = self.slip_within(f64::INFINITY);
+                let slipping = self.slip_within(f64::INFINITY, None);
                 if self.h < min && slipping && afresh_at != self.time {
                     // No step holds a slip (near Painlevé's case for its
                     // direction, κ → 0⁺, the normal force without bound:
@@ -669,12 +669,12 @@ impl TableMotion {
             }
             in_place = 0;
             self.time = if last { t_end } else { self.time + h };
-            self.current = trial.end;
+            let start = std::mem::replace(&mut self.current, trial.end);
             self.hold_directions();
             if self.land_flat_disks()? && stop_at_event {
                 return Ok(true);
             }
-            if self.slip_within(self.resolution_speed()) {
+            if self.slip_within(self.resolution_speed(), Some(&start.frame)) {
                 // A slip that has fallen into the resolution band (without
                 // reversing) is decided again: stick where the cone holds.
                 let before = self.events.len();
@@ -803,17 +803,24 @@ impl TableMotion {
     /// Whether a slipping contact's slip lies within `floor` (m/s): within
     /// the resolution speed its direction is not resolved, and following it
     /// would chatter about the band's edge; within [`SLIP_BAND`] its
-    /// direction is held.
-    fn slip_within(&self, floor: f64) -> bool {
+    /// direction is held. With `from` (the frame a step started from):
+    /// whether it fell within `floor` in that step — a slip that started
+    /// within it and has not left it yet (one starting on the cone's edge,
+    /// its acceleration ~0) is not decided again at every step.
+    fn slip_within(&self, floor: f64, from: Option<&ContactFrame>) -> bool {
+        let fell = |now: DVec3, then: Option<DVec3>| {
+            now.length() <= floor && then.is_none_or(|then| then.length() > floor)
+        };
         self.modes.iter().enumerate().any(|(i, m)| {
             let row = &self.current.frame.rows[i];
+            let start = from.map(|f| &f.rows[i]);
             (m.mode == ContactMode::Slipping
                 && row.friction_dimensions > 0
-                && row.slip().length() <= floor)
+                && fell(row.slip(), start.map(ContactRow::slip)))
                 || (m.mode != ContactMode::Open
                     && m.roll == ContactMode::Slipping
                     && row.rolls
-                    && row.roll().length() <= floor)
+                    && fell(row.roll(), start.map(ContactRow::roll)))
         })
     }
 
