@@ -349,7 +349,10 @@ const FINISH_EVERY: usize = 50;
 /// called unsolved.
 pub(crate) const MAX_SWEEPS: usize = 2000;
 
-/// Solves `y_i = y⁰_i + Σ_j G_ij x_j` with each block's law.
+/// Solves `y_i = y⁰_i + Σ_j G_ij x_j` with each block's law, by block
+/// Gauss–Seidel from the unknowns `x` (zero, or a warm start: the
+/// previous solution of a problem that changed a little), into them;
+/// where the sweeps do not settle, `x` is where they got to.
 ///
 /// `g(i, a, j, b)` is the Delassus entry between component `a` of contact
 /// `i` and component `b` of contact `j`.
@@ -359,34 +362,21 @@ pub(crate) const MAX_SWEEPS: usize = 2000;
 /// normal coefficient is not positive (Painlevé);
 /// [`DynamicsError::ContactUnsolved`] when the sweeps or a slip direction
 /// do not settle.
-pub(crate) fn solve_blocks(
-    blocks: &[Block],
-    y_free: &[[f64; 4]],
-    g: &dyn Fn(usize, usize, usize, usize) -> f64,
-) -> Result<Vec<[f64; 4]>, DynamicsError> {
-    solve_blocks_from(blocks, y_free, g, vec![[0.0; 4]; blocks.len()])
-}
-
-/// [`solve_blocks`] from the unknowns `x` (a warm start: the previous
-/// solution of a problem that changed a little).
-///
-/// # Errors
-/// Those of [`solve_blocks`].
 pub(crate) fn solve_blocks_from(
     blocks: &[Block],
     y_free: &[[f64; 4]],
     g: &dyn Fn(usize, usize, usize, usize) -> f64,
-    mut x: Vec<[f64; 4]>,
-) -> Result<Vec<[f64; 4]>, DynamicsError> {
+    x: &mut [[f64; 4]],
+) -> Result<(), DynamicsError> {
     let m = blocks.len();
     let g_scale = (0..m)
         .flat_map(|i| (0..blocks[i].size).map(move |a| (i, a)))
         .fold(0.0_f64, |s, (i, a)| s.max(g(i, a, i, a).abs()));
     // The unknowns before a sweep, then its change; and G times that.
-    let mut step = x.clone();
+    let mut step = x.to_vec();
     let mut moved_by = vec![[0.0; 4]; m];
     for sweep in 0..MAX_SWEEPS {
-        step.copy_from_slice(&x);
+        step.copy_from_slice(x);
         let mut change: f64 = 0.0;
         let mut size: f64 = 0.0;
         for i in 0..m {
@@ -416,12 +406,12 @@ pub(crate) fn solve_blocks_from(
             x[i] = xi;
         }
         if m == 1 || change <= SWEEP_TOLERANCE * size {
-            return Ok(x);
+            return Ok(());
         }
         // The sweep moved the unknowns only along the null space of G
         // (several sticking contacts overconstrain the body: their forces
         // are not unique, the accelerations are): settled.
-        for (d, now) in step.iter_mut().zip(&x) {
+        for (d, now) in step.iter_mut().zip(x.iter()) {
             d.iter_mut().zip(now).for_each(|(d, now)| *d = now - *d);
         }
         moved_by.iter_mut().for_each(|y| *y = [0.0; 4]);
@@ -431,13 +421,14 @@ pub(crate) fn solve_blocks_from(
             .flatten()
             .fold(0.0_f64, |m, v| m.max(v.abs()));
         if moved <= NULL_TOLERANCE * g_scale * size {
-            return Ok(x);
+            return Ok(());
         }
         // Slow sweeps: the modes they show, finished exactly.
         if sweep % FINISH_EVERY == FINISH_EVERY - 1
-            && let Some(x) = finish(blocks, y_free, g, &x)
+            && let Some(finished) = finish(blocks, y_free, g, x)
         {
-            return Ok(x);
+            x.copy_from_slice(&finished);
+            return Ok(());
         }
     }
     Err(unsolved())

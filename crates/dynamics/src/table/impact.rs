@@ -20,7 +20,9 @@
 
 use super::TableBody;
 use super::contact_frame::{ContactFrame, ROLLING, Wrench};
-use super::contact_problem::{Block, solve_blocks};
+use super::contact_newton::solve_whole;
+use super::contact_problem::{Block, solve_blocks_from};
+use super::rolling_resistance::Rolling;
 use crate::{DynamicsError, GroundTopState};
 
 /// What an impact did.
@@ -101,7 +103,20 @@ pub(crate) fn impact(
                 slipping: None,
             });
         }
-        let impulses = solve_blocks(&blocks, &y_free, &g).map_err(|e| at_time(e, time))?;
+        let mut impulses = vec![[0.0; 4]; blocks.len()];
+        match solve_blocks_from(&blocks, &y_free, &g, &mut impulses) {
+            // The sweeps settle too slowly or cycle: Newton's method on the
+            // problem whole, from where they got to.
+            Err(DynamicsError::ContactUnsolved { .. }) => {
+                let none = vec![Rolling::Free; blocks.len()];
+                let zero = vec![glam::DVec3::ZERO; blocks.len()];
+                let start = Some((impulses.as_slice(), zero.as_slice()));
+                impulses = solve_whole(&frame, participants, &blocks, &y_free, &none, start)
+                    .map(|(x, _)| x)
+                    .ok_or(DynamicsError::ContactUnsolved { time })?;
+            }
+            solved => solved.map_err(|e| at_time(e, time))?,
+        }
         let mut total = Wrench::default();
         for (p, &i) in impulses.iter().zip(participants) {
             for (k, pk) in p

@@ -82,6 +82,7 @@ mod active_set;
 mod air_layer;
 mod contact_frame;
 mod contact_law;
+mod contact_newton;
 mod contact_problem;
 mod dense;
 mod face;

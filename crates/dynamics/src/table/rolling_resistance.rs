@@ -20,7 +20,8 @@
 use glam::DVec3;
 
 use super::contact_frame::{ContactFrame, ROLLING};
-use super::contact_problem::{Block, solve_blocks, solve_blocks_from};
+use super::contact_newton::solve_whole;
+use super::contact_problem::{Block, solve_blocks_from};
 use super::dense::solve_in_place;
 use crate::DynamicsError;
 
@@ -50,11 +51,14 @@ pub(crate) enum Rolling {
 }
 
 /// The contacts' unknowns `x` (normal, friction) and the rolling
-/// resistances `x_R` of the `touching` contacts.
+/// resistances `x_R` of the `touching` contacts: by sweeps between the
+/// contacts' problem and the rolling cones, and where those settle too
+/// slowly or cycle, by Newton's method on the problem whole from where
+/// they got to ([`solve_whole`]).
 ///
 /// # Errors
-/// Those of [`solve_blocks`]; [`DynamicsError::ContactUnsolved`] when the
-/// sweeps between the two problems do not settle.
+/// Those of [`solve_blocks_from`] but `ContactUnsolved`;
+/// [`DynamicsError::ContactUnsolved`] when neither settles.
 pub(crate) fn solve_with_rolling(
     frame: &ContactFrame,
     touching: &[usize],
@@ -62,6 +66,32 @@ pub(crate) fn solve_with_rolling(
     y_free: &[[f64; 4]],
     rolling: &[Rolling],
 ) -> Result<(Vec<[f64; 4]>, Vec<DVec3>), DynamicsError> {
+    let m = touching.len();
+    let (mut x, mut x_r) = (vec![[0.0; 4]; m], vec![DVec3::ZERO; m]);
+    match sweep_with_rolling(frame, touching, blocks, y_free, rolling, &mut x, &mut x_r) {
+        Ok(()) => Ok((x, x_r)),
+        Err(DynamicsError::ContactUnsolved { .. }) => {
+            solve_whole(frame, touching, blocks, y_free, rolling, Some((&x, &x_r)))
+                .ok_or(DynamicsError::ContactUnsolved { time: f64::NAN })
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// The sweeps of [`solve_with_rolling`], from and into `x`, `x_r`.
+///
+/// # Errors
+/// Those of [`solve_blocks_from`]; [`DynamicsError::ContactUnsolved`] when the
+/// sweeps between the two problems do not settle.
+fn sweep_with_rolling(
+    frame: &ContactFrame,
+    touching: &[usize],
+    blocks: &[Block],
+    y_free: &[[f64; 4]],
+    rolling: &[Rolling],
+    x: &mut [[f64; 4]],
+    x_r: &mut [DVec3],
+) -> Result<(), DynamicsError> {
     let g = |a: usize, ca: usize, b: usize, cb: usize| {
         frame.delassus(
             &frame.rows[touching[a]].directions[ca],
@@ -69,9 +99,8 @@ pub(crate) fn solve_with_rolling(
         )
     };
     let m = touching.len();
-    let mut x_r = vec![DVec3::ZERO; m];
     if rolling.iter().all(|r| *r == Rolling::Free) {
-        return Ok((solve_blocks(blocks, y_free, &g)?, x_r));
+        return solve_blocks_from(blocks, y_free, &g, x);
     }
     let free = (frame.free_velocity_rate, frame.free_omega_rate);
     // The share of the rolling torques (all but `skip`'s) in component
@@ -83,20 +112,19 @@ pub(crate) fn solve_with_rolling(
             .map(|(b, c, r)| g(a, ca, b, r) * x_r[b][c])
             .sum()
     };
-    let mut x = vec![[0.0; 4]; m];
     for _ in 0..OUTER_SWEEPS {
         let shifted: Vec<[f64; 4]> = (0..m)
             .map(|a| {
                 let mut y = y_free[a];
                 for (k, v) in y.iter_mut().enumerate().take(blocks[a].size) {
-                    *v += rolling_share(a, k, &x_r, None);
+                    *v += rolling_share(a, k, x_r, None);
                 }
                 y
             })
             .collect();
         // From the last sweep's solution: the rolling torques moved it a
         // little.
-        x = solve_blocks_from(blocks, &shifted, &g, x)?;
+        solve_blocks_from(blocks, &shifted, &g, x)?;
         let (mut change, mut size) = (0.0_f64, 0.0_f64);
         for a in 0..m {
             if rolling[a] == Rolling::Free {
@@ -108,9 +136,8 @@ pub(crate) fn solve_with_rolling(
                     .flat_map(|b| (0..blocks[b].size).map(move |k| (b, k)))
                     .map(|(b, k)| g(a, r, b, k) * x[b][k])
                     .sum();
-                y0[c] = frame.rate(touching[a], r, free)
-                    + contacts
-                    + rolling_share(a, r, &x_r, Some(a));
+                y0[c] =
+                    frame.rate(touching[a], r, free) + contacts + rolling_share(a, r, x_r, Some(a));
             }
             let own = [
                 [
@@ -128,7 +155,7 @@ pub(crate) fn solve_with_rolling(
             x_r[a] = next;
         }
         if change <= OUTER_TOLERANCE * size {
-            return Ok((x, x_r));
+            return Ok(());
         }
     }
     Err(DynamicsError::ContactUnsolved { time: f64::NAN })
