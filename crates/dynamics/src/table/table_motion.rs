@@ -800,6 +800,20 @@ impl TableMotion {
         }
     }
 
+    /// Whether contact `i` slips within the band against (or across) the
+    /// direction it holds there: its slip turned by a right angle or more
+    /// while the friction held its direction, and that slip's own
+    /// direction is not the motion's — decided afresh from the cone, its
+    /// residual taken (read as a resolved slip, it flipped at every
+    /// decision, 10⁻⁹ s apart: cases 37 and 98 of the scan).
+    fn reversed_in_band(&self, i: usize) -> bool {
+        let (mode, row) = (&self.modes[i], &self.current.frame.rows[i]);
+        mode.mode == ContactMode::Slipping
+            && row.friction_dimensions > 0
+            && row.slip().length() <= self.band()
+            && row.slip().dot(mode.direction) <= 0.0
+    }
+
     /// Whether a slipping contact's slip lies within `floor` (m/s): within
     /// the resolution speed its direction is not resolved, and following it
     /// would chatter about the band's edge; within [`SLIP_BAND`] its
@@ -1132,6 +1146,9 @@ impl TableMotion {
             self.current.state = outcome.state;
             self.current.frame = ContactFrame::of(&self.body, &outcome.state, self.time);
         }
+        let reversed: Vec<bool> = (0..self.modes.len())
+            .map(|i| self.reversed_in_band(i))
+            .collect();
         let new_modes = self.resolve(&participants)?;
         let before = std::mem::replace(&mut self.modes, new_modes);
         for (i, (old, new)) in before.iter().zip(self.modes.clone()).enumerate() {
@@ -1144,7 +1161,8 @@ impl TableMotion {
                 (_, ContactMode::Slipping) => Some(TableEventKind::Slip),
             };
             let row = &self.current.frame.rows[i];
-            let residual = row.friction_dimensions > 0 && row.slip().length() <= v_res;
+            let residual =
+                row.friction_dimensions > 0 && (row.slip().length() <= v_res || reversed[i]);
             let rolling_residual = row.rolls && row.roll().length() <= v_res;
             // A contact that starts to stick, or to slip from within the
             // resolution band, loses its residual slip: the slip then
@@ -1220,6 +1238,7 @@ impl TableMotion {
             let sliding = row.friction_dimensions > 0
                 && self.modes[i].mode != ContactMode::Sticking
                 && slip.length() > v_res
+                && !self.reversed_in_band(i)
                 && !self.afresh;
             let size = 1 + row.friction_dimensions;
             let mut y = [0.0; 4];
