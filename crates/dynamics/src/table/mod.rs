@@ -50,7 +50,21 @@
 //! where no admissible distribution is left. At events, block
 //! Gauss–Seidel has settled once its sweeps move only along that null
 //! space; where it converges slowly, the modes it shows are solved exactly
-//! and checked (`active_set`).
+//! and checked (`active_set`). A contact the solve leaves on the cone's
+//! edge sticks where the forces of those modes keep every contact in its
+//! cone (the solve's distribution is one of many; a slip read off it
+//! reversed at once).
+//!
+//! # The contacts' problem
+//! At events the accelerations and forces of the touching contacts solve
+//! Signorini's law, the friction cones (drilling included) and the
+//! rolling cones together: block Gauss–Seidel over the contacts, sweeps
+//! between them and the rolling cones, and where those settle too slowly
+//! or cycle, a semismooth Newton method on the Alart–Curnier equations of
+//! the problem whole from where they got to (`contact_newton`); the same
+//! at impacts, on the impulses. A slip is decided afresh where its
+//! direction is not resolved: within the resolution, or turned by a right
+//! angle or more within the band against the direction it holds there.
 //!
 //! # Disks: rim, face and air
 //! A disk rim that reaches flat (its axis within [`DISK_FLAT_TILT`] of the
@@ -68,10 +82,11 @@
 //!
 //! # What it does not do (yet)
 //! The rolling resistance acts between impacts, not in them (its impulse
-//! would be at most `δ P_N`). Two contacts that start to slip together
-//! decide their directions by Gauss–Seidel over the contacts, which may
-//! not settle (`ContactUnsolved`); some throws with two contacts run
-//! slowly (the scan of random throws in `BENCHMARKS.md` counts them). Inputs
+//! would be at most `δ P_N`). Newton's method on the contacts' problem can
+//! stop at a local minimum of its merit where no sweep leads out
+//! (`ContactUnsolved`, 2 of the 100 random throws of `BENCHMARKS.md`); a
+//! slip hovering at the band's edge under a Contensou patch runs slowly
+//! (1 of 100). Inputs
 //! are not followed on a face ([`crate::DynamicsError::DiskFlat`]). Free
 //! flight is exact (parabola and the torque-free
 //! [`crate::ExactSolution`]); applied inputs ([`TableBody::try_with_inputs`])
