@@ -22,7 +22,7 @@
 
 use glam::DVec3;
 
-use super::contact_problem::{Block, add_delassus_product};
+use super::contact_block::{Block, add_delassus_product};
 use super::dense::solve_with_null_space;
 use super::force_distribution::{Cone, largest_margin};
 

@@ -32,10 +32,9 @@
 
 use glam::DVec3;
 
+use super::contact_block::{Block, Rolling};
 use super::contact_frame::{ContactFrame, ROLLING};
-use super::contact_problem::Block;
 use super::dense::solve_in_place;
-use super::rolling_resistance::Rolling;
 
 /// The rounding of `Φ`, in ulps of the magnitudes it is computed from
 /// (`|λ| + r |y_free| + r Σ |G λ|`): a residual below it has settled.

@@ -35,6 +35,7 @@ use glam::DVec3;
 
 use super::TableBody;
 use super::active_set::finish;
+use super::contact_block::{Block, add_delassus_product};
 use super::contact_frame::{ContactFrame, ROLLING, Wrench};
 use super::dense::{solve_in_place, solve_with_null_space};
 use super::force_distribution::{Cone, largest_margin};
@@ -320,18 +321,6 @@ fn cones_of(owner: &[(usize, usize)], frame: &ContactFrame) -> Vec<Cone> {
     cones
 }
 
-/// One contact's share of a set-valued problem: its Delassus block and
-/// its law.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Block {
-    /// How many components: 1 + friction directions.
-    pub(crate) size: usize,
-    pub(crate) mu: f64,
-    /// `Some(d)`: slipping already along `d` (the friction is `−μ x_N d`);
-    /// `None`: the friction cone.
-    pub(crate) slipping: Option<DVec3>,
-}
-
 /// The relative change of the unknowns below which block Gauss–Seidel
 /// stops.
 pub(crate) const SWEEP_TOLERANCE: f64 = 1e-15;
@@ -432,25 +421,6 @@ pub(crate) fn solve_blocks_from(
         }
     }
     Err(unsolved())
-}
-
-/// `y += G x` over the blocks' components (`g(i, a, j, b)` the entry
-/// between component `a` of block `i` and component `b` of block `j`).
-pub(crate) fn add_delassus_product(
-    y: &mut [[f64; 4]],
-    blocks: &[Block],
-    g: &dyn Fn(usize, usize, usize, usize) -> f64,
-    x: &[[f64; 4]],
-) {
-    for (i, yi) in y.iter_mut().enumerate() {
-        for (a, v) in yi.iter_mut().enumerate().take(blocks[i].size) {
-            for (j, xj) in x.iter().enumerate() {
-                for (b, xb) in xj.iter().enumerate().take(blocks[j].size) {
-                    *v += g(i, a, j, b) * xb;
-                }
-            }
-        }
-    }
 }
 
 /// One block exactly: separation, sticking, or slipping on the cone (the

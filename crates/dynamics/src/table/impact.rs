@@ -19,10 +19,10 @@
 //! typed error, never a silent gain.
 
 use super::TableBody;
+use super::contact_block::{Block, Rolling};
 use super::contact_frame::{ContactFrame, ROLLING, Wrench};
 use super::contact_newton::solve_whole;
-use super::contact_problem::{Block, solve_blocks_from};
-use super::rolling_resistance::Rolling;
+use super::contact_problem::solve_blocks_from;
 use crate::{DynamicsError, GroundTopState};
 
 /// What an impact did.

@@ -95,6 +95,7 @@
 
 mod active_set;
 mod air_layer;
+mod contact_block;
 mod contact_frame;
 mod contact_law;
 mod contact_newton;

@@ -19,9 +19,10 @@
 
 use glam::DVec3;
 
+use super::contact_block::{Block, Rolling};
 use super::contact_frame::{ContactFrame, ROLLING};
 use super::contact_newton::solve_whole;
-use super::contact_problem::{Block, solve_blocks_from};
+use super::contact_problem::solve_blocks_from;
 use super::dense::solve_in_place;
 use crate::DynamicsError;
 
@@ -38,17 +39,6 @@ const OUTER_TOLERANCE: f64 = 1e-13;
 /// in these (contacts that overconstrain the body with their rolling
 /// held) is unsolved, not a hang of millions of sweeps.
 const OUTER_SWEEPS: usize = 200;
-
-/// What is known of a touching contact's rolling before the solve.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Rolling {
-    /// The law has no rolling resistance.
-    Free,
-    /// The rolling's cone decides: hold or roll.
-    Cone,
-    /// Rolling already along `d` (its rate resolved): `x_R = −x_N d`.
-    Along(DVec3),
-}
 
 /// The contacts' unknowns `x` (normal, friction) and the rolling
 /// resistances `x_R` of the `touching` contacts: by sweeps between the

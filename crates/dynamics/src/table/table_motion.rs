@@ -34,13 +34,14 @@
 
 use glam::{DQuat, DVec3};
 
+use super::contact_block::{Block, Rolling};
 use super::contact_frame::{ContactFrame, ContactRow};
 use super::contact_problem::{
-    Block, ContactMode, Mode, ModeForces, mode_forces, roll_direction, slip_direction,
+    ContactMode, Mode, ModeForces, mode_forces, roll_direction, slip_direction,
 };
 use super::face::FaceSlide;
 use super::impact::{at_time, face_impact, impact, rim_flip_impact, stop_slip};
-use super::rolling_resistance::{Rolling, solve_with_rolling};
+use super::rolling_resistance::solve_with_rolling;
 use super::{TableBody, TableEvent, TableEventKind};
 use crate::contact::{DOPRI_A, DOPRI_B_HAT, DOPRI_C, Flight, MAX_GROWTH, MIN_SHRINK, SAFETY};
 use crate::{AdaptiveStats, AdaptiveTolerance, ContactShape, DynamicsError, GroundTopState};
