@@ -170,7 +170,7 @@ fn weld_gap(vertices: &[DVec3], boundary: &[u64]) -> Option<f64> {
             .fold(f64::INFINITY, f64::min);
         gap = gap.max(nearest);
     }
-    let size = crate::weld::bounding_diagonal(vertices);
+    let size = crate::mesh_unit::bounding_diagonal(vertices);
     (gap.is_finite() && gap <= 1e-3 * size).then_some(gap)
 }
 

@@ -170,6 +170,20 @@ pub(crate) fn bounds(vertices: &[DVec3]) -> Option<(DVec3, DVec3)> {
     )
 }
 
+/// The diagonal of the axis-aligned bounding box in units of `unit`.
+pub(crate) fn diagonal_in(vertices: &[DVec3], unit: &MeshUnit) -> f64 {
+    bounds(vertices).map_or(0.0, |(lo, hi)| {
+        (unit.point_in_unit(hi) - unit.point_in_unit(lo)).length()
+    })
+}
+
+/// The diagonal of the axis-aligned bounding box (∞ beyond `f64::MAX`,
+/// but never ∞ from an intermediate overflow, nor 0 from an underflow).
+pub(crate) fn bounding_diagonal(vertices: &[DVec3]) -> f64 {
+    let unit = MeshUnit::of(vertices);
+    unit.scale_back(diagonal_in(vertices, &unit), 1)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -36,7 +36,7 @@ use std::borrow::Cow;
 use glam::DVec3;
 
 use crate::mesh_check::Topology;
-use crate::mesh_unit::{MeshUnit, bounds, ldexp};
+use crate::mesh_unit::{MeshUnit, diagonal_in, ldexp};
 use crate::parallel::{PARALLEL_MIN, map_slices, threads_for};
 use crate::{InertiaError, TriMesh};
 
@@ -360,20 +360,6 @@ fn weld_near(
     }
     welded.max_move = unit.scale_back(welded.max_move, 1);
     Some((new_index, kept, welded))
-}
-
-/// The diagonal of the axis-aligned bounding box in units of `unit`.
-fn diagonal_in(vertices: &[DVec3], unit: &MeshUnit) -> f64 {
-    bounds(vertices).map_or(0.0, |(lo, hi)| {
-        (unit.point_in_unit(hi) - unit.point_in_unit(lo)).length()
-    })
-}
-
-/// The diagonal of the axis-aligned bounding box (∞ beyond `f64::MAX`,
-/// but never ∞ from an intermediate overflow, nor 0 from an underflow).
-pub(crate) fn bounding_diagonal(vertices: &[DVec3]) -> f64 {
-    let unit = MeshUnit::of(vertices);
-    unit.scale_back(diagonal_in(vertices, &unit), 1)
 }
 
 impl TriMesh {
