@@ -13,7 +13,9 @@ use std::path::Path;
 use glam::{DMat3, DQuat, DVec3};
 use roxmltree::{Document, Node};
 
-use super::urdf_wellformed::{LineIndex, MAX_DEPTH, declaration_problem, line_of, too_deep};
+use super::urdf_wellformed::{
+    LineIndex, MAX_DEPTH, declaration_problem, line_of, start_tag_end, too_deep,
+};
 use crate::error::CliError;
 
 /// A pose `<origin xyz rpy>`: translation, then URDF's fixed-axis roll,
@@ -332,21 +334,6 @@ impl<'input> Reader<'_, 'input> {
 fn child<'a, 'input>(node: Node<'a, 'input>, name: &str) -> Option<Node<'a, 'input>> {
     node.children()
         .find(|c| c.is_element() && c.tag_name().name() == name)
-}
-
-/// The end of the start tag that begins at `start` (just after its `>`),
-/// skipping `>` inside quoted attribute values.
-pub(super) fn start_tag_end(text: &str, start: usize) -> usize {
-    let mut quote = None;
-    for (i, b) in text.bytes().enumerate().skip(start) {
-        match (quote, b) {
-            (None, b'"' | b'\'') => quote = Some(b),
-            (Some(q), _) if q == b => quote = None,
-            (None, b'>') => return i + 1,
-            _ => {}
-        }
-    }
-    text.len()
 }
 
 /// The whitespace before `pos` on its line (`None` when other text precedes it).

@@ -15,6 +15,21 @@
 /// Deepest element nesting accepted in a URDF (the root `<robot>` is 1).
 pub const MAX_DEPTH: usize = 1000;
 
+/// The end of the start tag that begins at `start` (just after its `>`),
+/// skipping `>` inside quoted attribute values.
+pub(super) fn start_tag_end(text: &str, start: usize) -> usize {
+    let mut quote = None;
+    for (i, b) in text.bytes().enumerate().skip(start) {
+        match (quote, b) {
+            (None, b'"' | b'\'') => quote = Some(b),
+            (Some(q), _) if q == b => quote = None,
+            (None, b'>') => return i + 1,
+            _ => {}
+        }
+    }
+    text.len()
+}
+
 /// The byte offset of the first start tag nested deeper than `max` levels.
 pub fn too_deep(text: &str, max: usize) -> Option<usize> {
     let mut depth = 0usize;
@@ -35,7 +50,7 @@ pub fn too_deep(text: &str, max: usize) -> Option<usize> {
             depth = depth.saturating_sub(1);
             skip_to(">")
         } else {
-            let end = super::urdf_document::start_tag_end(text, start);
+            let end = start_tag_end(text, start);
             if !text[..end].ends_with("/>") {
                 depth += 1;
                 if depth > max {
