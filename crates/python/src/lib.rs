@@ -25,6 +25,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     errors::register(m)?;
     rotations::register(m)?;
+    rotations_rates::register(m)?;
     mass::register(m)?;
     simulation::register(m)?;
     top::register(m)?;

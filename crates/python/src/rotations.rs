@@ -17,7 +17,6 @@ use pyo3::prelude::*;
 
 use crate::errors::{error, guard};
 use crate::rotations_arrays::{Floats, non_finite, numbers, row_name, to_numpy};
-use crate::rotations_rates;
 
 /// The 24 sequence names, for error messages.
 fn sequence_names() -> String {
@@ -350,5 +349,5 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(from_euler, m)?)?;
     m.add_function(wrap_pyfunction!(as_euler, m)?)?;
     m.add_function(wrap_pyfunction!(convert, m)?)?;
-    rotations_rates::register(m)
+    Ok(())
 }
