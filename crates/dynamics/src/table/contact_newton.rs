@@ -49,12 +49,13 @@ const MAX_HALVINGS: usize = 40;
 /// Projected sweeps where a Newton step finds no decrease.
 const PROJECTED_SWEEPS: usize = 20;
 
-/// One contact's unknowns: its block (normal, friction) and its rolling.
+/// The unknowns of all the contacts, each contact's together: its block
+/// (normal, friction), then its rolling.
 struct Layout {
-    /// The row directions of each unknown (`0` normal, `1..=3` friction,
-    /// [`ROLLING`]) and the contact it belongs to.
+    /// The contact each unknown belongs to and its row direction (`0`
+    /// normal, `1..=3` friction, [`ROLLING`]).
     components: Vec<(usize, usize)>,
-    /// Where each contact's unknowns start, and how many of its block's.
+    /// Where each contact's unknowns start (its normal).
     start: Vec<usize>,
 }
 
@@ -70,6 +71,26 @@ impl Layout {
             }
         }
         Self { components, start }
+    }
+
+    /// One value per unknown: `block(a, k)` for component `k` of contact
+    /// `a`'s block, `rolling(a, c)` for its rolling component `c`.
+    fn gather(
+        &self,
+        blocks: &[Block],
+        block: impl Fn(usize, usize) -> f64,
+        rolling: impl Fn(usize, usize) -> f64,
+    ) -> Vec<f64> {
+        self.components
+            .iter()
+            .map(|&(a, k)| {
+                if k < blocks[a].size {
+                    block(a, k)
+                } else {
+                    rolling(a, k - ROLLING[0])
+                }
+            })
+            .collect()
     }
 }
 
@@ -258,41 +279,27 @@ pub(crate) fn solve_whole(
         }
     }
     let free = (frame.free_velocity_rate, frame.free_omega_rate);
-    let y_free_all: Vec<f64> = layout
-        .components
-        .iter()
-        .map(|&(a, k)| {
-            if k < blocks[a].size {
-                y_free[a][k]
-            } else {
-                frame.rate(touching[a], k, free)
-            }
-        })
-        .collect();
+    let y_free_all = layout.gather(
+        blocks,
+        |a, k| y_free[a][k],
+        |a, c| frame.rate(touching[a], ROLLING[c], free),
+    );
     let problem = Problem::new(blocks, rolling, layout, g, y_free_all);
-    let from = |(x, x_r): (&[[f64; 4]], &[DVec3])| -> Vec<f64> {
-        problem
+    let lambda = match start {
+        Some((x, x_r)) => problem
             .layout
-            .components
-            .iter()
-            .map(|&(a, k)| {
-                if k < blocks[a].size {
-                    x[a][k]
-                } else {
-                    x_r[a][k - ROLLING[0]]
-                }
-            })
-            .collect()
+            .gather(blocks, |a, k| x[a][k], |a, c| x_r[a][c]),
+        None => problem.normal_start(),
     };
-    let lambda = start.map_or_else(|| problem.normal_start(), from);
     problem
         .solve(lambda)
         .map(|lambda| unpack(&problem, &lambda))
 }
 
 impl Problem<'_> {
-    /// Newton's method from `lambda`: the unknowns where `Φ` has settled
-    /// to rounding; `None` where a step finds no decrease.
+    /// Newton's method from `lambda` (projected sweeps where a step finds
+    /// no decrease): the unknowns where `Φ` has settled to rounding; `None`
+    /// where it has not within [`MAX_STEPS`] or is not finite.
     fn solve(&self, mut lambda: Vec<f64>) -> Option<Vec<f64>> {
         let n = self.n();
         let norm2 = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>();

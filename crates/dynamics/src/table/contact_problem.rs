@@ -287,8 +287,7 @@ pub(crate) fn mode_forces(
 /// The cones of the closed contacts over the unknowns `owner` ((contact,
 /// component) of each, as [`mode_forces`] lays them out: each contact's
 /// normal, then its friction if it sticks, then its rolling if that
-/// holds): each normal, the friction of each sticking contact, the
-/// rolling of each holding one.
+/// holds).
 fn cones_of(owner: &[(usize, usize)], frame: &ContactFrame) -> Vec<Cone> {
     let mut cones: Vec<Cone> = Vec::new();
     let mut normal = 0;

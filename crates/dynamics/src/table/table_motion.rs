@@ -1150,7 +1150,7 @@ impl TableMotion {
         let reversed: Vec<bool> = (0..self.modes.len())
             .map(|i| self.reversed_in_band(i))
             .collect();
-        let new_modes = self.resolve(&participants)?;
+        let new_modes = self.resolve(&participants, &reversed)?;
         let before = std::mem::replace(&mut self.modes, new_modes);
         for (i, (old, new)) in before.iter().zip(self.modes.clone()).enumerate() {
             let kind = match (old.mode, new.mode) {
@@ -1220,8 +1220,14 @@ impl TableMotion {
 
     /// The modes of the contacts that touch without separating: the
     /// acceleration-level problem (Signorini and Coulomb–Contensou on
-    /// accelerations, slipping contacts along their slip).
-    fn resolve(&self, participants: &[usize]) -> Result<Vec<Mode>, DynamicsError> {
+    /// accelerations, slipping contacts along their slip, but those
+    /// `reversed` within the band — [`TableMotion::reversed_in_band`] —
+    /// decided afresh from the cone).
+    fn resolve(
+        &self,
+        participants: &[usize],
+        reversed: &[bool],
+    ) -> Result<Vec<Mode>, DynamicsError> {
         let v_res = self.resolution_speed();
         let frame = &self.current.frame;
         let touching: Vec<usize> = participants
@@ -1239,7 +1245,7 @@ impl TableMotion {
             let sliding = row.friction_dimensions > 0
                 && self.modes[i].mode != ContactMode::Sticking
                 && slip.length() > v_res
-                && !self.reversed_in_band(i)
+                && !reversed[i]
                 && !self.afresh;
             let size = 1 + row.friction_dimensions;
             let mut y = [0.0; 4];
