@@ -1,10 +1,10 @@
 //! What the fuzz targets run: one function per parser, each asserting the
 //! contract "an error, or a result of finite numbers; never a panic".
 //!
-//! The scene and convert parsers come from the CLI's library
-//! (`kreisel_cli`). The CLI's test `crates/cli/tests/fuzz/` compiles this
-//! file in by path, so the in-CI pass and the fuzz targets check one
-//! contract.
+//! The scene parser comes from the scene layer (`kreisel_scene`), the
+//! convert line reader from the CLI's library (`kreisel_cli`). The CLI's
+//! test `crates/cli/tests/fuzz/` compiles this file in by path, so the
+//! in-CI pass and the fuzz targets check one contract.
 
 use std::path::Path;
 
@@ -12,8 +12,8 @@ use kreisel_inertia::io::{MeshFormat, load_bodies_from_bytes};
 use kreisel_inertia::{MassModel, MassProperties, Material, mesh_mass_properties};
 
 use kreisel_cli::convert::Conversion;
-use kreisel_cli::representation::Representation;
-use kreisel_cli::simulate;
+use kreisel_scene::representation::Representation;
+use kreisel_scene::scene_file;
 
 /// Panics unless every number of `p` is finite (an `Ok` must never hold NaN or inf).
 fn assert_finite(p: &MassProperties, what: &str) {
@@ -52,7 +52,7 @@ pub fn mesh_file(bytes: &[u8], format: MeshFormat) {
 /// are looked up beside `path`).
 pub fn scene_toml(bytes: &[u8], path: &Path) {
     if let Ok(text) = std::str::from_utf8(bytes) {
-        let _ = simulate::scene::parse(path, text);
+        let _ = scene_file::parse(path, text);
     }
 }
 

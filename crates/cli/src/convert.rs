@@ -10,9 +10,11 @@ use std::io::{self, BufRead, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 pub use self::columns::Layout;
-use crate::error::{CliError, LineProblem, Location, Stream};
-use crate::numbers::{Numbers, parse_numbers, write_numbers};
-use crate::representation::Representation;
+use crate::error::{CliError, Location, Stream};
+use kreisel_scene::escape::escape_invisible;
+use kreisel_scene::line_problem::LineProblem;
+use kreisel_scene::numbers::{Numbers, parse_numbers, write_numbers};
+use kreisel_scene::representation::Representation;
 
 /// Longest accepted input line in bytes (newline included); longer lines are
 /// an error, so a file without newlines cannot exhaust memory.
@@ -413,34 +415,6 @@ fn read_line<R: BufRead>(reader: &mut R, buffer: &mut Vec<u8>) -> io::Result<usi
     }
 }
 
-/// `text` with every control or invisible character written as `\u{…}`, so
-/// that an error message shows what is really in the input.
-pub(crate) fn escape_invisible(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        let invisible = matches!(
-            c,
-            '\u{ad}'
-                | '\u{115f}'
-                | '\u{1160}'
-                | '\u{180e}'
-                | '\u{200b}'..='\u{200f}'
-                | '\u{2028}'..='\u{202e}'
-                | '\u{2060}'..='\u{206f}'
-                | '\u{3164}'
-                | '\u{fe00}'..='\u{fe0f}'
-                | '\u{feff}'
-                | '\u{fff9}'..='\u{fffb}'
-        );
-        if c.is_control() || invisible {
-            out.extend(c.escape_unicode());
-        } else {
-            out.push(c);
-        }
-    }
-    out
-}
-
 /// The problem with its quoted tokens escaped (see [`escape_invisible`]).
 fn escape_problem(problem: LineProblem) -> LineProblem {
     match problem {
@@ -550,7 +524,6 @@ mod tests {
         let e = result.unwrap_err().to_string();
         assert!(!e.chars().any(char::is_control), "{e:?}");
         assert!(e.contains("\\u{7}x"), "{e}");
-        assert_eq!(escape_invisible("a\u{200b}b\tc"), "a\\u{200b}b\\u{9}c");
     }
 
     #[test]

@@ -9,11 +9,8 @@ use std::fmt;
 use std::io;
 use std::path::PathBuf;
 
-use kreisel_inertia::InertiaError;
-use kreisel_kinematics::KinematicsError;
-
-use crate::numbers::Shortest;
-use crate::representation::Representation;
+use kreisel_scene::error::SceneError;
+use kreisel_scene::line_problem::LineProblem;
 
 /// Exit status for errors in the data or in the files (clap uses 2 for usage errors).
 pub const EXIT_DATA_ERROR: u8 = 1;
@@ -45,84 +42,6 @@ impl fmt::Display for Location {
             Stream::File(path) => write!(f, "{}:{}", path.display(), self.line),
         }
     }
-}
-
-/// What is wrong with one line of input.
-#[derive(Debug, thiserror::Error)]
-pub enum LineProblem {
-    /// The line is not valid UTF-8 text.
-    #[error("line is not valid UTF-8 text")]
-    NotUtf8,
-    /// The line exceeds the length limit (protects memory from endless lines).
-    #[error("line is longer than {limit} bytes")]
-    TooLong {
-        /// The limit in bytes.
-        limit: usize,
-    },
-    /// Two commas with nothing between them, or a comma at the start or end.
-    #[error(
-        "empty number at position {position} (two commas in a row, or a leading or trailing comma)"
-    )]
-    EmptyNumber {
-        /// 1-based position of the empty field among the numbers.
-        position: usize,
-    },
-    /// A token that `f64::from_str` does not accept.
-    #[error("cannot parse `{token}` as a number")]
-    BadNumber {
-        /// The token as written.
-        token: String,
-    },
-    /// A number that parses but is NaN or infinite (also `1e999`, which overflows).
-    #[error("number `{token}` is not finite")]
-    NonFinite {
-        /// The token as written.
-        token: String,
-    },
-    /// The line holds the wrong count of numbers for the representation.
-    #[error("expected {expected} numbers for {representation}, found {found}")]
-    WrongCount {
-        /// The input representation.
-        representation: Representation,
-        /// How many numbers it needs.
-        expected: usize,
-        /// How many the line holds.
-        found: usize,
-    },
-    /// A rotation vector with finite components whose length overflows `f64`.
-    #[error("rotation vector length is not a finite number (it overflows)")]
-    RotationVectorLength,
-    /// The numbers do not describe a rotation (zero quaternion, non-orthonormal
-    /// or reflection matrix, zero axis with a non-zero angle).
-    #[error("{source}")]
-    NotARotation {
-        /// The library's description of the problem.
-        #[from]
-        source: KinematicsError,
-    },
-    // `kreisel convert --skip-columns N --header` (issue 16).
-    /// A line with fewer fields than `--skip-columns` passes through.
-    #[error("line has {found} columns, fewer than --skip-columns {skip}")]
-    TooFewColumns {
-        /// `--skip-columns`.
-        skip: usize,
-        /// The fields the line holds.
-        found: usize,
-    },
-    /// The `--header` line names the wrong number of columns.
-    #[error(
-        "header has {found} columns, expected {skip} passed through (--skip-columns) + {expected} for {representation}"
-    )]
-    HeaderCount {
-        /// The names the header holds.
-        found: usize,
-        /// `--skip-columns`.
-        skip: usize,
-        /// The input representation.
-        representation: Representation,
-        /// How many numbers it needs.
-        expected: usize,
-    },
 }
 
 /// Everything that makes a `kreisel` subcommand fail.
@@ -175,75 +94,12 @@ pub enum CliError {
         /// What is wrong with it.
         problem: LineProblem,
     },
-    /// A mesh file cannot be read or parsed (the library's message names the file).
-    #[error("{}", one_line(&source.to_string()))]
-    LoadMesh {
-        /// The library's description of the problem.
-        source: InertiaError,
-    },
-    /// A mesh file that parses but holds no body with triangles.
-    #[error("{}: the file holds no mesh bodies", path.display())]
-    NoBodies {
-        /// The mesh file.
-        path: PathBuf,
-    },
-    /// One body of a mesh file has no mass properties under the chosen model.
-    #[error("{}: body '{}': {}", path.display(), one_line(body), problem)]
-    Body {
-        /// The mesh file.
-        path: PathBuf,
-        /// The body's name in the file.
-        body: String,
-        /// What went wrong.
-        problem: BodyProblem,
-    },
-    /// `--mass` cannot be spread over the bodies: their total volume is too
-    /// small (or too large) for a finite positive density.
-    #[error(
-        "{}: total volume {} m^3 gives no finite positive density for --mass {} kg",
-        path.display(),
-        Shortest(*volume),
-        Shortest(*mass)
-    )]
-    DerivedDensity {
-        /// The mesh file.
-        path: PathBuf,
-        /// The total mass asked for, kg.
-        mass: f64,
-        /// The total volume of the bodies, m³.
-        volume: f64,
-    },
-    /// The scene file of `kreisel simulate` cannot be read.
-    #[error("cannot read scene file {}: {source}", path.display())]
-    ReadScene {
-        /// The path as given.
-        path: PathBuf,
-        /// The operating system's reason.
-        source: io::Error,
-    },
-    /// A problem in the scene file: `SCENE:LINE: message` (`SCENE: message`
-    /// for a problem of the file as a whole).
-    #[error("{}{}: {message}", path.display(), line.map(|l| format!(":{l}")).unwrap_or_default())]
-    Scene {
-        /// The scene file as given.
-        path: PathBuf,
-        /// The 1-based line of the offending key or table, when there is one.
-        line: Option<u64>,
-        /// What is wrong, naming the key (one line).
-        message: String,
-    },
     /// A command-line option with a value the subcommand cannot use.
     #[error("{argument}: {message}")]
     Argument {
         /// The option as written on the command line (`--i1`).
         argument: String,
         /// What is wrong with its value (one line).
-        message: String,
-    },
-    /// The library cannot solve the heavy top for these parameters.
-    #[error("heavy top: {message}")]
-    Top {
-        /// The library's description of the problem (one line).
         message: String,
     },
     /// A figure cannot be drawn.
@@ -254,12 +110,9 @@ pub enum CliError {
         /// What went wrong.
         message: String,
     },
-    /// `--method` names no known method.
-    #[error("--method: {message}")]
-    Method {
-        /// What is wrong, listing the known methods.
-        message: String,
-    },
+    /// A scene, mesh or heavy-top request the scene layer rejects.
+    #[error(transparent)]
+    Library(#[from] SceneError),
     /// The robot description of `inertia --urdf` cannot be read.
     #[error("cannot read URDF file {}: {source}", path.display())]
     ReadUrdf {
@@ -312,65 +165,6 @@ pub enum CliError {
     },
 }
 
-/// Why the mass properties of one body of a mesh file cannot be computed.
-#[derive(Debug, thiserror::Error)]
-pub enum BodyProblem {
-    /// Scaling made a coordinate overflow to infinity.
-    #[error("coordinates overflow when scaled by {}", Shortest(*scale))]
-    ScaleOverflow {
-        /// The scale factor.
-        scale: f64,
-    },
-    /// The library rejected the body; for surfaces that enclose no well-defined
-    /// volume the message says what gives the right answer, if anything.
-    #[error("{}{}", one_line(&source.to_string()), solid_hint(source))]
-    Inertia {
-        /// The library's description of the problem.
-        #[from]
-        source: InertiaError,
-    },
-    /// The body is open along cracks that welding within `weld` metres
-    /// closes (checked).
-    #[error("{}; rerun with --weld {} to close them", one_line(&source.to_string()), Shortest(*weld))]
-    Cracks {
-        /// The library's description of the body's problem.
-        source: InertiaError,
-        /// A weld tolerance that closes the body, m.
-        weld: f64,
-    },
-    /// The body is open, but all bodies of the file together are closed.
-    #[error(
-        "{}; the file's bodies together form a closed surface: rerun with --merge to treat them as one solid",
-        one_line(&source.to_string())
-    )]
-    ClosedOnlyMerged {
-        /// The library's description of the body's problem.
-        source: InertiaError,
-    },
-}
-
-/// What gives the right answer when a mesh is no closed, orientable surface
-/// and neither welding nor merging closes it: the models that hold only for
-/// some shapes, said so (never advice that silently gives a wrong mass).
-fn solid_hint(error: &InertiaError) -> String {
-    const OPEN_ON_PURPOSE: &str = "; if the surface is open on purpose, --shell models a thin-walled part (see --thickness) and --hull a convex one";
-    match error {
-        InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. } => OPEN_ON_PURPOSE.into(),
-        InertiaError::MeshOutOfRange { .. } => {
-            " (set with --units or --scale S, metres per mesh unit)".into()
-        }
-        InertiaError::NonOrientable { .. } => {
-            "; it bounds no volume, but --shell models it as a thin wall (see --thickness)".into()
-        }
-        _ => String::new(),
-    }
-}
-
-/// The text with line breaks replaced by spaces, so an error stays one line.
-pub fn one_line(text: &str) -> String {
-    text.replace(['\r', '\n'], " ")
-}
-
 /// `path` for a file, `standard` for a standard stream.
 fn stream_name(stream: &Stream, standard: &str) -> String {
     match stream {
@@ -399,6 +193,7 @@ impl CliError {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use kreisel_scene::representation::Representation;
 
     #[test]
     fn locations_name_file_or_line() {
@@ -442,30 +237,5 @@ mod tests {
         };
         assert!(pipe(Stream::Standard).is_broken_pipe());
         assert!(!pipe(Stream::File(PathBuf::from("x"))).is_broken_pipe());
-    }
-
-    #[test]
-    fn open_mesh_error_names_file_body_and_options() {
-        let e = CliError::Body {
-            path: PathBuf::from("part.obj"),
-            body: "lid\nx".into(),
-            problem: BodyProblem::from(InertiaError::OpenMesh {
-                boundary_edges: 4,
-                at: glam::DVec3::new(1.0, 0.5, 0.0),
-                weld_gap: None,
-            }),
-        };
-        let text = e.to_string();
-        assert!(
-            text.starts_with("part.obj: body 'lid x': mesh is open: 4 boundary edges"),
-            "{text}"
-        );
-        assert!(
-            text.contains("--shell") && text.contains("--hull"),
-            "{text}"
-        );
-        assert!(!text.contains('\n'));
-        let e = BodyProblem::from(InertiaError::ZeroVolume);
-        assert!(!e.to_string().contains("--hull"));
     }
 }

@@ -9,7 +9,6 @@
 
 #![forbid(unsafe_code)]
 
-mod compute;
 mod frame_change;
 mod inertial_form;
 mod json;
@@ -35,45 +34,17 @@ mod urdf_wellformed;
 use std::io::Write;
 use std::path::PathBuf;
 
-use kreisel_inertia::{MassModel, Weld};
+use kreisel_inertia::MassModel;
 
-use crate::error::{CliError, one_line};
+use crate::error::CliError;
+use kreisel_scene::error::one_line;
 
-pub use compute::{DensityChoice, Report, Setup, Summary, compute, compute_scaled};
 pub use frame_change::{OutputFrame, Transform};
 pub use inertial_form::{Inertial, InertialForm, MARGIN_ULPS, is_loadable, rpy_sequence};
-pub use json::FRAME;
+use kreisel_scene::inertia_request::{DensityChoice, Report, Setup, Summary, compute};
+use kreisel_scene::mesh_options::{DEFAULT_DENSITY, DEFAULT_THICKNESS, Units, WeldChoice};
 pub use rounding::DIGITS;
 pub use urdf_args::{GeometrySource, PackageDir, UrdfArgs};
-
-/// What `--weld` chooses.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum WeldChoice {
-    /// Without `--weld`: within `1e-6 ×` each body's bounding-box diagonal.
-    Default,
-    /// `--weld off`: only bit-identical vertices.
-    Off,
-    /// `--weld TOL`: within TOL metres (after scaling).
-    Metres(f64),
-}
-
-impl WeldChoice {
-    /// The library's weld for a mesh whose coordinates are multiplied by
-    /// `scale` to get metres (welding happens in the file's units).
-    pub fn weld(self, scale: f64) -> Weld {
-        match self {
-            WeldChoice::Default => Weld::default(),
-            WeldChoice::Off => Weld::Exact,
-            WeldChoice::Metres(t) => Weld::Absolute(t / scale),
-        }
-    }
-}
-
-/// Wall thickness of `--shell` without `--thickness`, m.
-pub const DEFAULT_THICKNESS: f64 = 0.001;
-
-/// Density without `--density` or `--mass`: water, kg/m³.
-pub const DEFAULT_DENSITY: f64 = 1000.0;
 
 /// The `--help` text of `kreisel inertia` after the option list.
 const AFTER_LONG_HELP: &str = "\
@@ -158,7 +129,7 @@ pub struct InertiaArgs {
     pub scale: Option<f64>,
 
     /// Length unit of the mesh coordinates (the same as --scale 0.001, 0.01, 1, 0.0254) [default: m]
-    #[arg(long, value_name = "UNIT", value_enum, conflicts_with = "scale")]
+    #[arg(long, value_name = "UNIT", value_parser = units_parser(), conflicts_with = "scale")]
     pub units: Option<Units>,
 
     /// Model the surface as a thin shell of uniform thickness (open meshes allowed)
@@ -250,39 +221,16 @@ fn parse_digits(text: &str) -> Result<u32, String> {
     }
 }
 
-/// The length unit of the mesh coordinates (`--units`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Units {
-    /// Millimetres.
-    Mm,
-    /// Centimetres.
-    Cm,
-    /// Metres.
-    M,
-    /// Inches.
-    In,
-}
-
-impl Units {
-    /// Metres per unit.
-    pub const fn scale(self) -> f64 {
-        match self {
-            Units::Mm => 0.001,
-            Units::Cm => 0.01,
-            Units::M => 1.0,
-            Units::In => 0.0254,
-        }
-    }
-
-    /// The unit's symbol, as given to `--units`.
-    pub const fn symbol(self) -> &'static str {
-        match self {
-            Units::Mm => "mm",
-            Units::Cm => "cm",
-            Units::M => "m",
-            Units::In => "in",
-        }
-    }
+/// `--units`: the library's units by their symbols, each listed with its
+/// name in `--help`.
+fn units_parser() -> impl clap::builder::TypedValueParser<Value = Units> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    let value = |u: Units| {
+        let name = u.name();
+        let help = format!("{}{}", name[..1].to_uppercase(), &name[1..]);
+        PossibleValue::new(u.symbol()).help(help)
+    };
+    PossibleValuesParser::new(Units::ALL.map(value)).try_map(|symbol| symbol.parse::<Units>())
 }
 
 /// What `kreisel inertia` writes (`--format`).
@@ -479,7 +427,7 @@ mod tests {
         }
         assert_eq!(
             WeldChoice::Metres(1e-6).weld(1e-3),
-            Weld::Absolute(1e-6 / 1e-3)
+            kreisel_inertia::Weld::Absolute(1e-6 / 1e-3)
         );
     }
 

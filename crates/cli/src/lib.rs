@@ -13,8 +13,7 @@ pub mod atomic_file;
 pub mod convert;
 pub mod error;
 pub mod inertia;
-pub mod numbers;
-pub mod representation;
+
 pub mod simulate;
 pub mod top;
 

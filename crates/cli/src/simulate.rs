@@ -3,45 +3,35 @@
 //! fixed pivot under gravity) and stream their states as CSV, in constant
 //! memory.
 //!
-//! The scene is read and checked first ([`scene::parse`], every error
-//! naming its line and key) into a [`kreisel_dynamics::World`], which is
-//! then advanced from row to row on the grid of [`schedule::Schedule`]; the
-//! rows of [`output::CsvWriter`] are written as they are produced. The
-//! physics lives in the World: this module parses, formats and reports.
+//! The scene layer reads and checks the scene (`kreisel_scene::run::prepare`,
+//! every error naming its line and key) into a `kreisel_dynamics::World`
+//! and advances it from row to row on its output grid
+//! (`kreisel_scene::run::run`); the rows are written as CSV as they are
+//! produced. This module parses the arguments, opens and commits the
+//! output files, draws the progress bar and the figure, and reports.
 
 #![forbid(unsafe_code)]
 
-mod body;
-mod contact;
-pub mod events;
 mod figure;
-mod methods;
-mod output;
 mod polhode;
 mod progress;
 mod record;
-pub mod scene;
-pub(crate) mod schedule;
-mod stop;
 
 use std::fs;
 use std::io::{self, BufWriter, Write};
 use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
-use kreisel_dynamics::{BodyId, Plan, World, table_tolerance};
+use kreisel_dynamics::{Plan, table_tolerance};
+use kreisel_scene::columns::{Column, CsvWriter};
+use kreisel_scene::error::SceneError;
+use kreisel_scene::events;
+use kreisel_scene::methods;
+use kreisel_scene::run::{Stop, Watcher, prepare, run as run_scene};
+use kreisel_scene::scene_file::Scene;
 
-use self::output::CsvWriter;
-pub use self::output::{Column, States};
 use self::progress::Progress;
-use self::scene::Scene;
-use self::stop::Stop;
 use crate::error::{CliError, Stream};
-
-use self::methods::AUTO;
-
-/// The bodies' names and ids in scene order.
-pub type Names = [(String, BodyId)];
 
 /// Size of the output buffer.
 const BUFFER_BYTES: usize = 1 << 16;
@@ -341,7 +331,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     };
     // A bad --method is reported before the scene is even read.
     if let Some(name) = &args.method {
-        methods::integrator(name).map_err(|message| CliError::Method { message })?;
+        methods::integrator(name).map_err(|message| SceneError::Method { message })?;
     }
     let columns = match &args.columns {
         Some(list) => Column::parse_list(list).map_err(|message| CliError::Argument {
@@ -383,7 +373,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     }
     let text =
         kreisel_inertia::io::read_limited_text(scene_path, "a scene file").map_err(|source| {
-            CliError::ReadScene {
+            SceneError::ReadScene {
                 path: scene_path.clone(),
                 source,
             }
@@ -426,7 +416,13 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     );
     let mut csv = CsvWriter::with_columns(BufWriter::with_capacity(BUFFER_BYTES, writer), columns)
         .map_err(|source| write_error(&output, source))?;
-    let simulated = simulate(
+    let enabled = progress.enabled();
+    let mut report = |done| progress.update(done);
+    let watcher = enabled.then_some(Watcher {
+        every: progress::CHECK_EVERY,
+        done: &mut report,
+    });
+    let simulated = run_scene(
         &mut scene,
         &mut |states, bodies| {
             if let Some(recorder) = recorder.as_mut() {
@@ -434,7 +430,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
             }
             csv.rows(states, bodies)
         },
-        &mut progress,
+        watcher,
     );
     progress.finish();
     // The rows written before a divergence are valid: flushed either way.
@@ -445,8 +441,9 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     // are dropped: an existing --output or --plot file stays as it was).
     let stopped = match simulated {
         Ok(()) => None,
-        Err(stop) if stop.is_event(&scene) => Some(stop),
-        Err(stop) => return Err(stop.into_error(&scene, scene_path, &name, &output)),
+        Err(Stop::Rows(source)) => return Err(write_error(&output, source)),
+        Err(Stop::Body(stop)) if stop.is_event(&scene) => Some(stop),
+        Err(Stop::Body(stop)) => return Err(stop.into_error(&scene, scene_path, &name).into()),
     };
     flushed.map_err(|source| write_error(&output, source))?;
     // The image is drawn before the CSV is put in place: a figure that
@@ -504,64 +501,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     }
     match stopped {
         None => Ok(()),
-        Some(stop) => Err(stop.into_error(&scene, scene_path, &name, &output)),
+        Some(stop) => Err(stop.into_error(&scene, scene_path, &name).into()),
     }
-}
-
-/// The scene at `path` (whose text is `text`) parsed and checked as `kreisel
-/// simulate` does, moved by `method` if given (`--method`, a known name)
-/// instead of the scene's: the scene and the name of its method.
-///
-/// # Errors
-/// [`CliError::Method`] for an unknown `method`; as [`scene::parse`];
-/// [`CliError::Method`] for a method without a heavy-top version when a
-/// body has a pivot.
-pub fn prepare(
-    path: &std::path::Path,
-    text: &str,
-    method: Option<&str>,
-) -> Result<(Scene, String), CliError> {
-    if let Some(name) = method {
-        methods::integrator(name).map_err(|message| CliError::Method { message })?;
-    }
-    let scene = scene::parse_with_method(path, text, method)?;
-    let name = match (method, &scene.method) {
-        (Some(name), _) => name.to_owned(),
-        (None, Some(name)) => name.clone(),
-        (None, None) => AUTO.to_owned(),
-    };
-    // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
-    if scene.has_pivot {
-        methods::heavy_top_integrator(&name).map_err(|message| CliError::Method { message })?;
-    }
-    Ok((scene, name))
-}
-
-/// Moves a [`prepare`]d scene through its schedule as `kreisel simulate`
-/// does, handing `rows` the bodies' states at every time the CSV has rows
-/// for (with the bodies' names and ids in scene order), instead of writing
-/// them.
-///
-/// # Errors
-/// The one-line error of `kreisel simulate` for a body that diverged
-/// (`path` names the scene, `method` is the name [`prepare`] returned);
-/// the rows before it have been handed over.
-pub fn run_rows(
-    scene: &mut Scene,
-    path: &std::path::Path,
-    method: &str,
-    rows: &mut dyn FnMut(&States, &Names),
-) -> Result<(), CliError> {
-    let mut progress = Progress::new(scene.schedule.steps(), false);
-    let simulated = simulate(
-        scene,
-        &mut |states, bodies| {
-            rows(states, bodies);
-            Ok(())
-        },
-        &mut progress,
-    );
-    simulated.map_err(|stop| stop.into_error(scene, path, method, &Stream::Standard))
 }
 
 /// Writes each body's plan, `NAME: plan`, to standard output.
@@ -678,61 +619,6 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
     }
 }
 
-/// Moves the world through the schedule, handing `rows` the bodies' states at the rows it asks for:
-/// whole steps of `dt` up to each row before the last, then the world is
-/// advanced to `duration`. The world checks every state it reaches; a body
-/// whose state becomes non-finite or whose invariants blow up stops the run
-/// before its row is written.
-///
-/// # Errors
-/// The writer's errors; the first divergence, with the body's index.
-fn simulate(
-    scene: &mut Scene,
-    rows: &mut dyn FnMut(&States, &Names) -> io::Result<()>,
-    progress: &mut Progress,
-) -> Result<(), Stop> {
-    let schedule = scene.schedule;
-    let (world, bodies) = (&mut scene.world, &scene.bodies);
-    // Each row's states are read once; the last guard: no row holds a
-    // number that is not finite.
-    let mut states = Vec::with_capacity(bodies.len());
-    let mut rows = |world: &World, bodies: &Names| -> Result<(), Stop> {
-        output::read_states(world, bodies, &mut states);
-        if let Some((body, time, column)) = output::first_non_finite(&states) {
-            return Err(Stop::NonFinite { body, time, column });
-        }
-        Ok(rows(&states, bodies)?)
-    };
-    rows(world, bodies)?;
-    let steps = schedule.steps();
-    // Without a bar, the world goes from row to row in one call.
-    let chunk = if progress.enabled() {
-        progress::CHECK_EVERY
-    } else {
-        u64::MAX
-    };
-    let mut done = 0;
-    while done < steps - 1 {
-        // The next row before the last step, or the step before the last.
-        let row = schedule.next_row(done).min(steps - 1);
-        let target = row.min(done.saturating_add(chunk) / chunk * chunk);
-        world
-            .advance_steps(target - done)
-            .map_err(Stop::from_world)?;
-        done = target;
-        progress.update(done);
-        if done == row && schedule.writes_row(done) {
-            rows(world, bodies)?;
-        }
-    }
-    world
-        .advance_to(schedule.time(steps))
-        .map_err(Stop::from_world)?;
-    rows(world, bodies)?;
-    progress.update(steps);
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use std::path::Path;
@@ -749,7 +635,9 @@ mod tests {
         [body.contact]\nshape = \"sphere\"\nradius = 0.015\ncenter = [0, 0, 0.003]\nfriction = \"viscous\"\nmu = 0.3\n";
 
     fn plans(method: Option<&str>) -> Vec<String> {
-        let scene = scene::parse_with_method(Path::new("s.toml"), SCENE, method).unwrap();
+        let scene =
+            kreisel_scene::scene_file::parse_with_method(Path::new("s.toml"), SCENE, method)
+                .unwrap();
         let mut out = Vec::new();
         write_plans(&scene, &mut out).unwrap();
         String::from_utf8(out)
@@ -768,7 +656,7 @@ mod tests {
             let text = format!(
                 "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n{tolerance}{ball}"
             );
-            let scene = scene::parse(Path::new("s.toml"), &text).unwrap();
+            let scene = kreisel_scene::scene_file::parse(Path::new("s.toml"), &text).unwrap();
             let mut out = Vec::new();
             write_plans(&scene, &mut out).unwrap();
             let line = String::from_utf8(out).unwrap();
@@ -816,5 +704,21 @@ mod tests {
             lines[5].starts_with("tippe: body on the ground: ground-top dopri5"),
             "{lines:?}"
         );
+    }
+
+    #[test]
+    fn help_names_the_methods_without_a_heavy_top_version() {
+        let help: Vec<&str> = AFTER_LONG_HELP.split_whitespace().collect();
+        let help = help.join(" ");
+        let without = kreisel_dynamics::FreeBodyMethod::ALL
+            .into_iter()
+            .filter(|m| m.heavy_top().is_none())
+            .map(kreisel_dynamics::FreeBodyMethod::name);
+        // The help writes pdmv4 … pdmv10 as `pdmv*`.
+        let mut listed: Vec<&str> = without.filter(|n| !n.starts_with("pdmv")).collect();
+        listed.push("pdmv*");
+        let (last, first) = listed.split_last().unwrap();
+        let phrase = format!("{} and {last} have none", first.join(", "));
+        assert!(help.contains(&phrase), "{phrase}");
     }
 }

@@ -18,13 +18,12 @@ pub mod series;
 use std::path::PathBuf;
 
 use glam::DVec3;
-use kreisel_dynamics::{
-    DynamicsError, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, TopMotionKind,
-};
+use kreisel_dynamics::LagrangeTopMotion;
 use kreisel_plot::ImageFormat;
+use kreisel_scene::top_summary::{Summary, TopRequest, on_the_vertical, solve_and_summarise};
 
 use crate::error::CliError;
-use crate::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 /// The `--help` text of `kreisel top` after the option list.
 const AFTER_LONG_HELP: &str = "\
@@ -173,111 +172,26 @@ pub enum Format {
     Json,
 }
 
-/// The library's answers for one top, as plain numbers.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Summary {
-    /// I₁ about the pivot, kg m².
-    pub i1: f64,
-    /// I₃, kg m².
-    pub i3: f64,
-    /// M g l, J.
-    pub mgl: f64,
-    /// θ(0), rad.
-    pub theta0: f64,
-    /// θ̇(0), rad/s.
-    pub theta_dot0: f64,
-    /// φ̇(0), rad/s.
-    pub phi_dot0: f64,
-    /// ψ̇(0), rad/s.
-    pub psi_dot0: f64,
-    /// a = p_ψ / I₁, rad/s.
-    pub a: f64,
-    /// b = p_φ / I₁, rad/s.
-    pub b: f64,
-    /// α = 2E′/I₁, 1/s².
-    pub alpha: f64,
-    /// β = 2Mgl/I₁, 1/s².
-    pub beta: f64,
-    /// The spin ω₃, rad/s.
-    pub omega3: f64,
-    /// Real roots of f, ascending.
-    pub roots: Vec<f64>,
-    /// Smallest θ, rad.
-    pub theta_min: f64,
-    /// Largest θ, rad.
-    pub theta_max: f64,
-    /// Period of θ(t), s (`None` when θ stays constant: `motion` is `None`).
-    pub nutation_period: Option<f64>,
-    /// Mean φ̇ over a nutation period, rad/s.
-    pub mean_precession_rate: Option<f64>,
-    /// `no_loops`, `loops` or `cusps`.
-    pub motion: Option<&'static str>,
-    /// θ₀ = 0 and θ̇₀ = 0.
-    pub sleeping: bool,
-    /// Whether the upright spinning top is stable (notes §3.11).
-    pub sleeping_stable: bool,
-}
-
-impl Summary {
-    /// The same summary with its angles in degrees: θ₀ as given
-    /// (`theta0_degrees`, not converted back and forth), θ_min and θ_max
-    /// by [`f64::to_degrees`].
-    pub fn in_degrees(&self, theta0_degrees: f64) -> Summary {
-        Summary {
-            theta0: theta0_degrees,
-            theta_min: self.theta_min.to_degrees(),
-            theta_max: self.theta_max.to_degrees(),
-            ..self.clone()
+impl TopArgs {
+    /// The top and its initial state, for the library.
+    pub fn request(&self) -> TopRequest {
+        TopRequest {
+            i1: self.i1,
+            i3: self.i3,
+            mgl: self.mgl,
+            theta0: self.theta0,
+            theta_dot0: self.theta_dot0,
+            phi_dot0: self.phi_dot0,
+            psi_dot0: self.psi_dot0,
         }
     }
-}
 
-/// The name of a kind of motion in the output.
-fn motion_name(kind: TopMotionKind) -> &'static str {
-    match kind {
-        TopMotionKind::NoLoops => "no_loops",
-        TopMotionKind::Loops => "loops",
-        TopMotionKind::Cusps => "cusps",
-    }
-}
-
-impl TopArgs {
-    /// The arguments as (option name, value), in command-line order.
-    fn numbers(&self) -> [(&'static str, f64); 7] {
-        [
-            ("--i1", self.i1),
-            ("--i3", self.i3),
-            ("--mgl", self.mgl),
-            ("--theta0", self.theta0),
-            ("--theta-dot0", self.theta_dot0),
-            ("--phi-dot0", self.phi_dot0),
-            ("--psi-dot0", self.psi_dot0),
-        ]
-    }
-
-    /// Checks what the CLI can check itself (finite numbers, I₁ > 0, the plot
-    /// format) before the library checks the physics.
+    /// Checks the numbers ([`TopRequest::validate`]), then the plot format.
     ///
     /// # Errors
     /// [`CliError::Argument`] naming the option.
     fn validate(&self) -> Result<Option<ImageFormat>, CliError> {
-        for (name, value) in self.numbers() {
-            if !value.is_finite() {
-                return Err(argument(
-                    name,
-                    format!("{} is not a finite number", Shortest(value)),
-                ));
-            }
-        }
-        if self.i1 <= 0.0 {
-            return Err(argument(
-                "--i1",
-                format!(
-                    "{} kg m^2: the moment of inertia must be positive",
-                    Shortest(self.i1)
-                ),
-            ));
-        }
+        self.request().validate()?;
         match &self.plot {
             None => Ok(None),
             Some(path) => ImageFormat::from_path(path).map(Some).ok_or_else(|| {
@@ -291,17 +205,6 @@ impl TopArgs {
             }),
         }
     }
-
-    /// The initial conditions for the library (φ₀ = ψ₀ = 0).
-    fn initial(&self) -> LagrangeTopInitial {
-        LagrangeTopInitial {
-            theta: self.theta0,
-            theta_dot: self.theta_dot0,
-            phi_dot: self.phi_dot0,
-            psi_dot: self.psi_dot0,
-            ..LagrangeTopInitial::default()
-        }
-    }
 }
 
 /// An error about one command-line option.
@@ -309,79 +212,6 @@ fn argument(name: &'static str, message: String) -> CliError {
     CliError::Argument {
         argument: name.to_owned(),
         message,
-    }
-}
-
-/// The command-line option of a parameter the library names.
-fn option_name(parameter: &str) -> String {
-    match parameter {
-        "theta" | "theta_dot" | "phi_dot" | "psi_dot" | "phi" | "psi" => {
-            format!("--{}0", parameter.replace('_', "-"))
-        }
-        other => format!("--{}", other.replace('_', "-")),
-    }
-}
-
-/// The library's error as an error about the option it names.
-fn dynamics_error(error: DynamicsError) -> CliError {
-    match error {
-        DynamicsError::InvalidTop {
-            parameter,
-            value,
-            reason,
-        } => CliError::Argument {
-            argument: option_name(parameter),
-            message: format!("{}: {reason}", Shortest(value)),
-        },
-        _ => CliError::Top {
-            message: crate::error::one_line(&error.to_string()),
-        },
-    }
-}
-
-/// Solves the motion of the top the arguments describe.
-///
-/// # Errors
-/// [`CliError::Argument`] for a parameter the library rejects.
-fn solve(args: &TopArgs) -> Result<LagrangeTopMotion, CliError> {
-    let top = LagrangeTop::try_new(args.i1, args.i3, args.mgl).map_err(dynamics_error)?;
-    top.try_solve(args.initial()).map_err(dynamics_error)
-}
-
-/// Whether the axis stays on the vertical: the sleeping top (θ = 0) or
-/// at rest in θ on the downward vertical (θ = π, the f64 nearest π).
-fn on_the_vertical(motion: &LagrangeTopMotion) -> bool {
-    motion.motion().is_none()
-        && (motion.theta_max() == 0.0 || motion.theta_min() >= std::f64::consts::PI)
-}
-
-/// The library's answers for `motion`.
-fn summarise(args: &TopArgs, motion: &LagrangeTopMotion) -> Summary {
-    Summary {
-        i1: args.i1,
-        i3: args.i3,
-        mgl: args.mgl,
-        theta0: args.theta0,
-        theta_dot0: args.theta_dot0,
-        phi_dot0: args.phi_dot0,
-        psi_dot0: args.psi_dot0,
-        a: motion.a(),
-        b: motion.b(),
-        alpha: motion.alpha(),
-        beta: motion.beta(),
-        omega3: motion.omega3(),
-        roots: motion.roots(),
-        theta_min: motion.theta_min(),
-        theta_max: motion.theta_max(),
-        // A period only for a motion that nutates (`motion` not null); on
-        // the vertical (θ = 0 or π throughout) φ itself is undefined.
-        nutation_period: motion.motion().and(motion.nutation_period()),
-        mean_precession_rate: motion
-            .mean_precession_rate()
-            .filter(|_| !on_the_vertical(motion)),
-        motion: motion.motion().map(motion_name),
-        sleeping: motion.is_sleeping(),
-        sleeping_stable: motion.sleeping_stable(),
     }
 }
 
@@ -511,18 +341,6 @@ fn plot(
     })
 }
 
-/// The motion of the top `args` describes and the report of it, as
-/// [`run`] computes them (the plot aside).
-///
-/// # Errors
-/// [`CliError::Argument`] for a bad option value (naming it).
-pub fn solve_and_summarise(args: &TopArgs) -> Result<(LagrangeTopMotion, Summary), CliError> {
-    args.validate()?;
-    let motion = solve(args)?;
-    let summary = summarise(args, &motion);
-    Ok((motion, summary))
-}
-
 /// The arguments with --theta0 in radians (`degrees`: given in degrees).
 ///
 /// # Errors
@@ -555,7 +373,7 @@ pub fn run(command: &TopCommand) -> Result<(), CliError> {
     let degrees = command.degrees;
     let args = &in_radians(&command.top, degrees)?;
     let format = args.validate()?;
-    let (motion, summary) = solve_and_summarise(args)?;
+    let (motion, summary) = solve_and_summarise(&args.request())?;
     if command.csv.is_some() && command.csv == args.plot {
         return Err(argument(
             "--csv",
@@ -615,25 +433,10 @@ mod tests {
             assert!(e.starts_with(&format!("{name}: ")), "{e}");
         };
         check(&|a| a.i1 = 0.0, "--i1");
-        check(&|a| a.i1 = -1.0, "--i1");
-        check(&|a| a.theta_dot0 = f64::NAN, "--theta-dot0");
-        check(&|a| a.psi_dot0 = f64::INFINITY, "--psi-dot0");
         check(&|a| a.plot = Some("top.jpg".into()), "--plot");
         check(&|a| a.plot = Some("top".into()), "--plot");
         let mut ok = args();
         ok.plot = Some("x.PNG".into());
         assert_eq!(ok.validate().unwrap(), Some(ImageFormat::Png));
-    }
-
-    #[test]
-    fn library_errors_name_the_option() {
-        let e = dynamics_error(DynamicsError::InvalidTop {
-            parameter: "theta_dot",
-            value: f64::NAN,
-            reason: "not finite",
-        });
-        assert!(e.to_string().starts_with("--theta-dot0: "), "{e}");
-        assert_eq!(option_name("i3"), "--i3");
-        assert_eq!(option_name("theta"), "--theta0");
     }
 }

@@ -3,9 +3,9 @@
 //! argument where the CLI names its option: `i3`, not `--i3`), and the
 //! guard that keeps a Rust panic from ever crossing into Python.
 
-use kreisel_cli::error::{BodyProblem, CliError, one_line};
-use kreisel_cli::numbers::Shortest;
 use kreisel_inertia::InertiaError;
+use kreisel_scene::error::{BodyProblem, SceneError, one_line};
+use kreisel_scene::numbers::Shortest;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -18,7 +18,7 @@ pyo3::create_exception!(
 
 /// A `KreiselError` with `message` (made one line, as the CLI prints it).
 pub fn error(message: impl std::fmt::Display) -> PyErr {
-    KreiselError::new_err(kreisel_cli::error::one_line(&message.to_string()))
+    KreiselError::new_err(one_line(&message.to_string()))
 }
 
 /// The Python keyword of a command-line option: `--theta-dot0` is
@@ -30,19 +30,19 @@ fn keyword(option: &str) -> String {
 /// A `KreiselError` for an error of the CLI's code: its one line, but
 /// where it names a command-line option (a typed field, or a hint of the
 /// CLI's own wording) the Python argument instead.
-pub fn cli_error(e: CliError) -> PyErr {
+pub fn scene_error(e: SceneError) -> PyErr {
     match e {
-        CliError::Argument { argument, message } => {
+        SceneError::Argument { argument, message } => {
             error(format!("{}: {message}", keyword(&argument)))
         }
-        CliError::Method { message } => error(format!("method: {message}")),
-        CliError::DerivedDensity { path, mass, volume } => error(format!(
+        SceneError::Method { message } => error(format!("method: {message}")),
+        SceneError::DerivedDensity { path, mass, volume } => error(format!(
             "mass: {}: total volume {} m^3 gives no finite positive density for mass {} kg",
             path.display(),
             Shortest(volume),
             Shortest(mass)
         )),
-        CliError::Body {
+        SceneError::Body {
             path,
             body,
             problem,

@@ -12,21 +12,22 @@
 use std::path::PathBuf;
 
 use glam::{DMat3, DVec3};
-use kreisel_cli::error::{BodyProblem, CliError};
-use kreisel_cli::inertia::{
-    DensityChoice, FRAME, Report, Setup, Summary, Units, WeldChoice, compute, compute_scaled,
-};
 use kreisel_inertia::io::{Body, LoadWarning};
 use kreisel_inertia::{MassModel, TriMesh};
+use kreisel_scene::error::{BodyProblem, SceneError};
+use kreisel_scene::inertia_request::{
+    DensityChoice, FRAME, Report, Setup, Summary, compute, compute_scaled,
+};
+use kreisel_scene::mesh_options::{Units, WeldChoice};
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
 use crate::arguments::{number, path};
-use crate::errors::{cli_error, error, guard};
+use crate::errors::{error, guard, scene_error};
 
 /// Wall thickness of the shell model without `thickness`, m (the CLI's).
-const DEFAULT_THICKNESS: f64 = kreisel_cli::inertia::DEFAULT_THICKNESS;
+const DEFAULT_THICKNESS: f64 = kreisel_scene::mesh_options::DEFAULT_THICKNESS;
 
 /// The name of the file in the report of `mass_properties_from_arrays`.
 const ARRAYS_FILE: &str = "<arrays>";
@@ -253,7 +254,7 @@ fn mass_properties<'py>(
         let setup = setup(
             file, density, mass, units, model, thickness, weld, merge, scale,
         )?;
-        let report = py.detach(|| compute(setup)).map_err(cli_error)?;
+        let report = py.detach(|| compute(setup)).map_err(scene_error)?;
         report_dict(py, &report)
     })
 }
@@ -360,8 +361,8 @@ fn body_of(
     name: &str,
     vertices: Vec<DVec3>,
     faces: Vec<[u32; 3]>,
-) -> Result<Body, CliError> {
-    let body_error = |problem: BodyProblem| CliError::Body {
+) -> Result<Body, SceneError> {
+    let body_error = |problem: BodyProblem| SceneError::Body {
         path: setup.file.clone(),
         body: name.to_owned(),
         problem,
@@ -440,7 +441,7 @@ fn mass_properties_from_arrays<'py>(
                 let body = body_of(&setup, name, vertices, faces)?;
                 compute_scaled(setup, vec![body])
             })
-            .map_err(cli_error)?;
+            .map_err(scene_error)?;
         report_dict(py, &report)
     })
 }

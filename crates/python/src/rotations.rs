@@ -2,16 +2,17 @@
 //! over numpy arrays of any leading shape.
 //!
 //! Every function runs the CLI's own conversion (`kreisel convert`,
-//! [`kreisel_cli::representation::Representation`]) row by row, so Python
+//! [`kreisel_scene::representation::Representation`]) row by row, so Python
 //! gets the CLI's numbers bit for bit, its normalisation rules, ranges and
 //! error messages; a bad row is named by its index (`angles[2, 1]: …`)
 //! where the CLI names a line. The GIL is released while the rows are
 //! converted. Euler rates and angular velocity live in `rotations_rates.rs`.
 
 use glam::DQuat;
-use kreisel_cli::error::LineProblem;
-use kreisel_cli::representation::{Representation, euler_angles_of_quat, euler_angles_of_quats};
 use kreisel_kinematics::EulerSequence;
+use kreisel_scene::line_problem::LineProblem;
+use kreisel_scene::representation::Representation;
+use kreisel_scene::rotation_lines::{euler_angles_of_quat, euler_angles_of_quats};
 use numpy::PyArrayDyn;
 use pyo3::prelude::*;
 

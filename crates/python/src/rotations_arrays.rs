@@ -5,8 +5,8 @@
 
 use std::borrow::Cow;
 
-use kreisel_cli::error::LineProblem;
-use kreisel_cli::numbers::Numbers;
+use kreisel_scene::line_problem::LineProblem;
+use kreisel_scene::numbers::Numbers;
 use numpy::ndarray::{Array, IxDyn};
 use numpy::{AllowTypeChange, IntoPyArray, PyArrayDyn, PyArrayLike, PyUntypedArrayMethods};
 use pyo3::prelude::*;

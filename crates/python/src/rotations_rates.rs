@@ -7,10 +7,10 @@
 //! while the rows are computed.
 
 use glam::{DQuat, DVec3};
-use kreisel_cli::error::LineProblem;
 use kreisel_kinematics::{
     KinematicsError, omega_body_from_attitudes, omega_world_from_attitudes, try_normalize_quat,
 };
+use kreisel_scene::line_problem::LineProblem;
 use numpy::PyArrayDyn;
 use numpy::ndarray::{ArrayViewD, IxDyn};
 use pyo3::prelude::*;

@@ -6,24 +6,25 @@
 //!
 //! No physics here: the scene is parsed by the CLI's parser into the
 //! engine's World and moved along the CLI's schedule
-//! ([`kreisel_cli::simulate::run_rows`]); where the CLI formats a row, this
+//! ([`kreisel_scene::run::run_rows`]); where the CLI formats a row, this
 //! copies the state's numbers into columns, so the arrays hold the very
 //! numbers the CSV spells.
 
 use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 
-use kreisel_cli::error::CliError;
-use kreisel_cli::simulate::scene::Scene;
-use kreisel_cli::simulate::{Column, States, prepare, run_rows};
 use kreisel_dynamics::BodyId;
+use kreisel_scene::columns::{Column, States};
+use kreisel_scene::error::SceneError;
+use kreisel_scene::run::{prepare, run_rows};
+use kreisel_scene::scene_file::Scene;
 use numpy::PyArray1;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arguments;
-use crate::errors::{cli_error, error, guard};
+use crate::errors::{error, guard, scene_error};
 
 #[path = "simulation_table.rs"]
 mod table;
@@ -115,11 +116,11 @@ fn run(
     text: Option<String>,
     method: Option<&str>,
     threads: Option<NonZeroUsize>,
-) -> Result<(Columns, Scene), CliError> {
+) -> Result<(Columns, Scene), SceneError> {
     let text = match text {
         Some(text) => text,
         None => kreisel_inertia::io::read_limited_text(path, "a scene file").map_err(|source| {
-            CliError::ReadScene {
+            SceneError::ReadScene {
                 path: path.to_owned(),
                 source,
             }
@@ -204,7 +205,7 @@ fn simulate<'py>(
             .transpose()?;
         let (columns, ran) = py
             .detach(|| run(&path, text, method, threads))
-            .map_err(cli_error)?;
+            .map_err(scene_error)?;
         let dict = PyDict::new(py);
         let np = py.import("numpy")?;
         let mut numbers = columns.numbers.into_iter();

@@ -6,17 +6,17 @@
 //! [`ContactLaw`] and shapes check the numbers, this names the key.
 
 use glam::{DQuat, DVec3};
-use kreisel_cli::simulate::Names;
-use kreisel_cli::simulate::events::{kind_name, merged};
 use kreisel_dynamics::{
     Body, ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, SphereContact,
     Support, TableContact, TableEvent, TableEventKind, World,
 };
+use kreisel_scene::events::{kind_name, merged};
+use kreisel_scene::run::Names;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PySequence, PyString, PyTuple};
 
-use kreisel_cli::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 use crate::arguments::{finite, numbers};
 use crate::errors::error;

@@ -13,7 +13,7 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use kreisel_cli::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 use super::table;
 use crate::arguments::{finite, int, integer, matrix3, named, numbers};

@@ -2,19 +2,19 @@
 //! `kreisel.LagrangeTop` (the same top as an object whose motion is
 //! evaluated at numpy arrays of times).
 //!
-//! No physics here: the arguments become the CLI's [`TopArgs`], checked and
-//! solved by the CLI's [`solve_and_summarise`] (so the numbers and messages
-//! are the CLI's); the motion is the library's
+//! No physics here: the arguments become the scene layer's [`TopRequest`],
+//! checked and solved by its [`solve_and_summarise`] (so the numbers and
+//! messages are the CLI's); the motion is the library's
 //! [`kreisel_dynamics::LagrangeTopMotion`].
 
-use kreisel_cli::top::{Format, Summary, TopArgs, solve_and_summarise};
 use kreisel_dynamics::LagrangeTopMotion;
+use kreisel_scene::top_summary::{Summary, TopRequest, solve_and_summarise};
 use numpy::{IxDyn, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::arguments::number;
-use crate::errors::{cli_error, error, guard};
+use crate::errors::{error, guard, scene_error};
 
 /// Arrays of times at least this long are evaluated without the GIL.
 const DETACH_FROM: usize = 1024;
@@ -23,13 +23,13 @@ const DETACH_FROM: usize = 1024;
 type Rate<'a, 'py> = Option<&'a Bound<'py, PyAny>>;
 
 /// The arguments as the CLI's (numbers, not yet checked: the CLI checks
-/// them, naming the option, which [`cli_error`] names by its keyword).
+/// them, naming the option, which [`scene_error`] names by its keyword).
 fn args(
     [i1, i3, mgl, theta0]: [&Bound<'_, PyAny>; 4],
     [theta_dot0, phi_dot0, psi_dot0]: [Rate<'_, '_>; 3],
-) -> PyResult<TopArgs> {
+) -> PyResult<TopRequest> {
     let rate = |name, value: Rate<'_, '_>| value.map_or(Ok(0.0), |v| number(name, v));
-    Ok(TopArgs {
+    Ok(TopRequest {
         i1: number("i1", i1)?,
         i3: number("i3", i3)?,
         mgl: number("mgl", mgl)?,
@@ -37,8 +37,6 @@ fn args(
         theta_dot0: rate("theta_dot0", theta_dot0)?,
         phi_dot0: rate("phi_dot0", phi_dot0)?,
         psi_dot0: rate("psi_dot0", psi_dot0)?,
-        format: Format::Json,
-        plot: None,
     })
 }
 
@@ -104,7 +102,7 @@ fn top<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let args = args([i1, i3, mgl, theta0], [theta_dot0, phi_dot0, psi_dot0])?;
-        let (_, summary) = solve_and_summarise(&args).map_err(cli_error)?;
+        let (_, summary) = solve_and_summarise(&args).map_err(scene_error)?;
         summary_dict(py, &summary)
     })
 }
@@ -189,7 +187,7 @@ impl PyLagrangeTop {
     ) -> PyResult<Self> {
         guard(|| {
             let args = args([i1, i3, mgl, theta0], [theta_dot0, phi_dot0, psi_dot0])?;
-            let (motion, summary) = solve_and_summarise(&args).map_err(cli_error)?;
+            let (motion, summary) = solve_and_summarise(&args).map_err(scene_error)?;
             Ok(Self { motion, summary })
         })
     }

@@ -15,8 +15,8 @@
 //! letter and position, `Z1,X2,Z3`. With `--degrees` the angles end in
 //! `_deg` (`yaw_deg`, `angle_deg`; rotvec stays in radians).
 
-use crate::error::LineProblem;
-use crate::representation::Representation;
+use kreisel_scene::line_problem::LineProblem;
+use kreisel_scene::representation::Representation;
 
 /// How the lines of a log are laid out.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

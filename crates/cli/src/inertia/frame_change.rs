@@ -12,7 +12,7 @@ use glam::{DMat3, DQuat, DVec3};
 
 use super::inertial_form::rpy_sequence;
 use super::{Report, Summary};
-use crate::numbers::{Shortest, parse_numbers};
+use kreisel_scene::numbers::{Shortest, parse_numbers};
 
 /// Where the mesh sits in a link frame, as a URDF `<origin xyz rpy>`.
 ///

@@ -10,10 +10,8 @@ use glam::{DMat3, DVec3};
 
 use super::shown::Shown;
 use super::{Report, Setup, Summary, View};
-use crate::numbers::Shortest;
-
-/// The frame every tensor and axis is given in.
-pub const FRAME: &str = "center of mass, mesh axes";
+use kreisel_scene::inertia_request::FRAME;
+use kreisel_scene::numbers::Shortest;
 
 /// The frame with `--transform`.
 pub const LINK_FRAME: &str = "center of mass, link axes";

@@ -9,8 +9,8 @@ use glam::{DMat3, DVec3};
 
 use super::shown::Shown;
 use super::{Report, Summary, View};
-use crate::error::one_line;
-use crate::numbers::Shortest;
+use kreisel_scene::error::one_line;
+use kreisel_scene::numbers::Shortest;
 
 /// Width of the label column.
 const LABEL: usize = 24;

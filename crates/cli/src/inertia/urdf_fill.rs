@@ -26,7 +26,8 @@ use super::urdf_relocate::relocate;
 use super::urdf_report::{Fields, UrdfReport, Value};
 use super::urdf_table::{render, sig, sig3};
 use super::{DEFAULT_DENSITY, Format, InertiaArgs, InertialForm, WeldChoice};
-use crate::error::{CliError, Stream, one_line};
+use crate::error::{CliError, Stream};
+use kreisel_scene::error::one_line;
 
 /// Where a filled link's mass comes from.
 #[derive(Debug, Clone, Copy, PartialEq)]

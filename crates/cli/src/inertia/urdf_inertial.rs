@@ -10,7 +10,7 @@ use glam::DMat3;
 use kreisel_inertia::MassProperties;
 
 use super::InertialForm;
-use crate::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 /// How the element is laid out in the file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -23,7 +23,8 @@ use super::urdf_document::{Geometry, Link, Shape};
 use super::urdf_notes::tidy;
 use super::urdf_paths::MeshPaths;
 use super::urdf_table::sig;
-use crate::error::{CliError, one_line};
+use crate::error::CliError;
+use kreisel_scene::error::one_line;
 
 /// A link's geometry integrated at unit density (1 kg/m³).
 #[derive(Debug, Clone, PartialEq)]

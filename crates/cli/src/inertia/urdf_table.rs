@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use crate::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 /// `x` to six significant digits, in shortest form (`0.0123457`).
 pub fn sig(x: f64) -> String {

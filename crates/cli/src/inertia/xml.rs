@@ -31,7 +31,7 @@ use glam::DMat3;
 use super::inertial_form::Inertial;
 use super::rounding::significant;
 use super::{Report, View};
-use crate::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 /// The assembly's inertial as written.
 fn written(report: &Report, view: &View) -> Inertial {

@@ -14,7 +14,7 @@ use kreisel_plot::sphere::{SpherePanel, View};
 
 use super::polhode;
 use super::record::{MAX_BODIES, Recorded, Track};
-use crate::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 /// Figure width, px.
 pub const WIDTH: u32 = 1400;

@@ -100,7 +100,7 @@ impl Recorder {
 
     /// Notes the rows of one time (the states [`super::output::read_states`]
     /// read).
-    pub fn record(&mut self, states: &super::output::States) {
+    pub fn record(&mut self, states: &kreisel_scene::columns::States) {
         let samples: Vec<Sample> = states
             .iter()
             .filter(|(index, _)| *index < self.recorded)
@@ -182,7 +182,7 @@ mod tests {
         let rows = 3 * MAX_POINTS + 7;
         let mut states = Vec::new();
         for _ in 0..rows {
-            super::super::output::read_states(&world, &bodies, &mut states);
+            kreisel_scene::columns::read_states(&world, &bodies, &mut states);
             recorder.record(&states);
             world.advance_steps(1).unwrap();
         }

@@ -10,7 +10,7 @@ use kreisel_plot::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text};
 use kreisel_plot::sphere::{LocalView, SpherePanel, View, circle_of_latitude};
 
 use super::labels::{self, LABEL_SIZE, PlacedLabel};
-use crate::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 /// Figure width, px.
 pub const WIDTH: u32 = 1280;

@@ -7,7 +7,7 @@
 use core::fmt::Write;
 
 use super::Summary;
-use crate::numbers::Shortest;
+use kreisel_scene::numbers::Shortest;
 
 /// One field of the report: its JSON key, its value, its unit (text only).
 enum Value<'a> {

@@ -27,8 +27,8 @@ use std::path::Path;
 use kreisel_dynamics::LagrangeTopMotion;
 
 use crate::error::{CliError, Stream};
-use crate::numbers::{Shortest, write_numbers};
-use crate::simulate::schedule::{Schedule, ScheduleProblem};
+use kreisel_scene::numbers::{Shortest, write_numbers};
+use kreisel_scene::schedule::{Schedule, ScheduleProblem};
 
 /// The header line of the CSV, without its newline.
 pub const HEADER: &str = "t,theta,phi,psi,theta_dot,phi_dot,psi_dot,qw,qx,qy,qz";

@@ -71,7 +71,7 @@ fn every_seed_is_valid_input() {
         let text = std::fs::read_to_string(&path).unwrap();
         // Scenes naming a mesh are parsed as if beside the OBJ seeds.
         let at = corpus_dir("obj").join("fuzz.toml");
-        let parsed = kreisel_cli::simulate::scene::parse(Path::new(&at), &text);
+        let parsed = kreisel_scene::scene_file::parse(Path::new(&at), &text);
         assert!(
             parsed.is_ok(),
             "{}: {:?}",

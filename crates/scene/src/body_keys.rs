@@ -19,10 +19,10 @@ use kreisel_kinematics::{EulerSequence, try_normalize_quat};
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::contact::{self, Contacts, RawContacts};
-use super::scene::{Keys, SceneFile};
-use crate::error::CliError;
+use crate::contact_keys::{self as contact, Contacts, RawContacts};
+use crate::error::SceneError;
 use crate::numbers::Shortest;
+use crate::scene_keys::{Keys, SceneFile};
 
 /// A `[[body]]` table as written.
 #[derive(Debug, Deserialize)]
@@ -95,14 +95,14 @@ impl RawBody {
 /// to `world`; mesh paths are relative to `folder`. Returns its name and id.
 ///
 /// # Errors
-/// [`CliError::Scene`] naming the line and key of the first problem.
+/// [`SceneError::Scene`] naming the line and key of the first problem.
 pub fn add_body(
     file: SceneFile<'_>,
     raw: &Spanned<RawBody>,
     number: usize,
     folder: &Path,
     world: &mut World,
-) -> Result<(String, BodyId), CliError> {
+) -> Result<(String, BodyId), SceneError> {
     let b = raw.get_ref();
     let name = match &b.name {
         Some(name) => checked_name(file, name)?,
@@ -224,7 +224,7 @@ fn watched_touching(
     contacts: &Spanned<RawContacts>,
     index: usize,
     gap: f64,
-) -> CliError {
+) -> SceneError {
     let tables = contact::tables(contacts);
     let span = tables
         .get(index + 1)
@@ -249,7 +249,7 @@ fn painleve_at_start(
     on_table: Option<&(Vec<TableContact>, DVec3)>,
     q: DQuat,
     error: &DynamicsError,
-) -> CliError {
+) -> SceneError {
     let (laws, position) = on_table.map_or((&[][..], DVec3::ZERO), |(c, p)| (c.as_slice(), *p));
     let touching_with_friction = |c: &TableContact| {
         let gap = position.z + c.shape.contact_from_com_world(q.normalize()).z;
@@ -283,7 +283,7 @@ fn inside_table(
     contacts: &Spanned<RawContacts>,
     index: usize,
     gap: f64,
-) -> CliError {
+) -> SceneError {
     let message = format!(
         "[[body.contact]] #{} is below the table at the start (its lowest point at z = {} m): \
          a body on the table starts above it or touching it",
@@ -314,7 +314,7 @@ fn check_height(
     given: &Spanned<[f64; 3]>,
     world: &World,
     id: BodyId,
-) -> Result<(), CliError> {
+) -> Result<(), SceneError> {
     let Some(state) = world.state(id) else {
         return Ok(());
     };
@@ -343,7 +343,7 @@ type KeySpan = (&'static str, std::ops::Range<usize>);
 /// The applied inputs from `torque`, `torque_body`, `force` and
 /// `angular_damping` (all zero when absent), and the first of those keys
 /// given with its span.
-fn inputs(keys: &Keys<'_>, b: &RawBody) -> Result<(Inputs, Option<KeySpan>), CliError> {
+fn inputs(keys: &Keys<'_>, b: &RawBody) -> Result<(Inputs, Option<KeySpan>), SceneError> {
     let vectors = [
         ("torque", &b.torque),
         ("torque_body", &b.torque_body),
@@ -373,7 +373,7 @@ fn inputs(keys: &Keys<'_>, b: &RawBody) -> Result<(Inputs, Option<KeySpan>), Cli
 }
 
 /// The `name`, which must be a plain CSV field.
-fn checked_name(file: SceneFile<'_>, name: &Spanned<String>) -> Result<String, CliError> {
+fn checked_name(file: SceneFile<'_>, name: &Spanned<String>) -> Result<String, SceneError> {
     let text = name.get_ref();
     if text.is_empty() || text.chars().any(|c| c == ',' || c == '"' || c.is_control()) {
         let message = "`name` must be non-empty, without commas, quotes or control characters \
@@ -388,7 +388,7 @@ fn optional_vector(
     keys: &Keys<'_>,
     key: &str,
     value: &Option<Spanned<[f64; 3]>>,
-) -> Result<DVec3, CliError> {
+) -> Result<DVec3, SceneError> {
     value
         .as_ref()
         .map_or(Ok(DVec3::ZERO), |v| keys.vector(key, v))
@@ -412,7 +412,7 @@ fn inertia(
     keys: &Keys<'_>,
     raw: &Spanned<RawBody>,
     folder: &Path,
-) -> Result<CheckedInertia, CliError> {
+) -> Result<CheckedInertia, SceneError> {
     let b = raw.get_ref();
     let given: Vec<(&'static str, std::ops::Range<usize>)> = [
         ("inertia", b.inertia.as_ref().map(Spanned::span)),
@@ -489,7 +489,7 @@ fn mesh_properties(
     mesh: &Spanned<String>,
     density: f64,
     folder: &Path,
-) -> Result<MassProperties, CliError> {
+) -> Result<MassProperties, SceneError> {
     let path = folder.join(mesh.get_ref());
     let options = SolidOptions::new(Material::Density(density));
     let solid =
@@ -509,7 +509,7 @@ fn mesh_properties(
 }
 
 /// The initial attitude from `orientation` or `euler` (identity without either).
-fn attitude(keys: &Keys<'_>, b: &RawBody) -> Result<DQuat, CliError> {
+fn attitude(keys: &Keys<'_>, b: &RawBody) -> Result<DQuat, SceneError> {
     match (&b.orientation, &b.euler) {
         (Some(_), Some(euler)) => Err(keys.fail(
             euler,

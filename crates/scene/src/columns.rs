@@ -159,7 +159,7 @@ impl From<&BodyState> for Row {
 }
 
 /// The bodies' states at one time: each body's index in scene order (in
-/// the scene's [`super::Names`]) and its state.
+/// the scene's [`crate::run::Names`]) and its state.
 pub type States = [(usize, BodyState)];
 
 /// The state of each of `bodies` at the world's current time, in scene

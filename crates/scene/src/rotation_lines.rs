@@ -1,14 +1,7 @@
-//! The rotation representations of `kreisel convert` (`--from`/`--to REPR`)
-//! and their conversion from and to unit quaternions.
-//!
-//! Every conversion goes through a unit quaternion: `numbers → DQuat` checks
-//! that the numbers describe a rotation, `DQuat → numbers` writes it in the
-//! representation's canonical form.
-
-#![forbid(unsafe_code)]
-
-use core::fmt;
-use core::str::FromStr;
+//! A line of numbers in a representation as a rotation, and back: every
+//! conversion goes through a unit quaternion. `numbers → DQuat` checks
+//! that the numbers describe a rotation, `DQuat → numbers` writes it in
+//! the representation's canonical form.
 
 use glam::{DMat3, DQuat, DVec3};
 use kreisel_kinematics::{
@@ -17,42 +10,11 @@ use kreisel_kinematics::{
     try_normalize_quat, try_quat_from_rotation_matrix,
 };
 
-use crate::error::LineProblem;
+use crate::line_problem::LineProblem;
 use crate::numbers::Numbers;
-
-/// The names of the representations, as listed in error messages.
-pub const VALID_NAMES: &str = "quat, quat-xyzw, matrix, rotvec, axis-angle, euler:SEQ \
-     (SEQ one of XYZ XZY YXZ YZX ZXY ZYX XYX XZX YXY YZY ZXZ ZYZ, uppercase intrinsic, \
-     or the same in lowercase, extrinsic)";
-
-/// A way of writing a rotation as a line of numbers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Representation {
-    /// `w, x, y, z`: a quaternion, scalar first; any non-zero length on input.
-    Quat,
-    /// `x, y, z, w`: a quaternion, scalar last (scipy's and ROS's order).
-    QuatXyzw,
-    /// `m00, m01, m02, m10, …, m22`: the active rotation matrix
-    /// (`v_world = M v_body`), row-major.
-    Matrix,
-    /// `x, y, z`: the rotation vector `axis · angle`, always in radians.
-    RotVec,
-    /// `x, y, z, angle`: an axis (any non-zero length) and an angle.
-    AxisAngle,
-    /// Three Euler angles in one of the 24 conventions.
-    Euler(EulerSequence),
-}
+use crate::representation::Representation;
 
 impl Representation {
-    /// How many numbers a line of this representation holds.
-    pub const fn count(self) -> usize {
-        match self {
-            Representation::Quat | Representation::QuatXyzw | Representation::AxisAngle => 4,
-            Representation::Matrix => 9,
-            Representation::RotVec | Representation::Euler(_) => 3,
-        }
-    }
-
     /// The rotation that a line of numbers describes.
     ///
     /// With `degrees`, Euler angles and the axis–angle angle are in degrees
@@ -241,46 +203,6 @@ pub fn euler_angles_of_quats<const N: usize>(
     }))
 }
 
-impl fmt::Display for Representation {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Representation::Quat => f.write_str("quat"),
-            Representation::QuatXyzw => f.write_str("quat-xyzw"),
-            Representation::Matrix => f.write_str("matrix"),
-            Representation::RotVec => f.write_str("rotvec"),
-            Representation::AxisAngle => f.write_str("axis-angle"),
-            Representation::Euler(sequence) => write!(f, "euler:{sequence}"),
-        }
-    }
-}
-
-impl FromStr for Representation {
-    type Err = String;
-
-    /// Parses `quat`, `quat-xyzw`, `matrix`, `rotvec`, `axis-angle` or
-    /// `euler:SEQ`; the error message lists the valid names.
-    fn from_str(text: &str) -> Result<Self, Self::Err> {
-        match text {
-            "quat" => Ok(Representation::Quat),
-            "quat-xyzw" => Ok(Representation::QuatXyzw),
-            "matrix" => Ok(Representation::Matrix),
-            "rotvec" => Ok(Representation::RotVec),
-            "axis-angle" => Ok(Representation::AxisAngle),
-            _ => match text.strip_prefix("euler:") {
-                Some(sequence) => sequence.parse().map(Representation::Euler).map_err(|e| {
-                    format!(
-                        "{}; valid representations: {VALID_NAMES}",
-                        crate::convert::escape_invisible(&e.to_string())
-                    )
-                }),
-                None => Err(format!(
-                    "unknown representation; valid representations: {VALID_NAMES}"
-                )),
-            },
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -296,25 +218,6 @@ mod tests {
         ];
         all.extend(EulerSequence::all().map(Representation::Euler));
         all
-    }
-
-    #[test]
-    fn names_round_trip() {
-        for r in all() {
-            assert_eq!(r.to_string().parse::<Representation>(), Ok(r));
-        }
-        for bad in [
-            "",
-            "quaternion",
-            "euler",
-            "euler:",
-            "euler:ZZX",
-            "euler:ZxZ",
-            "Quat",
-        ] {
-            let e = bad.parse::<Representation>().unwrap_err();
-            assert!(e.contains("quat-xyzw") && e.contains("euler:SEQ"), "{e}");
-        }
     }
 
     #[test]

@@ -60,9 +60,9 @@ use serde::Deserialize;
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use toml::Spanned;
 
-use super::scene::Keys;
-use crate::error::CliError;
+use crate::error::SceneError;
 use crate::numbers::Shortest;
+use crate::scene_keys::Keys;
 
 /// The default `slip_velocity` of `sliding` friction, m/s (module docs).
 pub const DEFAULT_SLIP_VELOCITY: f64 = 1e-3;
@@ -226,8 +226,8 @@ pub fn tables(contacts: &Spanned<RawContacts>) -> Vec<(&RawContact, std::ops::Ra
 /// all of them on the table; module docs).
 ///
 /// # Errors
-/// [`CliError::Scene`] naming the line and key of the first problem.
-pub fn check(keys: &Keys<'_>, contacts: &Spanned<RawContacts>) -> Result<Contacts, CliError> {
+/// [`SceneError::Scene`] naming the line and key of the first problem.
+pub fn check(keys: &Keys<'_>, contacts: &Spanned<RawContacts>) -> Result<Contacts, SceneError> {
     let tables = tables(contacts);
     let Some(((first, _), others)) = tables.split_first() else {
         return Err(keys.fail(contacts, "`contact` is an empty array: give one table"));
@@ -250,7 +250,7 @@ fn on_table(
     keys: &Keys<'_>,
     tables: &[(&RawContact, std::ops::Range<usize>)],
     at: &Spanned<String>,
-) -> Result<Vec<TableContact>, CliError> {
+) -> Result<Vec<TableContact>, SceneError> {
     if let Some((_, span)) = tables.get(TableBody::MAX_CONTACTS) {
         let message = format!(
             "{} [[body.contact]] tables: a body on the table has at most {}",
@@ -289,7 +289,11 @@ fn on_table(
 
 /// The law of a `friction = "coulomb"` table from `mu`, `restitution`,
 /// `tangential_restitution`, `contensou_radius` and `rolling_resistance`.
-fn law(keys: &Keys<'_>, raw: &RawContact, given: &Spanned<String>) -> Result<ContactLaw, CliError> {
+fn law(
+    keys: &Keys<'_>,
+    raw: &RawContact,
+    given: &Spanned<String>,
+) -> Result<ContactLaw, SceneError> {
     let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²)); \
                \"coulomb\" is exact Coulomb friction";
     not_with(keys, "slip_velocity", &raw.slip_velocity, why)?;
@@ -357,7 +361,7 @@ fn on_ground(
     keys: &Keys<'_>,
     first: &RawContact,
     others: &[(&RawContact, std::ops::Range<usize>)],
-) -> Result<CheckedContacts, CliError> {
+) -> Result<CheckedContacts, SceneError> {
     if let Some((_, span)) = others.get(MAX_OTHER_CONTACTS) {
         let message = format!(
             "{} [[body.contact]] tables: at most {} (the first touching the plane, up to \
@@ -392,7 +396,7 @@ fn on_ground(
 
 /// The keys of friction "coulomb" given where they have no meaning
 /// (`why`): an error at the first one's line.
-fn not_coulomb_keys(keys: &Keys<'_>, raw: &RawContact, why: &str) -> Result<(), CliError> {
+fn not_coulomb_keys(keys: &Keys<'_>, raw: &RawContact, why: &str) -> Result<(), SceneError> {
     not_with(keys, "restitution", &raw.restitution, why)?;
     not_with(
         keys,
@@ -415,7 +419,7 @@ fn not_with<T>(
     key: &str,
     value: &Option<Spanned<T>>,
     why: &str,
-) -> Result<(), CliError> {
+) -> Result<(), SceneError> {
     match value {
         Some(v) => Err(keys.fail(v, &format!("`contact.{key}` {why}"))),
         None => Ok(()),
@@ -429,7 +433,7 @@ fn required<'v, T>(
     value: &'v Option<Spanned<T>>,
     at: &Spanned<String>,
     what: &str,
-) -> Result<&'v Spanned<T>, CliError> {
+) -> Result<&'v Spanned<T>, SceneError> {
     value.as_ref().ok_or_else(|| {
         let message = format!("`contact.{key}` is missing: {what}");
         keys.fail(at, &message)
@@ -437,7 +441,7 @@ fn required<'v, T>(
 }
 
 /// The surface from `shape`, `radius`, `center`, `normal`, `semi_axes`.
-fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, CliError> {
+fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, SceneError> {
     let name: ShapeName = raw
         .shape
         .get_ref()
@@ -447,7 +451,7 @@ fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, CliError> {
         Some(c) => keys.vector("contact.center", c)?,
         None => DVec3::ZERO,
     };
-    let radius_of = |keys: &Keys<'_>| -> Result<f64, CliError> {
+    let radius_of = |keys: &Keys<'_>| -> Result<f64, SceneError> {
         let r = required(
             keys,
             "radius",
@@ -510,7 +514,7 @@ fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, CliError> {
 }
 
 /// The friction law from `friction`, `mu` and `slip_velocity`.
-fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, CliError> {
+fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, SceneError> {
     let given = required(
         keys,
         "friction",
@@ -535,7 +539,7 @@ fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, CliError> {
         let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²))";
         not_with(keys, "slip_velocity", &raw.slip_velocity, why)?;
     }
-    let mu = |keys: &Keys<'_>, unit: &str| -> Result<f64, CliError> {
+    let mu = |keys: &Keys<'_>, unit: &str| -> Result<f64, SceneError> {
         let what = format!("friction \"{model}\" needs the coefficient μ ({unit})");
         let mu = required(keys, "mu", &raw.mu, given, &what)?;
         let value = *mu.get_ref();

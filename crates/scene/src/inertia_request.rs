@@ -11,9 +11,12 @@ use kreisel_inertia::{
     InertiaError, MassModel, MassProperties, Material, PrincipalAxes, prepare_solid,
 };
 
-use super::{DEFAULT_DENSITY, Units, WeldChoice};
-use crate::error::{BodyProblem, CliError};
+use crate::error::{BodyProblem, SceneError};
+use crate::mesh_options::{DEFAULT_DENSITY, Units, WeldChoice};
 use crate::numbers::Shortest;
+
+/// The frame every tensor and axis of a [`Report`] is given in.
+pub const FRAME: &str = "center of mass, mesh axes";
 
 /// Where the density comes from.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -241,7 +244,7 @@ fn units_warning(setup: &Setup, bodies: &[Body]) -> Option<String> {
             |u| {
                 format!(
                     "if its coordinates are in {}, rerun with --units {} ({} m across)",
-                    unit_name(u),
+                    u.name(),
                     u.symbol(),
                     three_digits(raw * u.scale())
                 )
@@ -262,22 +265,12 @@ fn three_digits(x: f64) -> Shortest {
     Shortest(format!("{x:.2e}").parse().unwrap_or(x))
 }
 
-/// The unit's name in words.
-fn unit_name(u: Units) -> &'static str {
-    match u {
-        Units::Mm => "millimetres",
-        Units::Cm => "centimetres",
-        Units::M => "metres",
-        Units::In => "inches",
-    }
-}
-
 /// Loads the mesh file and computes every body and the assembly.
 ///
 /// # Errors
-/// [`CliError::LoadMesh`], [`CliError::NoBodies`], [`CliError::Body`] (naming the body; for an open
-/// mesh suggesting `--shell` or `--hull`), [`CliError::DerivedDensity`].
-pub fn compute(setup: Setup) -> Result<Report, CliError> {
+/// [`SceneError::LoadMesh`], [`SceneError::NoBodies`], [`SceneError::Body`] (naming the body; for an open
+/// mesh suggesting `--shell` or `--hull`), [`SceneError::DerivedDensity`].
+pub fn compute(setup: Setup) -> Result<Report, SceneError> {
     let options = setup.solid_options(setup.merge);
     let bodies = load_scaled(&setup, &options)?;
     compute_scaled(setup, bodies)
@@ -290,10 +283,10 @@ pub fn compute(setup: Setup) -> Result<Report, CliError> {
 ///
 /// # Errors
 /// As [`compute`], but for loading.
-pub fn compute_scaled(setup: Setup, bodies: Vec<Body>) -> Result<Report, CliError> {
+pub fn compute_scaled(setup: Setup, bodies: Vec<Body>) -> Result<Report, SceneError> {
     let options = setup.solid_options(setup.merge);
     if bodies.is_empty() {
-        return Err(CliError::NoBodies {
+        return Err(SceneError::NoBodies {
             path: setup.file.clone(),
         });
     }
@@ -301,12 +294,12 @@ pub fn compute_scaled(setup: Setup, bodies: Vec<Body>) -> Result<Report, CliErro
     let several = bodies.len() > 1;
     let solid = options.solid(&setup.file, bodies).map_err(|e| match e {
         InertiaError::InFile { body, source, .. } => body_error(&setup, body, several, *source),
-        InertiaError::DerivedDensity { mass, volume, .. } => CliError::DerivedDensity {
+        InertiaError::DerivedDensity { mass, volume, .. } => SceneError::DerivedDensity {
             path: setup.file.clone(),
             mass,
             volume,
         },
-        source => CliError::LoadMesh { source },
+        source => SceneError::LoadMesh { source },
     })?;
     let density = solid.density;
     let summaries: Vec<Summary> = solid
@@ -333,14 +326,14 @@ pub fn compute_scaled(setup: Setup, bodies: Vec<Body>) -> Result<Report, CliErro
 }
 
 /// The file's bodies, scaled to metres.
-fn load_scaled(setup: &Setup, options: &SolidOptions) -> Result<Vec<Body>, CliError> {
+fn load_scaled(setup: &Setup, options: &SolidOptions) -> Result<Vec<Body>, SceneError> {
     options.load_bodies(&setup.file).map_err(|e| match e {
-        InertiaError::ScaleOverflow { body, scale, .. } => CliError::Body {
+        InertiaError::ScaleOverflow { body, scale, .. } => SceneError::Body {
             path: setup.file.clone(),
             body,
             problem: BodyProblem::ScaleOverflow { scale },
         },
-        source => CliError::LoadMesh { source },
+        source => SceneError::LoadMesh { source },
     })
 }
 
@@ -359,7 +352,7 @@ fn assembly_warnings(bodies: &[Summary], file_warnings: &[String]) -> Vec<String
 
 /// The error of one body of the setup's file: when the body is open but
 /// the file's bodies merged form a solid, the error says to use `--merge`.
-fn body_error(setup: &Setup, body: String, several: bool, error: InertiaError) -> CliError {
+fn body_error(setup: &Setup, body: String, several: bool, error: InertiaError) -> SceneError {
     let topology = matches!(
         error,
         InertiaError::OpenMesh { .. } | InertiaError::NonManifold { .. }
@@ -381,7 +374,7 @@ fn body_error(setup: &Setup, body: String, several: bool, error: InertiaError) -
     } else {
         BodyProblem::from(error)
     };
-    CliError::Body {
+    SceneError::Body {
         path: setup.file.clone(),
         body,
         problem,

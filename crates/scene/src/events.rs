@@ -21,8 +21,8 @@ use std::io::{self, Write};
 
 use kreisel_dynamics::{TableEvent, TableEventKind, World};
 
-use super::Names;
 use crate::numbers::Shortest;
+use crate::run::Names;
 
 /// The header line, without its newline.
 pub const HEADER: &str = "time,body,contact,kind,approach_speed,rebound_speed,accumulation_time";
@@ -30,7 +30,7 @@ pub const HEADER: &str = "time,body,contact,kind,approach_speed,rebound_speed,ac
 /// The name of an event's kind in the CSV.
 ///
 /// ```
-/// use kreisel_cli::simulate::events::kind_name;
+/// use kreisel_scene::events::kind_name;
 /// use kreisel_dynamics::TableEventKind;
 /// assert_eq!(kind_name(TableEventKind::LiftOff), "lift_off");
 /// ```
@@ -117,7 +117,7 @@ mod tests {
             body("high", 1.0),
             body("low", 0.5)
         );
-        let mut scene = super::super::scene::parse(Path::new("s.toml"), &text).unwrap();
+        let mut scene = crate::scene_file::parse(Path::new("s.toml"), &text).unwrap();
         scene.world.advance_to(0.5).unwrap();
         let mut out = Vec::new();
         write(&scene.world, &scene.bodies, &mut out).unwrap();

@@ -160,22 +160,6 @@ mod tests {
     }
 
     #[test]
-    fn help_names_the_methods_without_a_heavy_top_version() {
-        let help: Vec<&str> = super::super::AFTER_LONG_HELP.split_whitespace().collect();
-        let help = help.join(" ");
-        let without = FreeBodyMethod::ALL
-            .into_iter()
-            .filter(|m| m.heavy_top().is_none())
-            .map(FreeBodyMethod::name);
-        // The help writes pdmv4 … pdmv10 as `pdmv*`.
-        let mut listed: Vec<&str> = without.filter(|n| !n.starts_with("pdmv")).collect();
-        listed.push("pdmv*");
-        let (last, first) = listed.split_last().unwrap();
-        let phrase = format!("{} and {last} have none", first.join(", "));
-        assert!(help.contains(&phrase), "{phrase}");
-    }
-
-    #[test]
     fn unknown_method_lists_the_known_ones() {
         assert_eq!(
             integrator("euler").err().unwrap(),

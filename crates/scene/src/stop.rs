@@ -1,39 +1,42 @@
-//! Why `kreisel simulate` stopped before the end, and the one line it
-//! prints: a failed write, a body that diverged or whose row would not be
-//! finite, or a physical event that ends what the model describes.
+//! Why a body stopped a run before the end, and the one line that says
+//! so: a body that diverged or whose row would not be finite, or a
+//! physical event that ends what the model describes.
 
-use std::io;
 use std::path::Path;
 
 use kreisel_dynamics::{ContactMode, DynamicsError, Plan};
 
-use super::methods::AUTO;
-use super::scene::Scene;
-use crate::error::{CliError, Stream};
+use crate::error::SceneError;
+use crate::methods::AUTO;
 use crate::numbers::Shortest;
+use crate::scene_file::Scene;
 
-/// Why a run stopped early.
-pub(super) enum Stop {
-    /// Writing a row failed.
-    Write(io::Error),
+/// Why a body stopped the run early.
+#[derive(Debug)]
+pub enum BodyStop {
     /// A row of body number `body` (0-based) at `time` would hold a
     /// number that is not finite in `column` (the last guard before a
     /// row is written; the library's checks should have stopped it).
     NonFinite {
+        /// The body's number in scene order.
         body: usize,
+        /// The row's time, s.
         time: f64,
+        /// The column's name.
         column: &'static str,
     },
     /// Body number `body` (0-based) diverged or its method refused a step.
     Diverged {
+        /// The body's number in scene order.
         body: usize,
         /// The end of the step that failed, s.
         time: f64,
+        /// The library's error.
         error: kreisel_dynamics::DynamicsError,
     },
 }
 
-impl Stop {
+impl BodyStop {
     /// Whether the run stopped at a physical event that ends what the
     /// model describes (a watched contact touching down, lift-off, a disk
     /// lying flat, an indeterminate contact; on the table: contact modes
@@ -44,8 +47,8 @@ impl Stop {
     /// (an indeterminate contact of a body of `scene` on the table): its
     /// `mu` is beyond the bound of the slip, bad input, and nothing is
     /// written.
-    pub(super) fn is_event(&self, scene: &Scene) -> bool {
-        if let Stop::Diverged {
+    pub fn is_event(&self, scene: &Scene) -> bool {
+        if let BodyStop::Diverged {
             body,
             error: DynamicsError::ContactIndeterminate { .. },
             ..
@@ -56,7 +59,7 @@ impl Stop {
         }
         matches!(
             self,
-            Stop::Diverged {
+            BodyStop::Diverged {
                 error: DynamicsError::ContactTouchdown { .. }
                     | DynamicsError::ContactLost { .. }
                     | DynamicsError::DiskFlat { .. }
@@ -69,22 +72,15 @@ impl Stop {
     }
 
     /// The one-line error of a run of `scene` (at `path`, moved by
-    /// `method`) that stopped, writing to `output`.
-    pub(super) fn into_error(
-        self,
-        scene: &Scene,
-        path: &Path,
-        method: &str,
-        output: &Stream,
-    ) -> CliError {
+    /// `method`) that stopped.
+    pub fn into_error(self, scene: &Scene, path: &Path, method: &str) -> SceneError {
         match self {
-            Stop::Write(source) => CliError::Write {
-                output: output.clone(),
-                source,
-            },
-            Stop::Diverged { body, time, error } => painleve_on_table(scene, path, body, &error)
-                .unwrap_or_else(|| diverged(path, &Failed::of(scene, body, time), &error, method)),
-            Stop::NonFinite { body, time, column } => CliError::Scene {
+            BodyStop::Diverged { body, time, error } => {
+                painleve_on_table(scene, path, body, &error).unwrap_or_else(|| {
+                    diverged(path, &Failed::of(scene, body, time), &error, method)
+                })
+            }
+            BodyStop::NonFinite { body, time, column } => SceneError::Scene {
                 path: path.to_owned(),
                 line: None,
                 message: format!(
@@ -98,25 +94,19 @@ impl Stop {
     }
 
     /// The world's error: which body failed, when, and why.
-    pub(super) fn from_world(error: DynamicsError) -> Self {
+    pub fn from_world(error: DynamicsError) -> Self {
         match error {
-            DynamicsError::BodyFailed { body, time, source } => Stop::Diverged {
+            DynamicsError::BodyFailed { body, time, source } => BodyStop::Diverged {
                 body,
                 time,
                 error: *source,
             },
-            other => Stop::Diverged {
+            other => BodyStop::Diverged {
                 body: 0,
                 time: f64::NAN,
                 error: other,
             },
         }
-    }
-}
-
-impl From<io::Error> for Stop {
-    fn from(source: io::Error) -> Self {
-        Stop::Write(source)
     }
 }
 
@@ -157,7 +147,7 @@ fn painleve_on_table(
     path: &Path,
     body: usize,
     error: &DynamicsError,
-) -> Option<CliError> {
+) -> Option<SceneError> {
     if !matches!(error, DynamicsError::ContactIndeterminate { .. }) {
         return None;
     }
@@ -179,12 +169,12 @@ fn painleve_on_table(
         .get(body)
         .and_then(|lines| lines.get(index).copied().flatten())
         .or_else(|| scene.contact_lines.get(body)?.get(index).copied());
-    Some(CliError::Scene {
+    Some(SceneError::Scene {
         path: path.to_owned(),
         line,
         message: format!(
             "body `{name}`: {}",
-            super::contact::painleve_message(index, mu, error)
+            crate::contact_keys::painleve_message(index, mu, error)
         ),
     })
 }
@@ -197,7 +187,7 @@ fn diverged(
     failed: &Failed<'_>,
     error: &kreisel_dynamics::DynamicsError,
     method: &str,
-) -> CliError {
+) -> SceneError {
     let Failed {
         body,
         contact_lines,
@@ -206,7 +196,7 @@ fn diverged(
     } = *failed;
     if on_table {
         // Its own steps, whatever dt: the error says what and when.
-        return CliError::Scene {
+        return SceneError::Scene {
             path: scene_path.to_owned(),
             line: None,
             message: format!(
@@ -222,7 +212,7 @@ fn diverged(
     } = error
     {
         // The watched shapes are the tables after the first.
-        return CliError::Scene {
+        return SceneError::Scene {
             path: scene_path.to_owned(),
             line: contact_lines.get(contact + 1).copied(),
             message: format!(
@@ -271,7 +261,7 @@ fn diverged(
             Shortest(time)
         ),
     };
-    CliError::Scene {
+    SceneError::Scene {
         path: scene_path.to_owned(),
         line: None,
         message,
@@ -296,20 +286,18 @@ mod tests {
     #[test]
     fn a_failure_on_the_table_is_named_without_the_dt_hint() {
         let path = Path::new("s.toml");
-        let scene = super::super::scene::parse(path, BALL_ON_TABLE).unwrap();
+        let scene = crate::scene_file::parse(path, BALL_ON_TABLE).unwrap();
         let error = DynamicsError::ContactModesChatter {
             time: 0.25,
             count: 65,
         };
-        let stop = Stop::from_world(DynamicsError::BodyFailed {
+        let stop = BodyStop::from_world(DynamicsError::BodyFailed {
             body: 0,
             time: 0.3,
             source: Box::new(error.clone()),
         });
         assert!(stop.is_event(&scene));
-        let message = stop
-            .into_error(&scene, path, AUTO, &Stream::Standard)
-            .to_string();
+        let message = stop.into_error(&scene, path, AUTO).to_string();
         assert_eq!(
             message,
             format!(
@@ -326,19 +314,17 @@ mod tests {
     #[test]
     fn a_painleve_case_during_the_run_names_the_slipping_mu() {
         let path = Path::new("s.toml");
-        let scene = super::super::scene::parse(path, BALL_ON_TABLE).unwrap();
+        let scene = crate::scene_file::parse(path, BALL_ON_TABLE).unwrap();
         let error = DynamicsError::ContactIndeterminate {
             time: 0.25,
             compliance: -2.5,
         };
-        let stop = Stop::from_world(DynamicsError::BodyFailed {
+        let stop = BodyStop::from_world(DynamicsError::BodyFailed {
             body: 0,
             time: 0.3,
             source: Box::new(error),
         });
-        let message = stop
-            .into_error(&scene, path, AUTO, &Stream::Standard)
-            .to_string();
+        let message = stop.into_error(&scene, path, AUTO).to_string();
         assert!(
             message.starts_with(
                 "s.toml:14: body `ball`: `contact.mu` = 0.3 of [[body.contact]] #1 is beyond the \

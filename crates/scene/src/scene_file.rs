@@ -9,7 +9,6 @@
 #![forbid(unsafe_code)]
 
 use std::collections::HashSet;
-use std::ops::Range;
 use std::path::Path;
 
 use glam::DVec3;
@@ -17,11 +16,12 @@ use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, Tolerance, World};
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::body::{RawBody, add_body};
-use super::methods;
-use super::schedule::{INTERVAL_TOLERANCE, MAX_STEPS, Schedule, ScheduleProblem};
-use crate::error::{CliError, one_line};
+use crate::body_keys::{RawBody, add_body};
+use crate::error::SceneError;
+use crate::methods;
 use crate::numbers::Shortest;
+use crate::scene_keys::{Keys, SceneFile};
+use crate::schedule::{INTERVAL_TOLERANCE, MAX_STEPS, Schedule, ScheduleProblem};
 
 /// The whole file as written.
 #[derive(Debug, Deserialize)]
@@ -65,103 +65,13 @@ pub struct Scene {
     pub mu_lines: Vec<Vec<Option<u64>>>,
 }
 
-/// The scene's path and text: turns spans into line numbers for errors.
-#[derive(Debug, Clone, Copy)]
-pub struct SceneFile<'a> {
-    /// The path as given on the command line.
-    pub path: &'a Path,
-    /// The whole text.
-    pub text: &'a str,
-}
-
-impl SceneFile<'_> {
-    /// The 1-based line holding byte `offset`.
-    pub fn line_of(&self, offset: usize) -> u64 {
-        let end = offset.min(self.text.len());
-        1 + self.text.as_bytes()[..end]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count() as u64
-    }
-
-    /// An error at the start of `span` (`None`: the file as a whole).
-    pub fn error(&self, span: Option<Range<usize>>, message: &str) -> CliError {
-        CliError::Scene {
-            path: self.path.to_owned(),
-            line: span.map(|s| self.line_of(s.start)),
-            message: one_line(message),
-        }
-    }
-}
-
-/// Checks of the values of one table, each error prefixed with its context
-/// (`body `handle`: `).
-#[derive(Debug, Clone)]
-pub struct Keys<'a> {
-    file: SceneFile<'a>,
-    prefix: String,
-}
-
-impl<'a> Keys<'a> {
-    /// Checks whose errors start with `prefix`.
-    pub fn new(file: SceneFile<'a>, prefix: String) -> Self {
-        Self { file, prefix }
-    }
-
-    /// An error at the line of `span`.
-    pub fn fail_at(&self, span: Range<usize>, message: &str) -> CliError {
-        self.file
-            .error(Some(span), &format!("{}{message}", self.prefix))
-    }
-
-    /// An error at the line of `value`.
-    pub fn fail<T>(&self, value: &Spanned<T>, message: &str) -> CliError {
-        self.fail_at(value.span(), message)
-    }
-
-    /// The 1-based line of `value`.
-    pub fn line_of<T>(&self, value: &Spanned<T>) -> u64 {
-        self.file.line_of(value.span().start)
-    }
-
-    /// The value of `key`, which must be positive and finite.
-    pub fn positive(&self, key: &str, value: &Spanned<f64>) -> Result<f64, CliError> {
-        let v = *value.get_ref();
-        if v.is_finite() && v > 0.0 {
-            Ok(v)
-        } else {
-            let message = format!("`{key}` must be positive and finite, got {}", Shortest(v));
-            Err(self.fail(value, &message))
-        }
-    }
-
-    /// The value of `key`, which must be finite numbers.
-    pub fn finite<const N: usize>(
-        &self,
-        key: &str,
-        value: &Spanned<[f64; N]>,
-    ) -> Result<[f64; N], CliError> {
-        let v = *value.get_ref();
-        if v.iter().all(|x| x.is_finite()) {
-            Ok(v)
-        } else {
-            Err(self.fail(value, &format!("`{key}` must be finite numbers")))
-        }
-    }
-
-    /// The value of `key`, a vector of three finite numbers.
-    pub fn vector(&self, key: &str, value: &Spanned<[f64; 3]>) -> Result<DVec3, CliError> {
-        self.finite(key, value).map(DVec3::from_array)
-    }
-}
-
 /// Reads and checks a scene and builds its world, moved by the scene's
 /// `method`; mesh paths are relative to the scene's folder.
 ///
 /// # Errors
-/// [`CliError::Scene`] for the first problem found, naming its line and key
+/// [`SceneError::Scene`] for the first problem found, naming its line and key
 /// when there is one. Mesh files are loaded here, so their errors too.
-pub fn parse(path: &Path, text: &str) -> Result<Scene, CliError> {
+pub fn parse(path: &Path, text: &str) -> Result<Scene, SceneError> {
     parse_with_method(path, text, None)
 }
 
@@ -174,7 +84,7 @@ pub fn parse_with_method(
     path: &Path,
     text: &str,
     override_method: Option<&str>,
-) -> Result<Scene, CliError> {
+) -> Result<Scene, SceneError> {
     let file = SceneFile { path, text };
     let raw: RawScene =
         toml::from_str(text).map_err(|e| file.error(e.span(), &toml_message(&e)))?;

@@ -12,7 +12,7 @@
 use core::fmt;
 use std::io::{self, Write};
 
-use crate::error::LineProblem;
+use crate::line_problem::LineProblem;
 
 /// The most numbers any representation has (a 3 × 3 matrix).
 pub const MAX_NUMBERS: usize = 9;
