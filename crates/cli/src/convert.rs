@@ -5,12 +5,13 @@
 
 pub mod columns;
 
-use std::fs::{self, File};
+use std::fs::File;
 use std::io::{self, BufRead, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 pub use self::columns::Layout;
 use crate::error::{CliError, Location, Stream};
+use crate::output::{commit_output, open_output};
 use kreisel_scene::escape::escape_invisible;
 use kreisel_scene::line_problem::LineProblem;
 use kreisel_scene::numbers::{Numbers, parse_numbers, write_numbers};
@@ -170,23 +171,6 @@ pub fn run(args: &ConvertArgs) -> Result<(), CliError> {
     commit_output(pending, output)
 }
 
-/// Puts a finished `--output` file in place (see [`crate::atomic_file`]);
-/// nothing to do for standard output.
-///
-/// # Errors
-/// [`CliError::Write`] if the file cannot be renamed onto its target.
-pub(crate) fn commit_output(
-    pending: Option<crate::atomic_file::PendingFile>,
-    output: Stream,
-) -> Result<(), CliError> {
-    match pending {
-        None => Ok(()),
-        Some(pending) => pending
-            .commit()
-            .map_err(|source| CliError::Write { output, source }),
-    }
-}
-
 /// Standard input, or the file at `path`.
 fn open_input(path: Option<&Path>) -> Result<(Box<dyn BufRead>, Stream), CliError> {
     match path {
@@ -200,56 +184,6 @@ fn open_input(path: Option<&Path>) -> Result<(Box<dyn BufRead>, Stream), CliErro
             Ok((Box::new(reader), Stream::File(path.to_owned())))
         }
     }
-}
-
-/// Writes `text` to standard output and flushes it.
-///
-/// # Errors
-/// [`CliError::Write`] naming standard output.
-pub(crate) fn print_stdout(text: &str) -> Result<(), CliError> {
-    let mut stdout = io::stdout().lock();
-    stdout
-        .write_all(text.as_bytes())
-        .and_then(|()| stdout.flush())
-        .map_err(|source| CliError::Write {
-            output: Stream::Standard,
-            source,
-        })
-}
-
-/// An output stream: the writer, its name, and the file to put in place on
-/// success (`None` for standard output).
-pub(crate) type Output = (
-    Box<dyn Write>,
-    Stream,
-    Option<crate::atomic_file::PendingFile>,
-);
-
-/// Standard output, or a temporary file beside `path` that
-/// [`commit_output`] puts in place when the run succeeds (so a failed run
-/// leaves no partial file and keeps an existing one), unless `path` is the
-/// input file (shared by the subcommands that write a stream).
-pub(crate) fn open_output(path: Option<&Path>, input: Option<&Path>) -> Result<Output, CliError> {
-    let Some(path) = path else {
-        return Ok((Box::new(io::stdout().lock()), Stream::Standard, None));
-    };
-    if let Some(input) = input {
-        // Both exist when this is the same file; then creating the output
-        // would truncate the input before it is read.
-        if let (Ok(a), Ok(b)) = (fs::canonicalize(input), fs::canonicalize(path))
-            && a == b
-        {
-            return Err(CliError::OutputIsInput {
-                path: path.to_owned(),
-            });
-        }
-    }
-    let (file, pending) =
-        crate::atomic_file::create(path).map_err(|source| CliError::CreateOutput {
-            path: path.to_owned(),
-            source,
-        })?;
-    Ok((Box::new(file), Stream::File(path.to_owned()), Some(pending)))
 }
 
 /// Converts every line of `reader` and writes the results to `writer`.

@@ -174,6 +174,14 @@ fn stream_name(stream: &Stream, standard: &str) -> String {
 }
 
 impl CliError {
+    /// An error about the value of one command-line option (`--dt`).
+    pub fn argument(option: &str, message: String) -> Self {
+        CliError::Argument {
+            argument: option.to_owned(),
+            message,
+        }
+    }
+
     /// The process exit status for this error.
     pub fn exit_code(&self) -> u8 {
         EXIT_DATA_ERROR

@@ -397,7 +397,7 @@ pub fn run(args: &InertiaArgs) -> Result<(), CliError> {
         Format::Sdf => xml::sdf(&report, &view),
         Format::Mjcf => xml::mjcf(&report, &view),
     };
-    crate::convert::print_stdout(&output)
+    crate::output::print_stdout(&output)
 }
 
 #[cfg(test)]

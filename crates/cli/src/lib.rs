@@ -9,11 +9,10 @@
 
 #![forbid(unsafe_code)]
 
-pub mod atomic_file;
 pub mod convert;
 pub mod error;
 pub mod inertia;
-
+pub mod output;
 pub mod simulate;
 pub mod top;
 

@@ -6,6 +6,6 @@
 fn main() -> std::process::ExitCode {
     // Without the handlers a signal leaves a temporary file behind; the
     // run itself does not need them.
-    let _ = kreisel_cli::atomic_file::remove_on_signals();
+    let _ = kreisel_cli::output::atomic_file::remove_on_signals();
     kreisel_cli::main()
 }

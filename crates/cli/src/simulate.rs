@@ -13,7 +13,6 @@
 #![forbid(unsafe_code)]
 
 mod figure;
-mod polhode;
 mod progress;
 mod record;
 
@@ -385,12 +384,12 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     warn_step_limits(&scene, scene_path);
     scene.world.set_threads(threads);
     let (writer, output, pending) =
-        crate::convert::open_output(args.output.as_deref(), Some(scene_path))?;
+        crate::output::open_output(args.output.as_deref(), Some(scene_path))?;
     // The image file is opened before the run, so a bad path fails at once.
     let plot = match (&args.plot, plot_format) {
         (Some(path), Some(format)) => {
             let (file, pending) =
-                crate::atomic_file::create(path).map_err(|source| CliError::Plot {
+                crate::output::atomic_file::create(path).map_err(|source| CliError::Plot {
                     path: path.clone(),
                     message: format!("cannot create the file: {source}"),
                 })?;
@@ -401,8 +400,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     // Opened before the run too; written when the run ends (or stops at an event).
     let events_file = match &args.events {
         Some(path) => {
-            let (file, pending) =
-                crate::atomic_file::create(path).map_err(|source| events_error(path, &source))?;
+            let (file, pending) = crate::output::atomic_file::create(path)
+                .map_err(|source| events_error(path, &source))?;
             Some((path, file, pending))
         }
         None => None,
@@ -487,7 +486,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         None => None,
     };
     // Whole or not at all: the --output file appears only now.
-    crate::convert::commit_output(pending, output.clone())?;
+    crate::output::commit_output(pending, output.clone())?;
     if let Some((path, pending)) = events_written {
         pending
             .commit()

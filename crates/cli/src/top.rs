@@ -195,7 +195,7 @@ impl TopArgs {
         match &self.plot {
             None => Ok(None),
             Some(path) => ImageFormat::from_path(path).map(Some).ok_or_else(|| {
-                argument(
+                CliError::argument(
                     "--plot",
                     format!(
                         "{}: unknown image format (use a .svg or .png file name)",
@@ -204,14 +204,6 @@ impl TopArgs {
                 )
             }),
         }
-    }
-}
-
-/// An error about one command-line option.
-fn argument(name: &'static str, message: String) -> CliError {
-    CliError::Argument {
-        argument: name.to_owned(),
-        message,
     }
 }
 
@@ -335,7 +327,7 @@ fn plot(
         path: path.to_owned(),
         message: e.to_string(),
     })?;
-    crate::atomic_file::write_file(path, &bytes).map_err(|source| CliError::Plot {
+    crate::output::atomic_file::write_file(path, &bytes).map_err(|source| CliError::Plot {
         path: path.to_owned(),
         message: format!("cannot write the file: {source}"),
     })
@@ -350,7 +342,7 @@ fn in_radians(args: &TopArgs, degrees: bool) -> Result<TopArgs, CliError> {
     let mut radians = args.clone();
     if degrees {
         if args.theta0.is_finite() && !(0.0..=180.0).contains(&args.theta0) {
-            return Err(argument(
+            return Err(CliError::argument(
                 "--theta0",
                 format!(
                     "{} deg: must lie in [0, 180] (the angle of the axis from the upward vertical)",
@@ -375,7 +367,7 @@ pub fn run(command: &TopCommand) -> Result<(), CliError> {
     let format = args.validate()?;
     let (motion, summary) = solve_and_summarise(&args.request())?;
     if command.csv.is_some() && command.csv == args.plot {
-        return Err(argument(
+        return Err(CliError::argument(
             "--csv",
             "is also the --plot file; give them different names".to_owned(),
         ));
@@ -403,7 +395,7 @@ pub fn run(command: &TopCommand) -> Result<(), CliError> {
         Format::Text => output::text(&report, degrees),
         Format::Json => output::json(&report, degrees),
     };
-    crate::convert::print_stdout(&text)
+    crate::output::print_stdout(&text)
 }
 
 #[cfg(test)]

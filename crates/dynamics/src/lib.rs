@@ -75,6 +75,7 @@ mod lagrange_top;
 mod method;
 mod moser_veselov;
 mod moser_veselov_preprocessed;
+pub mod polhode;
 mod rigid_body;
 mod rk4;
 #[doc(hidden)]
@@ -122,5 +123,5 @@ pub use table::{
 };
 pub use world::{
     Body, BodyBuilder, BodyId, BodyState, Choice, DEFAULT_TABLE_TOLERANCE, Plan, Support,
-    Tolerance, World, table_tolerance,
+    Tolerance, WHOLE_STEPS_TOLERANCE, World, grid_steps, table_tolerance,
 };

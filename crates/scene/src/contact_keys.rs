@@ -39,12 +39,8 @@
 //! watched shape reaching the plane stops the run (the impact is not
 //! modelled).
 //!
-//! `slip_velocity` defaults to 1 mm/s, the ε at which Leine & Glocker
-//! (2003) report their tippe top's inversion at 2.7 s: the regularised
-//! Coulomb law `F = −μ N v/√(|v|² + ε²)` is stiff for small ε (the
-//! inversion takes ≈ 20 s at 0.1 mm/s, see the library's contact module
-//! docs), so the default is the published value, not a guess at "exact"
-//! Coulomb friction.
+//! `slip_velocity` defaults to the library's
+//! [`Friction::DEFAULT_SLIP_VELOCITY`] (1 mm/s, Leine & Glocker's ε).
 
 #![forbid(unsafe_code)]
 
@@ -63,9 +59,6 @@ use toml::Spanned;
 use crate::error::SceneError;
 use crate::numbers::Shortest;
 use crate::scene_keys::Keys;
-
-/// The default `slip_velocity` of `sliding` friction, m/s (module docs).
-pub const DEFAULT_SLIP_VELOCITY: f64 = 1e-3;
 
 /// A `[body.contact]` table as written.
 #[derive(Debug, Deserialize)]
@@ -569,7 +562,7 @@ fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, SceneError> {
             let mu = mu(keys, "Coulomb's, dimensionless")?;
             let slip_velocity = match &raw.slip_velocity {
                 Some(v) => keys.positive("contact.slip_velocity", v)?,
-                None => DEFAULT_SLIP_VELOCITY,
+                None => Friction::DEFAULT_SLIP_VELOCITY,
             };
             Ok(Friction::Sliding { mu, slip_velocity })
         }

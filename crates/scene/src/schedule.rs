@@ -2,7 +2,8 @@
 //! run, from `duration`, `dt` and `output_interval`.
 //!
 //! ```text
-//! steps N = duration / dt rounded up (to the nearest whole number when within 1e-6 of it)
+//! steps N = duration / dt rounded up (to the nearest whole number when within 1e-6 of it:
+//!           kreisel_dynamics::grid_steps, the World's own grid rule)
 //! step k (1 ≤ k < N) has size dt and ends at t = k·dt
 //! step N has size duration − (N − 1)·dt and ends at t = duration exactly
 //! rows after steps 0, every, 2·every, …, and N   (every = output_interval / dt)
@@ -12,10 +13,6 @@
 
 /// The most steps a run may take (at ~1 µs a step, a quarter of an hour per body).
 pub const MAX_STEPS: u64 = 1_000_000_000;
-
-/// `duration / dt` within this many steps of a whole number counts as that
-/// number, so rounding in the division never adds a needless tiny last step.
-const WHOLE_STEPS_TOLERANCE: f64 = 1e-6;
 
 /// `output_interval` must be a whole multiple of `dt` within this relative tolerance.
 pub const INTERVAL_TOLERANCE: f64 = 1e-9;
@@ -58,14 +55,8 @@ impl Schedule {
         if ratio > MAX_STEPS as f64 + 1.0 {
             return Err(ScheduleProblem::TooManySteps { ratio });
         }
-        let nearest = ratio.round();
-        let steps = if nearest >= 1.0 && (ratio - nearest).abs() <= WHOLE_STEPS_TOLERANCE {
-            nearest
-        } else {
-            ratio.ceil().max(1.0)
-        };
-        // Exact: steps is a whole number below 2⁵³.
-        let steps = steps as u64;
+        // Exact: a whole number below 2⁵³.
+        let steps = kreisel_dynamics::grid_steps(ratio) as u64;
         if steps > MAX_STEPS {
             return Err(ScheduleProblem::TooManySteps { ratio });
         }

@@ -378,7 +378,7 @@ impl Check<'_> {
                     ("exit_status", Value::Count(status)),
                 ],
             };
-            crate::convert::print_stdout(&report.json())?;
+            crate::output::print_stdout(&report.json())?;
         } else {
             let header = [
                 "link",

@@ -271,14 +271,14 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
     }
     match &args.robot.output {
         Some(path) => {
-            crate::atomic_file::write_file(path, out.as_bytes()).map_err(|source| {
+            crate::output::atomic_file::write_file(path, out.as_bytes()).map_err(|source| {
                 CliError::Write {
                     output: Stream::File(path.clone()),
                     source,
                 }
             })?;
         }
-        None => crate::convert::print_stdout(&out)?,
+        None => crate::output::print_stdout(&out)?,
     }
     if json {
         let report = UrdfReport {
@@ -287,7 +287,7 @@ pub fn run(urdf: &Path, args: &InertiaArgs) -> Result<(), CliError> {
             links: report_rows,
             summary,
         };
-        crate::convert::print_stdout(&report.json())?;
+        crate::output::print_stdout(&report.json())?;
     }
     if kept.is_empty() {
         Ok(())

@@ -2,7 +2,7 @@
 //! [`MAX_BODIES`]), each with ω(t) in body axes, the relative energy
 //! change, and the polhode — the path of L/|L| on the unit momentum sphere
 //! in principal axes, with the separatrices of a torque-free asymmetric
-//! body dashed ([`super::polhode`]).
+//! body dashed (`kreisel_dynamics::polhode`).
 //!
 //! Built from the recorded [`Track`]s only, so it does not depend on how the
 //! motion was computed.
@@ -12,8 +12,8 @@ use kreisel_plot::axes::{Axes, Labels};
 use kreisel_plot::figure::{Anchor, Color, Figure, Point, Rect, Stroke, Text};
 use kreisel_plot::sphere::{SpherePanel, View};
 
-use super::polhode;
 use super::record::{MAX_BODIES, Recorded, Track};
+use kreisel_dynamics::polhode;
 use kreisel_scene::numbers::Shortest;
 
 /// Figure width, px.

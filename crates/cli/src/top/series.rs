@@ -86,7 +86,7 @@ pub fn schedule(
         if let Some(value) = value
             && !(value.is_finite() && value > 0.0)
         {
-            return Err(argument(
+            return Err(CliError::argument(
                 name,
                 format!("{} s: must be a positive finite time", Shortest(value)),
             ));
@@ -95,7 +95,7 @@ pub fn schedule(
     let duration = duration.unwrap_or(default_duration);
     let dt = dt.unwrap_or(default_dt);
     let too_many = |ratio: f64| {
-        argument(
+        CliError::argument(
             "--dt",
             format!(
                 "{} s over --duration {} s makes {} rows; at most {MAX_ROWS} (use a larger --dt)",
@@ -112,14 +112,6 @@ pub fn schedule(
         ScheduleProblem::TooManySteps { ratio }
         | ScheduleProblem::IntervalNotMultiple { ratio } => too_many(ratio),
     })
-}
-
-/// An error about one command-line option.
-fn argument(name: &str, message: String) -> CliError {
-    CliError::Argument {
-        argument: name.to_owned(),
-        message,
-    }
 }
 
 /// Writes the header and one row per time of `schedule` to `out`.
@@ -172,7 +164,7 @@ pub fn write_csv(
     degrees: bool,
 ) -> Result<(), CliError> {
     let (file, pending) =
-        crate::atomic_file::create(path).map_err(|source| CliError::CreateOutput {
+        crate::output::atomic_file::create(path).map_err(|source| CliError::CreateOutput {
             path: path.to_owned(),
             source,
         })?;
@@ -185,7 +177,7 @@ pub fn write_csv(
             source,
         })?;
     drop(writer);
-    crate::convert::commit_output(Some(pending), output)
+    crate::output::commit_output(Some(pending), output)
 }
 
 #[cfg(test)]

@@ -124,6 +124,23 @@ fn invalid(parameter: &'static str, value: f64, reason: &'static str) -> Dynamic
 }
 
 impl Friction {
+    /// The usual `slip_velocity` ε of [`Friction::Sliding`], m/s: 1 mm/s,
+    /// the ε at which Leine & Glocker (2003) report their tippe top's
+    /// inversion at 2.7 s. The regularised law is stiff for small ε (the
+    /// inversion takes ≈ 20 s at 0.1 mm/s), so this is the published
+    /// value, not a guess at "exact" Coulomb friction.
+    ///
+    /// ```text
+    /// F = −μ N v/√(|v|² + ε²),   ε = 1e-3 m/s
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::contact::Friction;
+    /// let f = Friction::try_sliding(0.3, Friction::DEFAULT_SLIP_VELOCITY).unwrap();
+    /// assert_eq!(f, Friction::Sliding { mu: 0.3, slip_velocity: 1e-3 });
+    /// ```
+    pub const DEFAULT_SLIP_VELOCITY: f64 = 1e-3;
+
     /// Viscous friction `F = −μ N v`.
     ///
     /// # Errors

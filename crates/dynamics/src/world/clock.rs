@@ -18,7 +18,38 @@ use crate::elliptic::dd::Dd;
 
 /// `(t − origin)/dt` within this many steps of a whole number counts as
 /// that number, so rounding never adds a needless tiny last step.
-pub(crate) const WHOLE_STEPS_TOLERANCE: f64 = 1e-6;
+pub const WHOLE_STEPS_TOLERANCE: f64 = 1e-6;
+
+/// The number of grid steps that reach `ratio` steps of `dt` (`ratio` =
+/// span / dt, positive): the grid rule of [`crate::World::advance_to`] and
+/// of every run's output grid (`kreisel simulate`, `kreisel top --csv`),
+/// written once here.
+///
+/// ```text
+/// N = round(ratio)          if |ratio − round(ratio)| ≤ WHOLE_STEPS_TOLERANCE and round(ratio) ≥ 1
+///     max(1, ⌈ratio⌉)       otherwise
+/// ```
+///
+/// The last of the `N` steps is shortened to land on the span exactly; a
+/// ratio within 1e-6 of a whole number takes no needless tiny last step.
+/// The result is a whole number (as `f64`, so a caller can check it
+/// against its own limit before converting).
+///
+/// ```
+/// use kreisel_dynamics::grid_steps;
+/// assert_eq!(grid_steps(10.0), 10.0);
+/// assert_eq!(grid_steps(10.0 + 1e-9), 10.0); // rounding in duration/dt
+/// assert_eq!(grid_steps(10.2), 11.0); // a shortened last step
+/// assert_eq!(grid_steps(0.3), 1.0); // one short step
+/// ```
+pub fn grid_steps(ratio: f64) -> f64 {
+    let nearest = ratio.round();
+    if nearest >= 1.0 && (ratio - nearest).abs() <= WHOLE_STEPS_TOLERANCE {
+        nearest
+    } else {
+        ratio.ceil().max(1.0)
+    }
+}
 
 /// The most whole steps one call may take: beyond 2⁵³ a step count is no
 /// longer exact in a double.
@@ -113,12 +144,7 @@ impl Clock {
         if ratio.is_nan() || ratio >= MAX_WHOLE_STEPS {
             return Err(invalid("more than 2^53 steps of dt away"));
         }
-        let nearest = ratio.round();
-        let n = if nearest >= 1.0 && (ratio - nearest).abs() <= WHOLE_STEPS_TOLERANCE {
-            nearest
-        } else {
-            ratio.ceil().max(1.0)
-        };
+        let n = grid_steps(ratio);
         // Exact: a whole number below 2⁵³.
         let before_last = n as u64 - 1;
         let (whole, from) = if before_last >= self.steps {

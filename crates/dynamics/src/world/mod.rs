@@ -89,6 +89,7 @@ pub use self::table::{DEFAULT_TABLE_TOLERANCE, table_tolerance};
 pub use self::tolerance::{Choice, Tolerance};
 
 use self::clock::Clock;
+pub use self::clock::{WHOLE_STEPS_TOLERANCE, grid_steps};
 use self::plan::Motion;
 use self::uniform::UniformBatch;
 use crate::{

@@ -21,6 +21,7 @@
 //! ```
 //!
 //! whose intersections with the sphere are two great circles through ±e₂.
+//! (`kreisel simulate --plot` draws them dashed.)
 
 use glam::DVec3;
 
@@ -31,6 +32,19 @@ const EQUAL_MOMENTS: f64 = 1e-9;
 /// The slope `k = m₁/m₃` of the separatrix planes for ascending principal
 /// moments `I₁ ≤ I₂ ≤ I₃`; `None` when two moments are equal within
 /// [`EQUAL_MOMENTS`] (a symmetric body or a sphere has no separatrix).
+///
+/// ```text
+/// k = √( I₁ (I₃ − I₂) / (I₃ (I₂ − I₁)) )
+/// ```
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::polhode::separatrix_slope;
+/// // I = (1, 2, 3): k² = 1·1 / (3·1).
+/// let k = separatrix_slope(DVec3::new(1.0, 2.0, 3.0)).unwrap();
+/// assert!((k * k - 1.0 / 3.0).abs() < 1e-15);
+/// assert_eq!(separatrix_slope(DVec3::new(1.0, 1.0, 3.0)), None);
+/// ```
 pub fn separatrix_slope(moments: DVec3) -> Option<f64> {
     let [i1, i2, i3] = moments.to_array();
     let scale = i3.abs().max(f64::MIN_POSITIVE);
@@ -43,6 +57,23 @@ pub fn separatrix_slope(moments: DVec3) -> Option<f64> {
 /// The two separatrices on the unit sphere in principal axes, `n` + 1
 /// points each (closed great circles through ±e₂ in the planes
 /// m₁ = ±k m₃); `None` as for [`separatrix_slope`].
+///
+/// ```text
+/// m(s) = cos s · (±k, 0, 1)/√(1 + k²) + sin s · e₂,   s = 2π j / n
+/// ```
+///
+/// ```
+/// use glam::DVec3;
+/// use kreisel_dynamics::polhode::separatrices;
+/// let moments = DVec3::new(1.0, 2.0, 3.0);
+/// let [a, b] = separatrices(moments, 8).unwrap();
+/// // On the sphere and on the energy ellipsoid 2E = L²/I₂ (|L| = 1).
+/// for m in a.iter().chain(&b) {
+///     assert!((m.length() - 1.0).abs() < 1e-15);
+///     let two_e = (*m * *m / moments).element_sum();
+///     assert!((two_e - 0.5).abs() < 1e-15);
+/// }
+/// ```
 pub fn separatrices(moments: DVec3, n: usize) -> Option<[Vec<DVec3>; 2]> {
     let k = separatrix_slope(moments)?;
     let circle = |sign: f64| {
