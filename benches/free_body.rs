@@ -32,7 +32,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use kreisel::dynamics::{METHODS, PrincipalState, integrate, method};
 use kreisel::kinematics::rotation_angle_between;
 
-#[path = "../tests/common/free_body.rs"]
+#[path = "../crates/dynamics/tests/common/free_body.rs"]
 mod free_body;
 #[path = "../tests/common/rapier.rs"]
 mod rapier;

@@ -1,6 +1,6 @@
 //! Criterion timings of one step of every heavy-top method on the two fast
 //! tops of `tests/data/heavy_top/` (the shared test problems of
-//! `tests/heavy_top_reference.rs` and `examples/heavy_top_work_precision.rs`):
+//! `crates/dynamics/tests/heavy_top_reference.rs` and `examples/heavy_top_work_precision.rs`):
 //! `bruls` (symmetric: exact free flow) and `asymmetric_fast` (PDMV10 free
 //! flow), at dt = 1e-3; and the Taylor series (`HeavyTopTaylor::DEFAULT`,
 //! `taylor`) and one `state_at` of the closed form of the Lagrange top
@@ -23,7 +23,7 @@ use kreisel::dynamics::{
     HEAVY_TOP_METHODS, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopTaylor, heavy_top_method,
 };
 
-#[path = "../tests/common/heavy_top.rs"]
+#[path = "../crates/dynamics/tests/common/heavy_top.rs"]
 mod heavy_top;
 
 fn step(c: &mut Criterion) {

@@ -10,7 +10,7 @@ kreisel's converged answer (BENCHMARKS.md, "Tops on a table (issue #17)").
 Two tops:
 
 * Leine & Glocker's (Eur. J. Mech. A/Solids 22 (2003) 193), the one
-  tests/contact_sphere.rs checks kreisel on: one sphere geom R = 15 mm whose
+  crates/dynamics/tests/contact_sphere.rs checks kreisel on: one sphere geom R = 15 mm whose
   centre is a = 3 mm from the centre of mass towards the stem, mass and
   inertia given explicitly (<inertial>, m = 6 g, I1 = 8e-7, I3 = 7e-7 kg m^2),
   a free joint, sliding friction mu = 0.3 on both geoms (MuJoCo combines

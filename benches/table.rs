@@ -18,13 +18,13 @@ use std::time::Duration;
 use criterion::{Criterion, criterion_group, criterion_main};
 
 #[allow(dead_code)]
-#[path = "../tests/common/tippe_top.rs"]
+#[path = "../crates/dynamics/tests/common/tippe_top.rs"]
 mod tippe_top;
 
 use tippe_top::{contensou_law, table_motion};
 
 #[allow(dead_code)]
-#[path = "../tests/common/bouncing_ball.rs"]
+#[path = "../crates/dynamics/tests/common/bouncing_ball.rs"]
 mod bouncing_ball;
 
 use bouncing_ball::dropped_ball;

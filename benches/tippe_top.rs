@@ -21,7 +21,7 @@ use glam::DVec3;
 use kreisel::dynamics::{Friction, GroundCheck, World};
 
 #[allow(dead_code)]
-#[path = "../tests/common/tippe_top.rs"]
+#[path = "../crates/dynamics/tests/common/tippe_top.rs"]
 mod tippe_top;
 
 use tippe_top::leine_glocker;

@@ -34,9 +34,9 @@ use kreisel::dynamics::{Body, BodyId, Inputs, Tolerance, World};
 use kreisel::kinematics::glam::{DQuat, DVec3};
 use kreisel::kinematics::rotation_angle_between;
 
-#[path = "../tests/common/free_body.rs"]
+#[path = "../crates/dynamics/tests/common/free_body.rs"]
 mod free_body;
-#[path = "../tests/common/heavy_top.rs"]
+#[path = "../crates/dynamics/tests/common/heavy_top.rs"]
 mod heavy_top;
 
 /// criterion's own rule: without `--bench`, or with `--test`, each point

@@ -73,9 +73,9 @@ use kreisel::dynamics::{
 use kreisel::kinematics::glam::{DQuat, DVec3};
 use kreisel::kinematics::rotation_angle_between;
 
-#[path = "../tests/common/free_body.rs"]
+#[path = "../crates/dynamics/tests/common/free_body.rs"]
 mod free_body;
-#[path = "../tests/common/heavy_top.rs"]
+#[path = "../crates/dynamics/tests/common/heavy_top.rs"]
 mod heavy_top;
 #[path = "../tests/common/rapier.rs"]
 mod rapier;

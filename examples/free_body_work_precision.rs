@@ -29,7 +29,7 @@ use std::time::Instant;
 use kreisel::dynamics::{METHODS, PrincipalState, integrate, method};
 use kreisel::kinematics::rotation_angle_between;
 
-#[path = "../tests/common/free_body.rs"]
+#[path = "../crates/dynamics/tests/common/free_body.rs"]
 mod free_body;
 #[path = "../tests/common/rapier.rs"]
 mod rapier;

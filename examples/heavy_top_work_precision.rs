@@ -25,7 +25,7 @@ use kreisel::dynamics::{
     HEAVY_TOP_METHODS, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopTaylor, heavy_top_method,
 };
 
-#[path = "../tests/common/heavy_top.rs"]
+#[path = "../crates/dynamics/tests/common/heavy_top.rs"]
 mod heavy_top;
 
 /// Step sizes, s (each divides the 0.01 s sample interval). The closed

@@ -13,7 +13,7 @@
 //!   landing time's error and the state's distance from the 1e-13 run.
 //!
 //! Distances: positions over R, velocities over R ω₀, attitude, L over
-//! |L₀| (`tests/common/tippe_top.rs::flat`). Prints a Markdown table
+//! |L₀| (`crates/dynamics/tests/common/tippe_top.rs::flat`). Prints a Markdown table
 //! (BENCHMARKS.md) and, with `--csv FILE`, writes
 //! `problem,rtol,evaluations,error,time_error_s,wall_ms`.
 //!
@@ -27,19 +27,19 @@ use std::time::Instant;
 use kreisel::dynamics::{TableEventKind, TableMotion};
 
 #[allow(dead_code)]
-#[path = "../tests/common/tippe_top.rs"]
+#[path = "../crates/dynamics/tests/common/tippe_top.rs"]
 mod tippe_top;
 
 use tippe_top::{contensou_law, distance, flat, table_motion};
 
 #[allow(dead_code)]
-#[path = "../tests/common/bouncing_ball.rs"]
+#[path = "../crates/dynamics/tests/common/bouncing_ball.rs"]
 mod bouncing_ball;
 
 use bouncing_ball::dropped_ball;
 
 #[allow(dead_code)]
-#[path = "../tests/common/euler_disk.rs"]
+#[path = "../crates/dynamics/tests/common/euler_disk.rs"]
 mod euler_disk;
 
 /// Euler's disk (μ = 5, the air layer's floor 1e-5 a) from its steady

@@ -35,7 +35,7 @@ use kreisel::dynamics::{PrincipalState, integrate, method};
 use kreisel::kinematics::glam::{DQuat, DVec3};
 use kreisel::kinematics::rotation_angle_between;
 
-#[path = "common/free_body.rs"]
+#[path = "../crates/dynamics/tests/common/free_body.rs"]
 mod free_body;
 #[path = "common/rapier.rs"]
 mod rapier;

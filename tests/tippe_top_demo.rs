@@ -1,6 +1,6 @@
 //! The tippe-top demo (`examples/tippe_top/`), run headless as CI runs it
 //! (no display): the times it prints against the library's own run of the
-//! same top computed here directly (`tests/common/tippe_top.rs`: the
+//! same top computed here directly (`crates/dynamics/tests/common/tippe_top.rs`: the
 //! events' times to the printed digits, the axis' horizontal passage
 //! against a fine sampling of that run), the end state and the energy
 //! against the library's, Jellett's λ held without drilling friction; the

@@ -18,7 +18,7 @@ use kreisel_dynamics::{
 };
 use kreisel_kinematics::rotation_angle_between;
 
-#[path = "../../../tests/common/free_body.rs"]
+#[path = "common/free_body.rs"]
 mod free_body;
 
 const EPS: f64 = f32::EPSILON as f64;

@@ -10,7 +10,7 @@ use kreisel_dynamics::{
 };
 use kreisel_kinematics::rotation_angle_between;
 
-#[path = "../../../tests/common/free_body.rs"]
+#[path = "common/free_body.rs"]
 mod free_body;
 
 use free_body::{Reference, load};

@@ -15,7 +15,7 @@ use glam::{DQuat, DVec3};
 use kreisel_dynamics::{DynamicsError, METHODS, PrincipalState, RigidBody, integrate, method};
 use kreisel_kinematics::rotation_angle_between;
 
-#[path = "../../../tests/common/free_body.rs"]
+#[path = "common/free_body.rs"]
 mod free_body;
 
 /// Moment scales: SI for a 1 µm grain up to planets, and the extremes the

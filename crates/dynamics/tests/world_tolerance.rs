@@ -15,8 +15,7 @@ use kreisel_kinematics::rotation_angle_between;
 mod common;
 use common::forced_refs::{NAMES, load};
 
-#[path = "../../../tests/common/free_body.rs"]
-mod free_body;
+use common::free_body;
 
 const TOLERANCES: [f64; 4] = [1e-3, 1e-5, 1e-7, 1e-9];
 

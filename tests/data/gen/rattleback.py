@@ -12,7 +12,7 @@ world-axes contact-force solve K F = b)
 ------------------------------------------------------------------------
 * Body: mass m, inertia I about the centre of mass in body axes (z up at
   rest, I_xy = +2e-5 kg m^2: Kane & Levinson's D = -2e-5 is the entry of
-  their axes whose b3 points into the table; see tests/contact_rattleback.rs),
+  their axes whose b3 points into the table; see crates/dynamics/tests/contact_rattleback.rs),
   an ellipsoid with semi-axes E = diag(a, b, c) centred at c_e = (0, 0, 0.01)
   from the centre of mass. Plane z = 0, gravity -g z.
 * State y = (gamma, w): gamma = the world's up vector in body axes,

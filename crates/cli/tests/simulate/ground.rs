@@ -150,7 +150,7 @@ fn the_tippe_top_scene_inverts_at_the_library_time_and_keeps_jellett() {
 #[test]
 fn a_lift_off_stops_the_run_with_its_time() {
     // A ball whose centre of mass is 5 cm above its centre, rocking about
-    // x fast enough to leave the floor (tests/world_ground.rs derives the
+    // x fast enough to leave the floor (crates/dynamics/tests/world_ground.rs derives the
     // time by hand: 7.140174e-3 s).
     let (m, i, a, theta) = (1.0, 1e-3, 0.05, -0.5f64);
     let e = 0.5 * i * 1.1 * G / a + m * G * a;

@@ -24,6 +24,7 @@
 mod centre;
 mod classify;
 mod evaluate;
+mod from_initial;
 mod heavy;
 mod motion;
 mod passes;

@@ -198,6 +198,17 @@ impl Clock {
     }
 }
 
+/// The time since world time `start`, double-double (`now` itself for a
+/// start at 0).
+#[inline]
+pub(crate) fn elapsed(now: Dd, start: Dd) -> Dd {
+    if start.hi == 0.0 && start.lo == 0.0 {
+        now
+    } else {
+        now.add(start.neg())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

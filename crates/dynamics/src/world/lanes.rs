@@ -12,7 +12,7 @@
 //! since the last move are `fresh` until the next one settles them.
 
 use super::World;
-use super::plan::Motion;
+use super::motion::Motion;
 use super::uniform::Rotation;
 use crate::PrincipalState;
 

@@ -67,13 +67,17 @@
 mod body;
 mod clock;
 mod ground;
+mod ground_motion;
 mod lanes;
+mod motion;
 mod plan;
+mod reads;
 mod registry;
 mod setters;
 mod state;
 mod stepping;
 mod table;
+mod table_run;
 mod tolerance;
 mod uniform;
 
@@ -83,14 +87,14 @@ use glam::DVec3;
 
 pub use self::body::{Body, BodyBuilder, Support};
 pub use self::plan::Plan;
-use self::state::Reading;
+use self::reads::Reading;
 pub use self::state::{BodyId, BodyState};
 pub use self::table::{DEFAULT_TABLE_TOLERANCE, table_tolerance};
 pub use self::tolerance::{Choice, Tolerance};
 
 use self::clock::Clock;
 pub use self::clock::{WHOLE_STEPS_TOLERANCE, grid_steps};
-use self::plan::Motion;
+use self::motion::Motion;
 use self::uniform::UniformBatch;
 use crate::{
     DivergenceCheck, DynamicsError, ForcedBody, ForcedState, FreeBodyMethod, HeavyTop,
@@ -528,7 +532,7 @@ impl World {
             None if !body.inputs().is_none() => {
                 let (x0, v0, since) = ballistic;
                 let (position_world, velocity_world) =
-                    state::ballistic(x0, v0, self.gravity, self.time() - since);
+                    reads::ballistic(x0, v0, self.gravity, self.time() - since);
                 let forced =
                     ForcedBody::try_new(*rigid, body.mass(), self.gravity, body.inputs().clone())?;
                 let start = ForcedState {

@@ -3,7 +3,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::plan::Motion;
+use super::motion::Motion;
 use super::{BodyId, Entry, World};
 use crate::{DynamicsError, Inputs, PrincipalState};
 
@@ -254,7 +254,7 @@ impl World {
             return Ok(());
         }
         if let Some(super::Entry {
-            motion: super::plan::Motion::Ground(ground),
+            motion: super::motion::Motion::Ground(ground),
             body,
             ..
         }) = self.entries.get_mut(id.0)

@@ -5,10 +5,10 @@
 //! [`crate::ForcedSplitting::step`] at `t` with the checks of
 //! [`crate::ForcedPropagator::try_advance`].
 
-use super::clock::{Clock, Route};
-use super::ground::GroundMotion;
-use super::plan::{ForcedMotion, Motion, elapsed};
-use super::table::TableRun;
+use super::clock::{Clock, Route, elapsed};
+use super::ground_motion::GroundMotion;
+use super::motion::{ForcedMotion, Motion};
+use super::table_run::TableRun;
 use super::{Entry, World};
 use crate::elliptic::dd::Dd;
 use crate::{

@@ -22,7 +22,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::plan::elapsed;
+use super::clock::elapsed;
 use crate::elliptic::dd::Dd;
 use crate::exact::uniform_rotation;
 
