@@ -56,27 +56,8 @@ impl Columns {
     fn push(&mut self, states: &States, bodies: &[(String, BodyId)]) {
         for (index, s) in states {
             let name = &bodies[*index].0;
-            let q = s.world_from_body;
-            let row = [
-                s.time,
-                q.w,
-                q.x,
-                q.y,
-                q.z,
-                s.omega_body.x,
-                s.omega_body.y,
-                s.omega_body.z,
-                s.energy,
-                s.l_world.x,
-                s.l_world.y,
-                s.l_world.z,
-                s.position.x,
-                s.position.y,
-                s.position.z,
-                s.velocity.x,
-                s.velocity.y,
-                s.velocity.z,
-            ];
+            // Every column but `body`, in `Column::ALL` order.
+            let row = Column::ALL.into_iter().filter_map(|c| c.value(s));
             for (column, x) in self.numbers.iter_mut().zip(row) {
                 column.push(x);
             }

@@ -6,7 +6,6 @@
 
 use std::io::{self, Write};
 
-use glam::{DQuat, DVec3};
 use kreisel_dynamics::{BodyId, BodyState, World};
 
 use crate::numbers::{Shortest, write_numbers};
@@ -83,6 +82,41 @@ impl Column {
         }
     }
 
+    /// The number this column holds for `state`; `None` for `body` (the
+    /// body's name, which the state does not know).
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::BodyState;
+    /// use kreisel_scene::columns::Column;
+    /// let s = BodyState {
+    ///     time: 0.5,
+    ///     world_from_body: DQuat::IDENTITY,
+    ///     omega_body: DVec3::new(1.0, 2.0, 3.0),
+    ///     l_world: DVec3::ZERO,
+    ///     energy: 7.0,
+    ///     position: DVec3::new(0.0, 0.0, -1.0),
+    ///     velocity: DVec3::ZERO,
+    /// };
+    /// assert_eq!(Column::T.value(&s), Some(0.5));
+    /// assert_eq!(Column::Omega(1).value(&s), Some(2.0));
+    /// assert_eq!(Column::X(2).value(&s), Some(-1.0));
+    /// assert_eq!(Column::Body.value(&s), None);
+    /// ```
+    pub fn value(self, state: &BodyState) -> Option<f64> {
+        let q = state.world_from_body;
+        Some(match self {
+            Column::T => state.time,
+            Column::Body => return None,
+            Column::Q(i) => [q.w, q.x, q.y, q.z][i],
+            Column::Omega(i) => state.omega_body[i],
+            Column::Energy => state.energy,
+            Column::L(i) => state.l_world[i],
+            Column::X(i) => state.position[i],
+            Column::V(i) => state.velocity[i],
+        })
+    }
+
     /// Every column name, comma-separated.
     pub fn names() -> String {
         Column::ALL.map(Column::name).join(",")
@@ -109,52 +143,6 @@ impl Column {
             columns.push(column);
         }
         Ok(columns)
-    }
-}
-
-/// The numbers of one row after the time and the body name.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Row {
-    /// Attitude: maps body coordinates to world coordinates.
-    pub world_from_body: DQuat,
-    /// Angular velocity in body axes, rad/s.
-    pub omega_body: DVec3,
-    /// Total energy, J.
-    pub energy: f64,
-    /// Angular momentum about the centre of mass in world axes, kg·m²/s.
-    pub l_world: DVec3,
-    /// Centre of mass, world axes, m.
-    pub position: DVec3,
-    /// Its velocity, world axes, m/s.
-    pub velocity: DVec3,
-}
-
-impl Row {
-    /// The number in `column` (`None` for `t` and `body`).
-    fn number(&self, column: Column) -> Option<f64> {
-        let q = self.world_from_body;
-        Some(match column {
-            Column::T | Column::Body => return None,
-            Column::Q(i) => [q.w, q.x, q.y, q.z][i],
-            Column::Omega(i) => self.omega_body[i],
-            Column::Energy => self.energy,
-            Column::L(i) => self.l_world[i],
-            Column::X(i) => self.position[i],
-            Column::V(i) => self.velocity[i],
-        })
-    }
-}
-
-impl From<&BodyState> for Row {
-    fn from(s: &BodyState) -> Self {
-        Row {
-            world_from_body: s.world_from_body,
-            omega_body: s.omega_body,
-            energy: s.energy,
-            l_world: s.l_world,
-            position: s.position,
-            velocity: s.velocity,
-        }
     }
 }
 
@@ -185,16 +173,11 @@ pub fn read_states(
 /// (whichever `--columns` writes).
 pub fn first_non_finite(states: &States) -> Option<(usize, f64, &'static str)> {
     states.iter().find_map(|(index, s)| {
-        let row = Row::from(s);
-        let bad = Column::ALL
+        // `t` comes first in `ALL`: a time that is not finite is named so.
+        Column::ALL
             .into_iter()
-            .find(|c| row.number(*c).is_some_and(|x| !x.is_finite()))
-            .map(Column::name);
-        match (s.time.is_finite(), bad) {
-            (false, _) => Some((*index, s.time, "t")),
-            (true, Some(column)) => Some((*index, s.time, column)),
-            (true, None) => None,
-        }
+            .find(|c| c.value(s).is_some_and(|x| !x.is_finite()))
+            .map(|column| (*index, s.time, column.name()))
     })
 }
 
@@ -232,26 +215,37 @@ impl<W: Write> CsvWriter<W> {
     ///
     /// # Errors
     /// The writer's errors.
-    pub fn row(&mut self, t: f64, body: &str, row: &Row) -> io::Result<()> {
+    pub fn row(&mut self, body: &str, state: &BodyState) -> io::Result<()> {
         if let Some(columns) = &self.columns {
             for (k, column) in columns.iter().enumerate() {
                 if k > 0 {
                     self.out.write_all(b",")?;
                 }
-                match (column, row.number(*column)) {
-                    (_, Some(x)) => write!(self.out, "{}", Shortest(x))?,
-                    (Column::Body, None) => self.out.write_all(body.as_bytes())?,
-                    _ => write!(self.out, "{}", Shortest(t))?,
+                match column.value(state) {
+                    Some(x) => write!(self.out, "{}", Shortest(x))?,
+                    None => self.out.write_all(body.as_bytes())?,
                 }
             }
             return self.out.write_all(b"\n");
         }
-        write!(self.out, "{},{body},", Shortest(t))?;
-        let q = row.world_from_body;
-        let (w, l) = (row.omega_body, row.l_world);
+        write!(self.out, "{},{body},", Shortest(state.time))?;
+        let q = state.world_from_body;
+        let (w, l) = (state.omega_body, state.l_world);
         write_numbers(
             &mut self.out,
-            &[q.w, q.x, q.y, q.z, w.x, w.y, w.z, row.energy, l.x, l.y, l.z],
+            &[
+                q.w,
+                q.x,
+                q.y,
+                q.z,
+                w.x,
+                w.y,
+                w.z,
+                state.energy,
+                l.x,
+                l.y,
+                l.z,
+            ],
         )
     }
 
@@ -262,7 +256,7 @@ impl<W: Write> CsvWriter<W> {
     /// The writer's errors.
     pub fn rows(&mut self, states: &States, bodies: &[(String, BodyId)]) -> io::Result<()> {
         for (index, s) in states {
-            self.row(s.time, &bodies[*index].0, &Row::from(s))?;
+            self.row(&bodies[*index].0, s)?;
         }
         Ok(())
     }
@@ -278,12 +272,15 @@ impl<W: Write> CsvWriter<W> {
 
 #[cfg(test)]
 mod tests {
+    use glam::{DQuat, DVec3};
+
     use super::*;
 
     #[test]
     fn header_and_row_in_shortest_form() {
         let mut csv = CsvWriter::with_columns(Vec::new(), Column::default_columns()).unwrap();
-        let row = Row {
+        let row = BodyState {
+            time: 0.1 + 0.2,
             world_from_body: DQuat::from_xyzw(0.0, 0.0, -0.0, 1.0),
             omega_body: DVec3::new(0.01, 1.0, 0.0),
             energy: 1.00005,
@@ -291,7 +288,7 @@ mod tests {
             position: DVec3::new(1.0, -2.0, 0.5),
             velocity: DVec3::new(0.0, 0.25, -9.81),
         };
-        csv.row(0.1 + 0.2, "handle", &row).unwrap();
+        csv.row("handle", &row).unwrap();
         csv.flush().unwrap();
         let text = String::from_utf8(csv.out).unwrap();
         assert_eq!(
@@ -305,7 +302,8 @@ mod tests {
     fn chosen_columns_in_the_order_given() {
         let columns = Column::parse_list("t,x,z, vz,body,energy").unwrap();
         let mut csv = CsvWriter::with_columns(Vec::new(), columns).unwrap();
-        let row = Row {
+        let row = BodyState {
+            time: 0.5,
             world_from_body: DQuat::IDENTITY,
             omega_body: DVec3::ZERO,
             energy: 2.5,
@@ -313,7 +311,7 @@ mod tests {
             position: DVec3::new(1.0, -2.0, 0.5),
             velocity: DVec3::new(0.0, 0.25, -9.81),
         };
-        csv.row(0.5, "ball", &row).unwrap();
+        csv.row("ball", &row).unwrap();
         let text = String::from_utf8(csv.out).unwrap();
         assert_eq!(text, "t,x,z,vz,body,energy\n0.5,1,0.5,-9.81,ball,2.5\n");
         // The default columns, chosen explicitly, take the default path.

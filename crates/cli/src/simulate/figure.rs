@@ -139,8 +139,8 @@ fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 /// The time axis of a track.
 fn time_range(track: &Track) -> (f64, f64) {
-    let t0 = track.samples.first().map_or(0.0, |s| s.t);
-    let t1 = track.samples.last().map_or(1.0, |s| s.t);
+    let t0 = track.samples.first().map_or(0.0, |s| s.time);
+    let t1 = track.samples.last().map_or(1.0, |s| s.time);
     if t1 > t0 { (t0, t1) } else { (t0, t0 + 1.0) }
 }
 
@@ -168,7 +168,7 @@ fn omega_panel(fig: &mut Figure, track: &Track, top: f64) {
         let points: Vec<(f64, f64)> = track
             .samples
             .iter()
-            .map(|s| (s.t, s.omega_body[i]))
+            .map(|s| (s.time, s.omega_body[i]))
             .collect();
         axes.curve(fig, &points, &Stroke::solid(color, 1.8));
     }
@@ -208,7 +208,7 @@ fn energy_panel(fig: &mut Figure, track: &Track, top: f64) {
     let points: Vec<(f64, f64)> = track
         .samples
         .iter()
-        .map(|s| (s.t, change(s.energy)))
+        .map(|s| (s.time, change(s.energy)))
         .collect();
     let largest = points
         .iter()
@@ -259,7 +259,7 @@ fn polhode_panel(fig: &mut Figure, track: &Track, top: f64) {
     let path: Vec<DVec3> = track
         .samples
         .iter()
-        .filter_map(|s| (axes.transpose() * s.l_body).try_normalize())
+        .filter_map(|s| (axes.transpose() * s.l_body()).try_normalize())
         .collect();
     let panel = SpherePanel {
         center: Point::new(1225.0, top + 195.0),

@@ -8,8 +8,7 @@
 //! kept, and so on (the kept rows stay evenly spaced). The last row of the
 //! run is always kept.
 
-use glam::DVec3;
-use kreisel_dynamics::{BodyId, Support, World};
+use kreisel_dynamics::{BodyId, BodyState, Support, World};
 use kreisel_inertia::PrincipalAxes;
 
 /// Bodies drawn at most (the first ones in scene order).
@@ -17,19 +16,6 @@ pub const MAX_BODIES: usize = 4;
 
 /// Rows kept per body at most (after thinning, at least half of it).
 pub const MAX_POINTS: usize = 4000;
-
-/// One row of one body.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Sample {
-    /// Time, s.
-    pub t: f64,
-    /// Angular velocity, body axes, rad/s.
-    pub omega_body: DVec3,
-    /// Energy, J (as in the CSV).
-    pub energy: f64,
-    /// Angular momentum in body axes, kg m²/s (about the pivot for a heavy top).
-    pub l_body: DVec3,
-}
 
 /// What a body is, for the figure.
 #[derive(Debug, Clone)]
@@ -46,7 +32,7 @@ pub struct Track {
     /// Torques, forces or damping act on it.
     pub driven: bool,
     /// The kept rows, in time order.
-    pub samples: Vec<Sample>,
+    pub samples: Vec<BodyState>,
 }
 
 /// Collects the rows of a run for the figure.
@@ -63,7 +49,7 @@ pub struct Recorder {
     /// Every `stride`-th row is kept.
     stride: u64,
     /// The latest row when it was not kept (appended at the end).
-    last: Option<Vec<Sample>>,
+    last: Option<Vec<BodyState>>,
 }
 
 impl Recorder {
@@ -98,18 +84,13 @@ impl Recorder {
         }
     }
 
-    /// Notes the rows of one time (the states [`super::output::read_states`]
+    /// Notes the rows of one time (the states [`kreisel_scene::columns::read_states`]
     /// read).
     pub fn record(&mut self, states: &kreisel_scene::columns::States) {
-        let samples: Vec<Sample> = states
+        let samples: Vec<BodyState> = states
             .iter()
             .filter(|(index, _)| *index < self.recorded)
-            .map(|(_, s)| Sample {
-                t: s.time,
-                omega_body: s.omega_body,
-                energy: s.energy,
-                l_body: s.world_from_body.inverse() * s.l_world,
-            })
+            .map(|(_, s)| *s)
             .collect();
         let keep = self.rows.is_multiple_of(self.stride);
         self.rows += 1;
@@ -166,6 +147,8 @@ pub struct Recorded {
 
 #[cfg(test)]
 mod tests {
+    use glam::DVec3;
+
     use super::*;
     use kreisel_dynamics::Body;
 
@@ -197,15 +180,15 @@ mod tests {
             s.len()
         );
         // Evenly spaced, then the last row.
-        let step = s[1].t - s[0].t;
+        let step = s[1].time - s[0].time;
         for w in s[..s.len() - 1].windows(2) {
-            assert!((w[1].t - w[0].t - step).abs() < 1e-9);
+            assert!((w[1].time - w[0].time - step).abs() < 1e-9);
         }
         let last = (rows - 1) as f64 * 0.01;
-        assert!((s.last().unwrap().t - last).abs() < 1e-9);
+        assert!((s.last().unwrap().time - last).abs() < 1e-9);
         assert!(!tracks[0].pivot && !tracks[0].driven && !tracks[0].ground);
         // L in body axes is I ω.
-        let l = s[0].l_body;
+        let l = s[0].l_body();
         assert!((l - DVec3::new(0.1, 2.0, 0.0)).length() < 1e-15, "{l}");
     }
 }

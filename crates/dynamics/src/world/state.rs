@@ -75,3 +75,31 @@ pub struct BodyState {
     /// Its velocity, world axes, m/s.
     pub velocity: DVec3,
 }
+
+impl BodyState {
+    /// The angular momentum in body axes, kg·m²/s (about the same point as
+    /// [`BodyState::l_world`]).
+    ///
+    /// ```text
+    /// L_body = q⁻¹ L_world q,   q = world_from_body
+    /// ```
+    ///
+    /// ```
+    /// use glam::{DQuat, DVec3};
+    /// use kreisel_dynamics::BodyState;
+    /// let s = BodyState {
+    ///     time: 0.0,
+    ///     world_from_body: DQuat::from_rotation_z(std::f64::consts::FRAC_PI_2),
+    ///     omega_body: DVec3::ZERO,
+    ///     l_world: DVec3::Y,
+    ///     energy: 0.0,
+    ///     position: DVec3::ZERO,
+    ///     velocity: DVec3::ZERO,
+    /// };
+    /// // The world's y axis is the body's x axis after a quarter turn about z.
+    /// assert!((s.l_body() - DVec3::X).length() < 1e-15);
+    /// ```
+    pub fn l_body(&self) -> DVec3 {
+        self.world_from_body.inverse() * self.l_world
+    }
+}
