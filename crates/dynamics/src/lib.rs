@@ -47,6 +47,28 @@
 //!   `ω = I⁻¹ L`. [`RigidBody`] converts to and from body axes.
 //! - Euler's equations `L̇ = L × ω` and `q̇ = ½ q ⊗ (0, ω)` (notes §3.5–3.7).
 //!
+//! ## Which body and state type is for what
+//! One line each; a user of the engine needs only [`Body`], [`World`] and
+//! [`BodyState`], the rest are the models the World plans a body onto.
+//! - [`Body`] (built by [`BodyBuilder`]): what a [`World`] holds — mass
+//!   properties, attitude, spin, support, inputs, contacts.
+//! - [`BodyState`]: what the World reports of a body at a time (attitude,
+//!   `omega_body`, `l_world`, energy, centre of mass and its velocity):
+//!   every output row.
+//! - [`RigidBody`] with [`PrincipalState`]: the torque-free body's moments
+//!   and its state in the principal frame, what [`FreeBodyIntegrator`]s
+//!   and [`ExactSolution`] advance.
+//! - [`ForcedBody`] with [`ForcedState`]: a free body under torques, forces
+//!   and damping ([`Inputs`]), its centre of mass moving too.
+//! - [`HeavyTop`] (moments about the pivot, a [`PrincipalState`]): a body
+//!   on a fixed pivot under gravity, for [`HeavyTopIntegrator`]s.
+//! - [`LagrangeTop`] → [`LagrangeTopMotion`]: the symmetric heavy top's
+//!   parameters and its motion in closed form.
+//! - [`GroundTop`] with [`GroundTopState`]: a body on the ground plane with
+//!   one contact kept closed and smooth friction ([`Friction`]).
+//! - [`TableBody`] → [`TableMotion`]: a body on the table with unilateral
+//!   contacts, impacts and set-valued friction, run event to event.
+//!
 //! ```
 //! use glam::{DQuat, DVec3};
 //! use kreisel_dynamics::{integrate, method, PrincipalState, RigidBody};
