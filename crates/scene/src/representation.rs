@@ -34,6 +34,26 @@ pub enum Representation {
 }
 
 impl Representation {
+    /// Every representation: the five fixed ones, then `euler:SEQ` for
+    /// each of the 24 sequences ([`EulerSequence::all`]).
+    ///
+    /// ```
+    /// use kreisel_scene::representation::Representation;
+    /// assert_eq!(Representation::all().count(), 29);
+    /// assert!(Representation::all().all(|r| r.to_string().parse() == Ok(r)));
+    /// ```
+    pub fn all() -> impl Iterator<Item = Representation> {
+        [
+            Representation::Quat,
+            Representation::QuatXyzw,
+            Representation::Matrix,
+            Representation::RotVec,
+            Representation::AxisAngle,
+        ]
+        .into_iter()
+        .chain(EulerSequence::all().map(Representation::Euler))
+    }
+
     /// How many numbers a line of this representation holds.
     pub const fn count(self) -> usize {
         match self {
@@ -88,21 +108,9 @@ impl FromStr for Representation {
 mod tests {
     use super::*;
 
-    fn all() -> Vec<Representation> {
-        let mut all = vec![
-            Representation::Quat,
-            Representation::QuatXyzw,
-            Representation::Matrix,
-            Representation::RotVec,
-            Representation::AxisAngle,
-        ];
-        all.extend(EulerSequence::all().map(Representation::Euler));
-        all
-    }
-
     #[test]
     fn names_round_trip() {
-        for r in all() {
+        for r in Representation::all() {
             assert_eq!(r.to_string().parse::<Representation>(), Ok(r));
         }
         for bad in [

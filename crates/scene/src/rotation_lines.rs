@@ -208,22 +208,10 @@ mod tests {
     use super::*;
     use kreisel_kinematics::rotation_angle_between;
 
-    fn all() -> Vec<Representation> {
-        let mut all = vec![
-            Representation::Quat,
-            Representation::QuatXyzw,
-            Representation::Matrix,
-            Representation::RotVec,
-            Representation::AxisAngle,
-        ];
-        all.extend(EulerSequence::all().map(Representation::Euler));
-        all
-    }
-
     #[test]
     fn every_pair_round_trips() {
         let q = DQuat::from_xyzw(0.3, -0.5, 0.1, 0.8).normalize();
-        for from in all() {
+        for from in Representation::all() {
             for degrees in [false, true] {
                 let numbers = from.numbers_from_quat(q, degrees);
                 assert_eq!(numbers.count(), from.count());
