@@ -10,7 +10,7 @@
 //! the time). The view follows the ball's centre horizontally.
 
 use glam::{DQuat, DVec3};
-use kreisel::dynamics::GroundTopState;
+use kreisel::dynamics::BodyState;
 use kreisel_plot::Figure;
 use kreisel_plot::axes::{Axes, Labels};
 use kreisel_plot::figure::{Anchor, Color, Point, Rect, Stroke, Text};
@@ -49,7 +49,7 @@ const THETA_LINE: Color = Color::rgb(31, 119, 180);
 #[derive(Debug, Clone, Copy)]
 pub struct FrameData<'a> {
     /// The state drawn.
-    pub state: &'a GroundTopState,
+    pub state: &'a BodyState,
     /// Its time, s.
     pub time: f64,
     /// (t, θ in degrees) up to now.
@@ -142,10 +142,10 @@ fn circle_3d(centre: DVec3, normal: DVec3, radius: f64) -> Vec<DVec3> {
 }
 
 /// The top itself.
-fn draw_top(fig: &mut Figure, state: &GroundTopState) {
+fn draw_top(fig: &mut Figure, state: &BodyState) {
     let q: DQuat = state.world_from_body.normalize();
     let axis = q * DVec3::Z;
-    let ball = state.com_world + BALL_OFFSET * axis;
+    let ball = state.position + BALL_OFFSET * axis;
     let view = View::new(axis, ball);
     let to_viewer = view.to_viewer;
     let px = |p: DVec3| view.project(p);
@@ -163,7 +163,7 @@ fn draw_top(fig: &mut Figure, state: &GroundTopState) {
         .chain(rim.iter().copied())
         .map(px)
         .collect();
-    let stem_ball = state.com_world + STEM_OFFSET * axis;
+    let stem_ball = state.position + STEM_OFFSET * axis;
     let stem_in_front = axis.dot(to_viewer) > 0.0;
     let draw_stem = |fig: &mut Figure| {
         fig.line(
@@ -232,7 +232,7 @@ fn draw_top(fig: &mut Figure, state: &GroundTopState) {
         }
     }
     // The centre of mass.
-    let g = px(state.com_world);
+    let g = px(state.position);
     fig.circle(
         g,
         3.5,

@@ -111,7 +111,8 @@ pub fn run(options: &Options, mut sim: Simulation, out: &mut dyn Write) -> Resul
     let mut tilts: Vec<(f64, f64)> = Vec::new();
     for (t, frame) in grid(options.duration, SAMPLES, options.fps) {
         sim.advance_to(t)?;
-        let theta_deg = tilt(sim.state()).to_degrees();
+        let state = sim.state();
+        let theta_deg = tilt(&state).to_degrees();
         samples.push(Sample {
             t,
             theta_deg,
@@ -122,7 +123,7 @@ pub fn run(options: &Options, mut sim: Simulation, out: &mut dyn Write) -> Resul
             && frame
         {
             g.push(&FrameData {
-                state: sim.state(),
+                state: &state,
                 time: t,
                 tilt_history: &tilts,
                 duration: options.duration,

@@ -50,7 +50,7 @@ fn open_window() -> Result<Window, String> {
 /// The library's errors, [`DemoError::Plot`], [`DemoError::Stdout`].
 pub fn run(
     options: &Options,
-    mut sim: Simulation,
+    sim: &mut Simulation,
     out: &mut dyn Write,
 ) -> Result<Outcome, DemoError> {
     let mut window = match open_window() {
@@ -58,7 +58,7 @@ pub fn run(
         Err(reason) => return Ok(Outcome::NoWindow(reason)),
     };
     window.set_target_fps(60);
-    let mut tilts = vec![(0.0, tilt(sim.state()).to_degrees())];
+    let mut tilts = vec![(0.0, tilt(&sim.state()).to_degrees())];
     let mut reported = false;
     let mut last = Instant::now();
     while window.is_open() && !window.is_key_down(Key::Escape) && !window.is_key_down(Key::Q) {
@@ -68,10 +68,10 @@ pub fn run(
         // The engine adapts its own steps inside the frame.
         sim.advance_to((sim.time() + owed).min(options.duration))?;
         if tilts.last().is_some_and(|&(t, _)| t < sim.time()) {
-            tilts.push((sim.time(), tilt(sim.state()).to_degrees()));
+            tilts.push((sim.time(), tilt(&sim.state()).to_degrees()));
         }
         let pixels = frame_pixels(&FrameData {
-            state: sim.state(),
+            state: &sim.state(),
             time: sim.time(),
             tilt_history: &tilts,
             duration: options.duration,
@@ -79,7 +79,7 @@ pub fn run(
             touching: sim.touching(),
         })?;
         if !reported && sim.time() >= options.duration {
-            for line in result_lines(&sim, options) {
+            for line in result_lines(sim, options) {
                 writeln!(out, "{line}")?;
             }
             out.flush()?;
@@ -91,7 +91,7 @@ pub fn run(
         }
     }
     if !reported {
-        for line in result_lines(&sim, options) {
+        for line in result_lines(sim, options) {
             writeln!(out, "{line}")?;
         }
     }

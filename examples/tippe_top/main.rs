@@ -16,14 +16,16 @@
 //! cargo run --release --example tippe_top -- --help        # every option
 //! ```
 //!
-//! The simulation is the library's nonsmooth engine,
+//! The simulation is a body on the table of the library's
+//! [`kreisel::dynamics::World`], which moves it by its nonsmooth engine,
 //! [`kreisel::dynamics::TableMotion`]: the ball and the stem's ball are
 //! unilateral contacts (Signorini), friction is set-valued (stick and slip
 //! on the cone), a contact that closes with speed is an impact (Newton's
 //! law, `--restitution`, plastic by default), and the engine adapts its
 //! own steps (`--tolerance`, default 1e-10) between events it locates to
 //! rounding. The demo only observes, at its output grid (chart samples
-//! and frames at `1/--fps` s) and at each of the library's events. It
+//! and frames at `1/--fps` s) and at each of the library's events (the
+//! world stops there: `World::advance_until_event`). It
 //! prints the setup, then one line per event of interest with its time —
 //! the axis passing the horizontal (located by bisection on the library's
 //! run), the stem's landing, the ball lifting off, touching down again,
@@ -149,15 +151,14 @@ where
         }
     };
     options.validate()?;
-    let run = simulation::leine_glocker(options.law()?, options.tolerance)?;
-    let sim = simulation::Simulation::new(run);
+    let mut sim = simulation::Simulation::try_new(options.law()?, options.tolerance)?;
     for line in report::setup_lines(&options) {
         writeln!(out, "{line}")?;
     }
     let files = options.gif.is_some() || options.plot.is_some();
     if !options.headless && !files {
         match display.filter(|d| !d.is_empty()) {
-            Some(_) => match live::run(&options, sim.clone(), out)? {
+            Some(_) => match live::run(&options, &mut sim, out)? {
                 live::Outcome::Closed => return Ok(()),
                 live::Outcome::NoWindow(reason) => {
                     writeln!(out, "no window ({reason}): running headless")?;

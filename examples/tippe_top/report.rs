@@ -125,7 +125,7 @@ fn contact_lines(sim: &Simulation, end: f64) -> Vec<(f64, String)> {
             let words: Vec<String> = events
                 .iter()
                 .filter(|e| e.time == t0)
-                .filter_map(|e| event_words(e, sim.run.resolution_speed()))
+                .filter_map(|e| event_words(e, sim.run().resolution_speed()))
                 .collect();
             lines.push((
                 t0,
@@ -216,8 +216,8 @@ pub fn result_lines(sim: &Simulation, options: &Options) -> Vec<String> {
         lines.extend(sim.events().iter().map(|e| format!("  {e}")));
     }
     let state = sim.state();
-    let omega = sim.run.body().omega_world(state);
-    let modes = sim.run.modes();
+    let omega = state.world_from_body.normalize() * state.omega_body;
+    let modes = sim.run().modes();
     let contacts: Vec<String> = modes
         .iter()
         .zip(CONTACT_NAMES)
@@ -227,7 +227,7 @@ pub fn result_lines(sim: &Simulation, options: &Options) -> Vec<String> {
     lines.push(format!(
         "at t = {} s: θ = {:.2}°, {} ({}), ω_z = {:.3} rad/s, spin about the axis {:.3} rad/s",
         significant(end, 6),
-        simulation::tilt(state).to_degrees(),
+        simulation::tilt(&state).to_degrees(),
         standing(sim.touching()),
         if contacts.is_empty() {
             "no contact".to_owned()
@@ -235,7 +235,7 @@ pub fn result_lines(sim: &Simulation, options: &Options) -> Vec<String> {
             contacts.join(", ")
         },
         omega.z,
-        omega.dot(simulation::axis(state)),
+        omega.dot(simulation::axis(&state)),
     ));
     let rose = if sim.energy_rise <= 0.0 {
         "it never rose between the observed instants".to_owned()

@@ -1,15 +1,17 @@
-//! The tippe top of Leine & Glocker (2003) with its stem, run by the
-//! library's nonsmooth engine ([`TableMotion`]: ball and stem as unilateral
-//! contacts, Coulomb–Contensou friction, impacts), and what the demo
-//! observes along the way: the tilt θ, the energy, Jellett's λ about the
-//! touching sphere, the axis' passage through the horizontal, and the
-//! library's own events.
+//! The tippe top of Leine & Glocker (2003) with its stem, a body on the
+//! table of a [`World`] ([`kreisel::dynamics::Support::Table`]: ball and
+//! stem as unilateral contacts, Coulomb–Contensou friction, impacts, moved
+//! by the library's nonsmooth engine), and what the demo observes along
+//! the way: the tilt θ, the energy, Jellett's λ about the touching sphere,
+//! the axis' passage through the horizontal, and the world's events.
 
-use glam::{DMat3, DQuat, DVec2, DVec3};
+use glam::{DQuat, DVec3};
 use kreisel::dynamics::{
-    AdaptiveTolerance, ContactLaw, ContactMode, ContactShape, DynamicsError, Friction, GroundTop,
-    GroundTopState, SphereContact, TableBody, TableContact, TableEvent, TableMotion,
+    Body, BodyId, BodyState, ContactLaw, ContactMode, ContactShape, DynamicsError, SphereContact,
+    TableContact, TableEvent, TableMotion, Tolerance, World,
 };
+
+use super::options::MAX_DURATION;
 
 /// Mass, kg (Leine & Glocker, Eur. J. Mech. A/Solids 22 (2003) 193).
 pub const MASS: f64 = 0.006;
@@ -38,43 +40,63 @@ pub const CONTACT_NAMES: [&str; 2] = ["ball", "stem"];
 /// instants (2⁻⁶⁰ of the interval: to rounding).
 const BISECTIONS: usize = 60;
 
-/// Leine & Glocker's top with its ball and its stem's ball on the table,
-/// each contact with `law`, tilted by θ₀ about x, spinning at ω₀ about its
-/// axis, its centre of mass at rest, the ball touching: the library's
-/// nonsmooth run at `tolerance` (relative and absolute).
-///
-/// # Errors
-/// The library's: a tolerance it refuses, the first events' errors.
-pub fn leine_glocker(law: ContactLaw, tolerance: f64) -> Result<TableMotion, DynamicsError> {
-    let inertia = DMat3::from_diagonal(DVec3::new(I1, I1, I3));
-    let ball = SphereContact::try_new(BALL_RADIUS, DVec3::new(0.0, 0.0, BALL_OFFSET))?;
-    let stem = SphereContact::try_new(STEM_RADIUS, DVec3::new(0.0, 0.0, STEM_OFFSET))?;
-    let contacts = [ball, stem]
-        .map(|s| TableContact {
-            shape: ContactShape::Sphere(s),
-            law,
-        })
-        .to_vec();
-    let body = TableBody::try_new(MASS, inertia, contacts, GRAVITY)?;
-    // The start on the ball: GroundTop's placement (the ball touching, the
-    // centre of mass at rest).
-    let placer = GroundTop::try_new(MASS, inertia, ball, Friction::None, GRAVITY)?;
+/// The world's `dt`: for a body on the table only the grid
+/// [`World::advance_steps`] walks, which the demo does not use (it
+/// advances to its own instants).
+const WORLD_DT: f64 = 1e-3;
+
+/// A world's attitude tolerance per unit of the table's `rtol = atol`
+/// ([`kreisel::dynamics::table_tolerance`] takes a thousandth of it).
+const ATTITUDE_PER_RTOL: f64 = 1000.0;
+
+/// The top's state in a world: attitude, angular velocity (body axes),
+/// centre of mass and its velocity.
+type Start = (DQuat, DVec3, DVec3, DVec3);
+
+/// Leine & Glocker's start: tilted by θ₀ about x, spinning at ω₀ about its
+/// axis, its centre of mass at rest, the ball touching.
+fn leine_glocker_start(ball: &ContactShape) -> Start {
     let q = DQuat::from_rotation_x(THETA0);
-    let start = placer.try_state_on_ground(q, q * DVec3::new(0.0, 0.0, SPIN0), DVec2::ZERO)?;
-    TableMotion::try_new(
-        body,
-        start,
-        AdaptiveTolerance::try_new(tolerance, tolerance)?,
+    let height = -ball.contact_from_com_world(q).z;
+    (
+        q,
+        DVec3::new(0.0, 0.0, SPIN0),
+        DVec3::new(0.0, 0.0, height),
+        DVec3::ZERO,
     )
 }
 
+/// A world at time 0 holding the top with `contacts` on the table in
+/// `start`, its run at `tolerance` (the table's `rtol = atol`).
+///
+/// # Errors
+/// The library's: a tolerance or a state it refuses.
+fn world_with_top(
+    contacts: &[TableContact],
+    tolerance: f64,
+    (q, omega_body, position, velocity): Start,
+) -> Result<(World, BodyId), DynamicsError> {
+    let body = Body::from_principal_moments(MASS, DVec3::new(I1, I1, I3))
+        .world_from_body(q)
+        .omega_body(omega_body)
+        .on_table(position, velocity, contacts)
+        .try_build()?;
+    let mut world = World::try_new(DVec3::new(0.0, 0.0, -GRAVITY), WORLD_DT)?;
+    world.set_tolerance(Some(Tolerance::try_new(
+        ATTITUDE_PER_RTOL * tolerance,
+        MAX_DURATION,
+    )?))?;
+    let id = world.add(body)?;
+    Ok((world, id))
+}
+
 /// The symmetry axis (towards the stem) in world axes.
-pub fn axis(state: &GroundTopState) -> DVec3 {
+pub fn axis(state: &BodyState) -> DVec3 {
     state.world_from_body.normalize() * DVec3::Z
 }
 
 /// The tilt of the symmetry axis from the vertical, rad.
-pub fn tilt(state: &GroundTopState) -> f64 {
+pub fn tilt(state: &BodyState) -> f64 {
     axis(state).z.clamp(-1.0, 1.0).acos()
 }
 
@@ -95,12 +117,16 @@ pub struct JellettWatch {
     pub time_alone: f64,
 }
 
-/// A run in progress: the library's motion, the instants observed so far
-/// and the budgets of the energy and of Jellett's λ.
-#[derive(Debug, Clone)]
+/// A run in progress: the world holding the top, the instants observed
+/// so far and the budgets of the energy and of Jellett's λ.
+#[derive(Debug)]
 pub struct Simulation {
-    /// The library's run.
-    pub run: TableMotion,
+    /// The world and the top's id in it.
+    world: World,
+    id: BodyId,
+    /// The top's contacts and tolerance (for the bisection's worlds).
+    contacts: Vec<TableContact>,
+    tolerance: f64,
     /// The energy at t = 0, J.
     pub energy0: f64,
     /// The largest rise of the energy between two observed instants, J
@@ -122,36 +148,66 @@ pub struct Simulation {
 }
 
 impl Simulation {
-    /// Starts observing `run` (at t = 0).
-    pub fn new(run: TableMotion) -> Self {
-        let energy0 = run.body().energy(run.state());
+    /// Leine & Glocker's top with its ball and its stem's ball on the
+    /// table, each contact with `law`, in their start
+    /// ([`leine_glocker_start`]), its run at `tolerance` (relative and
+    /// absolute): observed from t = 0.
+    ///
+    /// # Errors
+    /// The library's: a tolerance it refuses, the first events' errors.
+    pub fn try_new(law: ContactLaw, tolerance: f64) -> Result<Self, DynamicsError> {
+        let ball = SphereContact::try_new(BALL_RADIUS, DVec3::new(0.0, 0.0, BALL_OFFSET))?;
+        let stem = SphereContact::try_new(STEM_RADIUS, DVec3::new(0.0, 0.0, STEM_OFFSET))?;
+        let contacts: Vec<TableContact> = [ball, stem]
+            .map(|s| TableContact {
+                shape: ContactShape::Sphere(s),
+                law,
+            })
+            .to_vec();
+        let start = leine_glocker_start(&contacts[0].shape);
+        let (world, id) = world_with_top(&contacts, tolerance, start)?;
         let mut sim = Self {
-            energy0,
+            world,
+            id,
+            contacts,
+            tolerance,
+            energy0: 0.0,
             energy_rise: f64::NEG_INFINITY,
             horizontal: Vec::new(),
             jellett: [JellettWatch::default(); 2],
             touching_history: Vec::new(),
-            last_energy: energy0,
+            last_energy: 0.0,
             last_time: 0.0,
-            run,
         };
+        sim.energy0 = sim.state().energy;
+        sim.last_energy = sim.energy0;
         sim.observe();
-        sim
+        Ok(sim)
     }
 
     /// The time reached, s.
     pub fn time(&self) -> f64 {
-        self.run.time()
+        self.world.time()
     }
 
-    /// The state now.
-    pub fn state(&self) -> &GroundTopState {
-        self.run.state()
+    /// The top's state now, as the world reports it.
+    pub fn state(&self) -> BodyState {
+        self.world
+            .state(self.id)
+            .expect("the top is a body of its own world")
+    }
+
+    /// The top's run on the table, as the world holds it (its contact
+    /// modes, the resolution of its impacts, its body's Jellett's λ).
+    pub fn run(&self) -> &TableMotion {
+        self.world
+            .table_motion(self.id)
+            .expect("the top is on the table of its own world")
     }
 
     /// E/E₀ now.
     pub fn energy_ratio(&self) -> f64 {
-        self.run.body().energy(self.run.state()) / self.energy0
+        self.state().energy / self.energy0
     }
 
     /// The first time the axis passed the horizontal, s.
@@ -161,29 +217,30 @@ impl Simulation {
 
     /// Which contacts touch now.
     pub fn touching(&self) -> [bool; 2] {
-        touching(&self.run.modes())
+        touching(&self.run().modes())
     }
 
-    /// The library's events so far.
+    /// The world's events of the top so far.
     pub fn events(&self) -> &[TableEvent] {
-        self.run.events()
+        self.world.events(self.id).unwrap_or_default()
     }
 
-    /// Advances to `t` (exactly), stopping at each of the library's events
-    /// on the way to observe the state there.
+    /// Advances to `t` (exactly), stopping at each of the world's events
+    /// on the way ([`World::advance_until_event`]) to observe the state
+    /// there.
     ///
     /// # Errors
     /// The library's errors (a step that cannot be made accurate, an
     /// indeterminate contact problem).
     pub fn advance_to(&mut self, t: f64) -> Result<(), DynamicsError> {
-        while self.run.time() < t {
-            let before = self.run.clone();
-            self.run.try_advance_until_event(t)?;
+        while self.world.time() < t {
+            let before = self.state();
+            self.world.advance_until_event(t)?;
             // The inversion's passages: until the stem first touches.
             let inverting = !self.touching_history.iter().any(|(_, c)| c[1]);
-            if inverting && (axis(before.state()).z > 0.0) != (axis(self.run.state()).z > 0.0) {
-                self.horizontal
-                    .push(horizontal_passage(before, self.run.time())?);
+            if inverting && (axis(&before).z > 0.0) != (axis(&self.state()).z > 0.0) {
+                let passage = self.horizontal_passage(&before, self.world.time())?;
+                self.horizontal.push(passage);
             }
             self.observe();
         }
@@ -192,24 +249,24 @@ impl Simulation {
 
     /// Books the state now: the energy's rise, Jellett's λ, the contacts.
     fn observe(&mut self) {
-        let (t, state) = (self.run.time(), *self.run.state());
-        let energy = self.run.body().energy(&state);
+        let (t, energy) = (self.world.time(), self.state().energy);
         if t > self.last_time || self.touching_history.is_empty() {
             self.energy_rise = self.energy_rise.max(energy - self.last_energy);
         }
         let touching = self.touching();
+        let run = self.run();
+        let lambda = [0, 1].map(|i| run.body().jellett(run.state(), i));
         for (i, watch) in self.jellett.iter_mut().enumerate() {
-            let lambda = self.run.body().jellett(&state, i);
             let alone = touching[i] && !touching[1 - i];
             // Measured at the instants where it still touches alone (an
             // event that ends the phase may change λ: an impact does).
             match (watch.start, alone) {
                 (Some(start), true) => {
-                    watch.drift = watch.drift.max(((lambda - start) / start).abs());
+                    watch.drift = watch.drift.max(((lambda[i] - start) / start).abs());
                     watch.time_alone += t - self.last_time;
                 }
                 (Some(_), false) => watch.start = None,
-                (None, true) => watch.start = Some(lambda),
+                (None, true) => watch.start = Some(lambda[i]),
                 (None, false) => {}
             }
         }
@@ -223,30 +280,38 @@ impl Simulation {
         self.last_energy = energy;
         self.last_time = t;
     }
-}
 
-/// The instant in `(before.time(), t_end]` where the axis passes the
-/// horizontal (its height positive at one end, not at the other), by
-/// bisection: each trial is the library's run from `before` to the trial
-/// time.
-///
-/// # Errors
-/// The library's.
-fn horizontal_passage(before: TableMotion, t_end: f64) -> Result<f64, DynamicsError> {
-    let (mut lo, mut hi) = (before.time(), t_end);
-    let above_at_start = axis(before.state()).z > 0.0;
-    for _ in 0..BISECTIONS {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            break;
+    /// The instant in `(before.time, t_end]` where the axis passes the
+    /// horizontal (its height positive at one end, not at the other), by
+    /// bisection: each trial is a world started from `before` advanced to
+    /// the trial time (the run started afresh there: the same motion to
+    /// the tolerance).
+    ///
+    /// # Errors
+    /// The library's.
+    fn horizontal_passage(&self, before: &BodyState, t_end: f64) -> Result<f64, DynamicsError> {
+        let (mut lo, mut hi) = (before.time, t_end);
+        let above_at_start = axis(before).z > 0.0;
+        let start = (
+            before.world_from_body,
+            before.omega_body,
+            before.position,
+            before.velocity,
+        );
+        for _ in 0..BISECTIONS {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            let (mut trial, id) = world_with_top(&self.contacts, self.tolerance, start)?;
+            trial.advance_to(mid - before.time)?;
+            let above = trial.state(id).is_some_and(|s| axis(&s).z > 0.0);
+            if above == above_at_start {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
         }
-        let mut trial = before.clone();
-        trial.try_advance_to(mid)?;
-        if (axis(trial.state()).z > 0.0) == above_at_start {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
+        Ok(hi)
     }
-    Ok(hi)
 }

@@ -7,8 +7,7 @@
 //! 8 M pixels: 40 frames at the demo's 640 × 320), builds the palette from
 //! them (step 1 of [`super`]), writes them, and from then on maps and writes
 //! each frame as it arrives (steps 2 and 3). Colours that first appear later
-//! map to the nearest palette colour through the lookup table (the centre of
-//! their 15-bit cell). For the demo the first seconds show every colour of
+//! map to the nearest palette colour. For the demo the first seconds show every colour of
 //! the scene (background, chart, text, the handle's shading turning through
 //! all its faces); `tests/dzhanibekov.rs` measures the error of this palette
 //! against one built from all frames of a run.
@@ -18,7 +17,7 @@ use std::io::Write;
 
 use gif::{DisposalMethod, Encoder, Frame, Repeat};
 
-use super::palette::{Mapper, Palette};
+use super::palette::{Palette, from_rgba, rgba};
 use super::{GifError, GifStats, MAX_PALETTE_COLORS, Rect, changed_rect, crop_changes, to_u16};
 
 /// Pixels held back (4 bytes each) to build the palette from: 8 M, 32 MB.
@@ -62,7 +61,9 @@ impl<W: Write> Write for Counting<W> {
 /// The encoder once the palette is known.
 struct Active<W: Write> {
     encoder: Encoder<Counting<W>>,
-    mapper: Mapper,
+    palette: Palette,
+    /// The previous frame's pixels (empty before the first frame) and indices.
+    prev_src: Vec<u32>,
     prev: Vec<u8>,
     cur: Vec<u8>,
     crop: Vec<u8>,
@@ -72,9 +73,10 @@ struct Active<W: Write> {
 
 /// Where the stream is: frames held back for the palette, or encoding.
 enum State<W: Write> {
+    /// The frames held back, one after the other, as RGBA bytes.
     Collecting {
         out: W,
-        frames: Vec<Vec<u32>>,
+        held: Vec<u8>,
     },
     Encoding(Box<Active<W>>),
     /// After an error: nothing more is written.
@@ -84,7 +86,7 @@ enum State<W: Write> {
 /// An animated GIF written frame by frame (module docs).
 ///
 /// ```text
-/// memory ≈ palette window (≤ 8 M pixels × 4 B) + 3 bytes per pixel of one frame
+/// memory ≈ palette window (≤ 8 M pixels × 4 B) + 7 bytes per pixel of one frame
 /// ```
 pub struct GifStream<W: Write> {
     width: u16,
@@ -124,7 +126,7 @@ impl<W: Write> GifStream<W> {
             window_pixels,
             state: State::Collecting {
                 out,
-                frames: Vec::new(),
+                held: Vec::new(),
             },
             frames: 0,
             encoded_pixels: 0,
@@ -135,7 +137,7 @@ impl<W: Write> GifStream<W> {
     /// Frames held back for the palette (0 once encoding has started).
     pub fn held_frames(&self) -> usize {
         match &self.state {
-            State::Collecting { frames, .. } => frames.len(),
+            State::Collecting { held, .. } => held.len() / (4 * self.npix),
             _ => 0,
         }
     }
@@ -156,15 +158,15 @@ impl<W: Write> GifStream<W> {
         }
         self.frames += 1;
         match &mut self.state {
-            State::Collecting { frames, .. } => {
-                frames.push(frame.to_vec());
-                if frames.len().saturating_mul(self.npix) >= self.window_pixels {
+            State::Collecting { held, .. } => {
+                held.extend(frame.iter().flat_map(|&px| rgba(px)));
+                if held.len() / 4 >= self.window_pixels {
                     self.start()?;
                 }
                 Ok(())
             }
             State::Encoding(active) => {
-                let r = encode(active, frame, false, self.width, self.delay);
+                let r = encode(active, frame, self.width, self.delay);
                 self.account(r)
             }
             State::Failed => Err(dead()),
@@ -210,21 +212,18 @@ impl<W: Write> GifStream<W> {
     /// Builds the palette from the frames held back, starts the encoder and
     /// writes those frames.
     fn start(&mut self) -> Result<(), GifError> {
-        let State::Collecting { out, frames } = std::mem::replace(&mut self.state, State::Failed)
+        let State::Collecting { out, held } = std::mem::replace(&mut self.state, State::Failed)
         else {
             return Err(dead());
         };
-        let palette = Palette::build(&frames, self.npix);
-        let palette_colors = palette.colors.len();
+        let palette = Palette::build(&held, self.npix);
+        let palette_colors = palette.len();
         let transparent_index = u8::try_from(palette_colors).map_err(|_| GifError::Encoding {
             message: format!(
                 "palette has {palette_colors} colours, at most {MAX_PALETTE_COLORS} allowed"
             ),
         })?;
-        let mut table = Vec::with_capacity((palette_colors + 1) * 3);
-        for &c in &palette.colors {
-            table.extend_from_slice(&[(c >> 16) as u8, (c >> 8) as u8, c as u8]);
-        }
+        let mut table = palette.table_rgb.clone();
         table.extend_from_slice(&[0, 0, 0]); // the transparent entry
         let counting = Counting {
             inner: out,
@@ -235,15 +234,19 @@ impl<W: Write> GifStream<W> {
         encoder.set_repeat(Repeat::Infinite)?;
         let mut active = Box::new(Active {
             encoder,
-            mapper: Mapper::new(palette),
+            palette,
+            prev_src: Vec::new(),
             prev: vec![0u8; self.npix],
             cur: vec![0u8; self.npix],
             crop: Vec::new(),
             transparent_index,
             palette_colors,
         });
-        for (i, f) in frames.iter().enumerate() {
-            let r = encode(&mut active, f, i == 0, self.width, self.delay);
+        let mut frame = Vec::with_capacity(self.npix);
+        for f in held.chunks_exact(4 * self.npix) {
+            frame.clear();
+            frame.extend(f.chunks_exact(4).map(from_rgba));
+            let r = encode(&mut active, &frame, self.width, self.delay);
             self.account(r)?;
         }
         self.state = State::Encoding(active);
@@ -279,14 +282,13 @@ fn dead() -> GifError {
 fn encode<W: Write>(
     a: &mut Active<W>,
     frame: &[u32],
-    first: bool,
     width: u16,
     delay: u16,
 ) -> Result<(u64, bool), GifError> {
     let w = usize::from(width);
-    a.mapper.map_frame(frame, &mut a.cur);
+    a.palette.map_frame(frame, &a.prev_src, &a.prev, &mut a.cur);
     let mut unchanged = false;
-    let (rect, transparent) = if first {
+    let (rect, transparent) = if a.prev_src.is_empty() {
         a.crop.clear();
         a.crop.extend_from_slice(&a.cur);
         let full = Rect {
@@ -316,7 +318,7 @@ fn encode<W: Write>(
         };
         (rect, Some(a.transparent_index))
     };
-    let frame = Frame {
+    let gif_frame = Frame {
         delay,
         dispose: DisposalMethod::Keep,
         transparent,
@@ -327,9 +329,11 @@ fn encode<W: Write>(
         buffer: Cow::Borrowed(&a.crop[..]),
         ..Frame::default()
     };
-    let pixels = u64::from(frame.width) * u64::from(frame.height);
-    a.encoder.write_frame(&frame)?;
+    let pixels = u64::from(gif_frame.width) * u64::from(gif_frame.height);
+    a.encoder.write_frame(&gif_frame)?;
     std::mem::swap(&mut a.prev, &mut a.cur);
+    a.prev_src.clear();
+    a.prev_src.extend_from_slice(frame);
     Ok((pixels, unchanged))
 }
 

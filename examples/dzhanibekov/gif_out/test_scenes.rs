@@ -1,7 +1,7 @@
 //! Synthetic frames for the unit tests: a stand-in for the demo renderer and
 //! flat colour patches over a gradient, plus the colours they use.
 
-use super::palette::{channels, pack};
+use super::test_support::{channels, pack};
 
 pub(super) const BACKGROUND: u32 = 0xF7F7F7;
 pub(super) const PANEL: u32 = 0xFFFFFF;

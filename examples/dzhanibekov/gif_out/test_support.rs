@@ -1,10 +1,25 @@
-//! Test helpers shared by the unit tests of [`super`] and [`super::palette`]:
-//! encoding, decoding back to per-frame canvases, and colour-error measures.
+//! Test helpers shared by the unit tests of [`super`] and its submodules:
+//! encoding, decoding back to per-frame canvases, colour-error measures,
+//! and the colour arithmetic of the synthetic scenes.
 
 use gif::{ColorOutput, DecodeOptions, DisposalMethod, Repeat};
 
-use super::palette::channels;
 use super::{GifStats, write_gif};
+
+/// Splits `0x00RRGGBB` into `[r, g, b]`.
+pub(super) fn channels(c: u32) -> [i32; 3] {
+    [
+        ((c >> 16) & 0xFF) as i32,
+        ((c >> 8) & 0xFF) as i32,
+        (c & 0xFF) as i32,
+    ]
+}
+
+/// Packs `[r, g, b]`, rounded and clamped to `0..=255`, into `0x00RRGGBB`.
+pub(super) fn pack(rgb: [f64; 3]) -> u32 {
+    let ch = |v: f64| v.round().clamp(0.0, 255.0) as u32;
+    (ch(rgb[0]) << 16) | (ch(rgb[1]) << 8) | ch(rgb[2])
+}
 
 /// One decoded frame: its rectangle, timing and RGBA pixels.
 pub(super) struct DecodedFrame {

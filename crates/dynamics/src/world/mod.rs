@@ -40,7 +40,8 @@
 //!   move in its own error-controlled steps — the world's `dt` is only
 //!   the grid the states are read on; its events (impacts, lift-offs,
 //!   stick–slip, rest) are recorded ([`World::events`]) while the run
-//!   goes on. The world's [`Tolerance`] sets its accuracy
+//!   goes on, or stopped at ([`World::advance_until_event`],
+//!   `next_event.rs`). The world's [`Tolerance`] sets its accuracy
 //!   ([`crate::table_tolerance`]; `table.rs`).
 //! - With a [`Tolerance`] ([`World::set_tolerance`]) each body that steps
 //!   takes the cheapest method and sub-steps predicted to meet it
@@ -70,6 +71,7 @@ mod ground;
 mod ground_motion;
 mod lanes;
 mod motion;
+mod next_event;
 mod plan;
 mod reads;
 mod registry;

@@ -106,6 +106,27 @@ impl TableRun {
         advanced
     }
 
+    /// A copy of the run advanced until its next event before world time
+    /// `t` ([`TableMotion::try_advance_until_event`]): the copy, and the
+    /// event's world time (`None` when it reached `t` first).
+    ///
+    /// # Errors
+    /// Those of [`TableMotion::try_advance_until_event`].
+    pub(crate) fn until_event(&self, t: f64) -> Result<(TableMotion, Option<f64>), DynamicsError> {
+        let mut run = self.run.clone();
+        let target = (t - self.start).max(run.time());
+        let stopped = run.try_advance_until_event(target)?;
+        let event = stopped.then(|| self.start + run.time());
+        Ok((run, event))
+    }
+
+    /// Takes `run`, a copy of this run advanced further
+    /// ([`TableRun::until_event`]), as its own; its new events recorded.
+    pub(crate) fn take_run(&mut self, run: TableMotion) {
+        self.run = run;
+        self.take_events();
+    }
+
     /// The world time the run has reached, s.
     pub(crate) fn time(&self) -> f64 {
         self.start + self.run.time()
