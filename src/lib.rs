@@ -9,6 +9,9 @@
 //!   primitives, point masses, compounds and closed triangle meshes.
 //! - [`dynamics`]: free bodies, heavy tops and tops on a table, solved
 //!   exactly or integrated, and the [`dynamics::World`] a game steps.
+//! - `scene` (feature `scene`, default): scene files to a World and its
+//!   run along the output grid, mesh and heavy-top requests, rotations as
+//!   lines of numbers — what the CLI and the Python package are made of.
 //!
 //! ```
 //! use kreisel::kinematics::{EulerSequence, glam::DVec3};
@@ -23,6 +26,8 @@
 pub use kreisel_dynamics as dynamics;
 pub use kreisel_inertia as inertia;
 pub use kreisel_kinematics as kinematics;
+#[cfg(feature = "scene")]
+pub use kreisel_scene as scene;
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]
