@@ -44,13 +44,13 @@ fn args(
 /// order; `null` is `None`; `roots` a numpy array).
 fn summary_dict<'py>(py: Python<'py>, s: &Summary) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    d.set_item("i1", s.i1)?;
-    d.set_item("i3", s.i3)?;
-    d.set_item("mgl", s.mgl)?;
-    d.set_item("theta0", s.theta0)?;
-    d.set_item("theta_dot0", s.theta_dot0)?;
-    d.set_item("phi_dot0", s.phi_dot0)?;
-    d.set_item("psi_dot0", s.psi_dot0)?;
+    d.set_item("i1", s.top.i1)?;
+    d.set_item("i3", s.top.i3)?;
+    d.set_item("mgl", s.top.mgl)?;
+    d.set_item("theta0", s.top.theta0)?;
+    d.set_item("theta_dot0", s.top.theta_dot0)?;
+    d.set_item("phi_dot0", s.top.phi_dot0)?;
+    d.set_item("psi_dot0", s.top.psi_dot0)?;
     d.set_item("a", s.a)?;
     d.set_item("b", s.b)?;
     d.set_item("alpha", s.alpha)?;
@@ -247,7 +247,13 @@ impl PyLagrangeTop {
         let s = &self.summary;
         format!(
             "LagrangeTop(i1={}, i3={}, mgl={}, theta0={}, theta_dot0={}, phi_dot0={}, psi_dot0={})",
-            s.i1, s.i3, s.mgl, s.theta0, s.theta_dot0, s.phi_dot0, s.psi_dot0
+            s.top.i1,
+            s.top.i3,
+            s.top.mgl,
+            s.top.theta0,
+            s.top.theta_dot0,
+            s.top.phi_dot0,
+            s.top.psi_dot0
         )
     }
 }

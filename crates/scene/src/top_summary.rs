@@ -33,20 +33,8 @@ pub struct TopRequest {
 /// The library's answers for one top, as plain numbers.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Summary {
-    /// I₁ about the pivot, kg m².
-    pub i1: f64,
-    /// I₃, kg m².
-    pub i3: f64,
-    /// M g l, J.
-    pub mgl: f64,
-    /// θ(0), rad.
-    pub theta0: f64,
-    /// θ̇(0), rad/s.
-    pub theta_dot0: f64,
-    /// φ̇(0), rad/s.
-    pub phi_dot0: f64,
-    /// ψ̇(0), rad/s.
-    pub psi_dot0: f64,
+    /// The top and its initial state, as given.
+    pub top: TopRequest,
     /// a = p_ψ / I₁, rad/s.
     pub a: f64,
     /// b = p_φ / I₁, rad/s.
@@ -81,7 +69,10 @@ impl Summary {
     /// by [`f64::to_degrees`].
     pub fn in_degrees(&self, theta0_degrees: f64) -> Summary {
         Summary {
-            theta0: theta0_degrees,
+            top: TopRequest {
+                theta0: theta0_degrees,
+                ..self.top
+            },
             theta_min: self.theta_min.to_degrees(),
             theta_max: self.theta_max.to_degrees(),
             ..self.clone()
@@ -204,13 +195,7 @@ pub fn on_the_vertical(motion: &LagrangeTopMotion) -> bool {
 /// The library's answers for `motion`.
 fn summarise(args: &TopRequest, motion: &LagrangeTopMotion) -> Summary {
     Summary {
-        i1: args.i1,
-        i3: args.i3,
-        mgl: args.mgl,
-        theta0: args.theta0,
-        theta_dot0: args.theta_dot0,
-        phi_dot0: args.phi_dot0,
-        psi_dot0: args.psi_dot0,
+        top: *args,
         a: motion.a(),
         b: motion.b(),
         alpha: motion.alpha(),

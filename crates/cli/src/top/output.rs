@@ -38,13 +38,13 @@ fn angle<'a>(
 fn fields(s: &Summary, degrees: bool) -> Vec<(&'static str, Value<'_>, &'static str)> {
     use Value::{Flag, List, Number, Optional, Word};
     vec![
-        ("i1", Number(s.i1), "kg m^2 (about the pivot)"),
-        ("i3", Number(s.i3), "kg m^2"),
-        ("mgl", Number(s.mgl), "J"),
-        angle(("theta0", "theta0_deg"), s.theta0, degrees),
-        ("theta_dot0", Number(s.theta_dot0), "rad/s"),
-        ("phi_dot0", Number(s.phi_dot0), "rad/s"),
-        ("psi_dot0", Number(s.psi_dot0), "rad/s"),
+        ("i1", Number(s.top.i1), "kg m^2 (about the pivot)"),
+        ("i3", Number(s.top.i3), "kg m^2"),
+        ("mgl", Number(s.top.mgl), "J"),
+        angle(("theta0", "theta0_deg"), s.top.theta0, degrees),
+        ("theta_dot0", Number(s.top.theta_dot0), "rad/s"),
+        ("phi_dot0", Number(s.top.phi_dot0), "rad/s"),
+        ("psi_dot0", Number(s.top.psi_dot0), "rad/s"),
         ("a", Number(s.a), "rad/s"),
         ("b", Number(s.b), "rad/s"),
         ("alpha", Number(s.alpha), "1/s^2"),
@@ -145,17 +145,21 @@ pub fn text(s: &Summary, degrees: bool) -> String {
 
 #[cfg(test)]
 mod tests {
+    use kreisel_scene::top_summary::TopRequest;
+
     use super::*;
 
     fn summary() -> Summary {
         Summary {
-            i1: 0.3,
-            i3: 0.1,
-            mgl: 2.0,
-            theta0: 0.5,
-            theta_dot0: 0.0,
-            phi_dot0: 0.0,
-            psi_dot0: 60.0,
+            top: TopRequest {
+                i1: 0.3,
+                i3: 0.1,
+                mgl: 2.0,
+                theta0: 0.5,
+                theta_dot0: 0.0,
+                phi_dot0: 0.0,
+                psi_dot0: 60.0,
+            },
             a: 20.0,
             b: 17.5,
             alpha: 11.7,
