@@ -5,13 +5,14 @@
 //! rows of the CLI's `--events` file). No physics here: the library's
 //! [`ContactLaw`] and shapes check the numbers, this names the key.
 
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 use kreisel_dynamics::{
     Body, ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, SphereContact,
     Support, TableContact, TableEvent, TableEventKind, World,
 };
 use kreisel_scene::events::{kind_name, merged};
 use kreisel_scene::run::Names;
+use kreisel_scene::table_start::sliding_at_start;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PySequence, PyString, PyTuple};
@@ -206,31 +207,13 @@ pub fn contacts(value: &Bound<'_, PyAny>) -> PyResult<Vec<TableContact>> {
         .collect()
 }
 
-/// The centre of mass above the origin at the height where the lowest of
-/// `contacts` touches the table at attitude `q` (a scene's default
-/// `position` for a body on the table).
-pub fn touching(contacts: &[TableContact], q: DQuat) -> DVec3 {
-    let lowest = contacts
-        .iter()
-        .map(|c| c.shape.contact_from_com_world(q.normalize()).z)
-        .fold(f64::INFINITY, f64::min);
-    DVec3::new(0.0, 0.0, -lowest)
-}
-
 /// The contact of a body on the table that Painlevé's case at its start
-/// is about: the first that touches with friction (else the first), and
-/// its `mu`.
-pub fn sliding_at_start(body: &Body) -> (usize, f64) {
+/// is about, and its `mu` ([`sliding_at_start`] of its support).
+pub fn painleve_contact(body: &Body) -> (usize, f64) {
     let Support::Table { position, .. } = body.support() else {
         return (0, f64::NAN);
     };
-    let q = body.world_from_body().normalize();
-    let contacts = body.table_contacts();
-    let index = contacts
-        .iter()
-        .position(|c| c.law.mu() > 0.0 && position.z + c.shape.contact_from_com_world(q).z <= 1e-12)
-        .unwrap_or(0);
-    (index, contacts.get(index).map_or(f64::NAN, |c| c.law.mu()))
+    sliding_at_start(body.table_contacts(), position, body.world_from_body())
 }
 
 /// The fields after `kind` of an event: the speeds of an impact, the

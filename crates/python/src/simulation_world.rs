@@ -14,6 +14,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use kreisel_scene::numbers::Shortest;
+use kreisel_scene::table_start::touching;
 
 use super::table;
 use crate::arguments::{finite, int, integer, matrix3, named, numbers};
@@ -258,7 +259,7 @@ impl PyWorld {
                     let contacts = table::contacts(c)?;
                     let position = match given_position {
                         Some(_) => position,
-                        None => table::touching(&contacts, attitude),
+                        None => touching(&contacts, attitude.normalize()),
                     };
                     builder.on_table(position, vector("velocity", v)?, &contacts)
                 }
@@ -275,7 +276,7 @@ impl PyWorld {
                 .try_build()
                 .and_then(|b| b.with_inputs(inputs))
                 .map_err(world_error)?;
-            let sliding = table::sliding_at_start(&body);
+            let sliding = table::painleve_contact(&body);
             let id = self.world.add(body).map_err(|e| match e {
                 e @ DynamicsError::ContactIndeterminate { .. } => {
                     let (i, mu) = sliding;

@@ -23,6 +23,7 @@ use crate::contact_keys::{self as contact, Contacts, RawContacts};
 use crate::error::SceneError;
 use crate::numbers::Shortest;
 use crate::scene_keys::{Keys, SceneFile};
+use crate::table_start::{sliding_at_start, touching};
 
 /// A `[[body]]` table as written.
 #[derive(Debug, Deserialize)]
@@ -251,27 +252,12 @@ fn painleve_at_start(
     error: &DynamicsError,
 ) -> SceneError {
     let (laws, position) = on_table.map_or((&[][..], DVec3::ZERO), |(c, p)| (c.as_slice(), *p));
-    let touching_with_friction = |c: &TableContact| {
-        let gap = position.z + c.shape.contact_from_com_world(q.normalize()).z;
-        c.law.mu() > 0.0 && gap <= 1e-12
-    };
-    let index = laws.iter().position(touching_with_friction).unwrap_or(0);
-    let mu = laws.get(index).map_or(f64::NAN, |c| c.law.mu());
+    let (index, mu) = sliding_at_start(laws, position, q);
     let tables = contact::tables(contacts);
     let span = tables.get(index).map_or(contacts.span(), |(raw, span)| {
         raw.mu_span().unwrap_or(span.clone())
     });
     keys.fail_at(span, &contact::painleve_message(index, mu, error))
-}
-
-/// The centre of mass above the origin at the height where the lowest of
-/// `contacts` touches the table at attitude `q` (normalised).
-fn touching(contacts: &[TableContact], q: DQuat) -> DVec3 {
-    let height = contacts
-        .iter()
-        .map(|c| -c.shape.contact_from_com_world(q).z)
-        .fold(f64::NEG_INFINITY, f64::max);
-    DVec3::new(0.0, 0.0, height)
 }
 
 /// The error for contact `index` (0-based) of a body on the table below

@@ -39,6 +39,7 @@ pub mod scene_file;
 pub mod scene_keys;
 pub mod schedule;
 pub mod stop;
+pub mod table_start;
 pub mod top_summary;
 
 pub use error::SceneError;
