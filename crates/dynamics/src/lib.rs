@@ -30,7 +30,8 @@
 //!   ([`FreeBodyMethod::ALL`], `FromStr`, `Display`, `integrator()`); each
 //!   method's name, order, one-line description and step limit are its
 //!   integrator's. Adding a method is one file (the integrator) and one
-//!   line of the list in `method/free_body.rs` or `method/heavy_top.rs`;
+//!   line of the list in `method/free_body.rs` or `method/heavy_top.rs`
+//!   (`method/forward_euler.rs` does it in a test);
 //! - a body touching the ground plane with a sphere (the tippe top),
 //!   [`GroundTop`]: the normal force solved from the constraint, friction
 //!   models [`Friction`], lift-off reported ([`contact`]);

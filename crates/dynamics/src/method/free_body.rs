@@ -255,6 +255,8 @@ macro_rules! free_body_methods {
         }
     };
 }
+#[cfg(test)]
+pub(crate) use free_body_methods;
 
 free_body_methods! {
     /// A method for the torque-free rigid body: what `--method` names.

@@ -17,7 +17,12 @@
 //!    citation and step, and a constant of it.
 //! 2. Add one line to the list in `method/free_body.rs` (or
 //!    `method/heavy_top.rs`): `/// docs` and `Variant => &INTEGRATOR,`.
+//!
+//! `method/forward_euler.rs` does exactly that in a test: forward Euler,
+//! one file, and one extra line given to the list.
 
+#[cfg(test)]
+mod forward_euler;
 mod free_body;
 mod heavy_top;
 mod step_limit;
@@ -88,4 +93,6 @@ macro_rules! method_enum {
         }
     };
 }
+#[cfg(test)]
+pub(crate) use self::free_body::free_body_methods;
 pub(crate) use method_enum;
