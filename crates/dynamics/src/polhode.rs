@@ -31,7 +31,7 @@ const EQUAL_MOMENTS: f64 = 1e-9;
 
 /// The slope `k = m₁/m₃` of the separatrix planes for ascending principal
 /// moments `I₁ ≤ I₂ ≤ I₃`; `None` when two moments are equal within
-/// [`EQUAL_MOMENTS`] (a symmetric body or a sphere has no separatrix).
+/// a relative 1e-9 (a symmetric body or a sphere has no separatrix).
 ///
 /// ```text
 /// k = √( I₁ (I₃ − I₂) / (I₃ (I₂ − I₁)) )
