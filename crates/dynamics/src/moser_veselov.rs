@@ -203,6 +203,9 @@ pub(crate) fn dmv_step(
 pub struct MoserVeselov;
 
 impl MoserVeselov {
+    /// Its [`FreeBodyIntegrator::name`], which
+    /// [`crate::PreprocessedMoserVeselov`] of order 2 (DMV itself) shares.
+    pub(crate) const NAME: &str = "dmv";
     /// Its [`FreeBodyIntegrator::description`], which
     /// [`crate::PreprocessedMoserVeselov`] of order 2 (DMV itself) shares.
     pub(crate) const DESCRIPTION: &str =
@@ -214,7 +217,7 @@ impl MoserVeselov {
 
 impl FreeBodyIntegrator for MoserVeselov {
     fn name(&self) -> &'static str {
-        "dmv"
+        Self::NAME
     }
 
     fn order(&self) -> u32 {

@@ -288,7 +288,7 @@ impl PreprocessedMoserVeselov {
         match order {
             // DMV itself: its name, description and step limit.
             2 => Some(Self {
-                name: "dmv",
+                name: MoserVeselov::NAME,
                 order,
                 description: MoserVeselov::DESCRIPTION,
                 step_limit: MoserVeselov::STEP_LIMIT,

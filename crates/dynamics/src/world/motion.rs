@@ -135,7 +135,8 @@ impl Motion {
             // ω t = 0 at every t: the exact solution at any time is its
             // value at 0, computed once.
             let settled = solution.state_at(0.0);
-            DivergenceCheck::free_body("exact", moments, &state).check(&settled, 0.0)?;
+            DivergenceCheck::free_body(FreeBodyMethod::Exact.name(), moments, &state)
+                .check(&settled, 0.0)?;
             return Ok((Plan::Resting, Motion::Resting { state, settled }));
         }
         let plan = match solution.kind() {

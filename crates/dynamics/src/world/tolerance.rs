@@ -264,7 +264,7 @@ pub(crate) fn choose_free(
         Choice {
             tolerance: tol.attitude,
             horizon: tol.horizon,
-            method: "exact",
+            method: FreeBodyMethod::Exact.name(),
             substeps: 1,
             predicted: 0.0,
             work: exact_work,
