@@ -1,7 +1,7 @@
 //! Work–precision set of the free-body integrators and rapier3d-f64 on
 //! rapier's Dzhanibekov scenario (I = (1, 2, 3), ω₀ = (0.01, 1, 0), 100 s),
 //! in one criterion run: every registered method
-//! (`kreisel::dynamics::METHODS` except `auto`, whatever the registry holds)
+//! (`kreisel::dynamics::FreeBodyMethod::ALL` except `auto`, whatever the list holds)
 //! and rapier, at dt = 1/10, 1/20, 1/60, 1/100, 1/1000. The attitude error
 //! at t = 100 s against the 60-digit reference is printed once per point
 //! (stderr); criterion times the run.
@@ -29,7 +29,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use kreisel::dynamics::{METHODS, PrincipalState, integrate, method};
+use kreisel::dynamics::{FreeBodyMethod, PrincipalState, integrate};
 use kreisel::kinematics::rotation_angle_between;
 
 #[path = "../crates/dynamics/tests/common/free_body.rs"]
@@ -52,8 +52,11 @@ fn work_precision(c: &mut Criterion) {
         .sample_size(10)
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_secs(1));
-    for &name in METHODS.iter().filter(|&&n| n != "auto") {
-        let Ok(m) = method(name) else { continue };
+    for method in FreeBodyMethod::ALL
+        .into_iter()
+        .filter(|&m| m != FreeBodyMethod::Auto)
+    {
+        let (name, m) = (method.name(), method.integrator());
         for steps_per_second in STEPS_PER_SECOND {
             let h = 1.0 / f64::from(steps_per_second);
             let steps = (t_end * f64::from(steps_per_second)).round() as usize;
@@ -62,7 +65,7 @@ fn work_precision(c: &mut Criterion) {
                     world_from_principal: q0,
                     l_principal: l0,
                 };
-                let _ = integrate(m.as_ref(), r.moments, &mut s, h, steps);
+                let _ = integrate(m, r.moments, &mut s, h, steps);
                 s
             };
             let start = Instant::now();

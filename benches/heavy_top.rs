@@ -19,9 +19,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
-use kreisel::dynamics::{
-    HEAVY_TOP_METHODS, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopTaylor, heavy_top_method,
-};
+use kreisel::dynamics::{HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopMethod, HeavyTopTaylor};
 
 #[path = "../crates/dynamics/tests/common/heavy_top.rs"]
 mod heavy_top;
@@ -35,8 +33,8 @@ fn step(c: &mut Criterion) {
         .throughput(Throughput::Elements(1));
     for scenario in ["bruls", "asymmetric_fast"] {
         let r = heavy_top::load(scenario);
-        for name in HEAVY_TOP_METHODS {
-            let method = heavy_top_method(name).expect("registered");
+        for m in HeavyTopMethod::ALL {
+            let (name, method) = (m.name(), m.integrator());
             group.bench_with_input(BenchmarkId::new(scenario, name), &r.start, |b, start| {
                 b.iter(|| {
                     let mut s = *start;

@@ -1,7 +1,7 @@
 //! Work–precision of the free-body integrators on rapier's Dzhanibekov
 //! scenario (I = (1, 2, 3), ω₀ = (0.01, 1, 0), 100 s): attitude error at
 //! t = 100 s against the mpmath reference, and run time per step, for
-//! every registered method (`kreisel::dynamics::METHODS` except `auto`) and
+//! every registered method (`kreisel::dynamics::FreeBodyMethod::ALL` except `auto`) and
 //! for rapier3d-f64 (a dev-dependency, via `tests/common/rapier.rs`) over a
 //! range of step sizes. Prints a Markdown table (used in BENCHMARKS.md)
 //! and, with `--csv FILE`, writes the same numbers as CSV
@@ -26,7 +26,7 @@ use std::hint::black_box;
 use std::io::Write;
 use std::time::Instant;
 
-use kreisel::dynamics::{METHODS, PrincipalState, integrate, method};
+use kreisel::dynamics::{FreeBodyMethod, PrincipalState, integrate};
 use kreisel::kinematics::rotation_angle_between;
 
 #[path = "../crates/dynamics/tests/common/free_body.rs"]
@@ -75,9 +75,12 @@ fn main() {
     let moments = r.moments;
     let mut points = Vec::new();
     // Errors (one untimed run per point, which also warms up).
-    for &name in METHODS.iter().filter(|&&n| n != "auto") {
+    for method in FreeBodyMethod::ALL
+        .into_iter()
+        .filter(|&m| m != FreeBodyMethod::Auto)
+    {
+        let (name, m) = (method.name(), method.integrator());
         for steps_per_second in STEPS_PER_SECOND {
-            let m = method(name).unwrap_or_else(|e| panic!("{e}"));
             let h = 1.0 / steps_per_second;
             let steps = (t_end * steps_per_second).round() as usize;
             let run = move || {
@@ -85,7 +88,7 @@ fn main() {
                     world_from_principal: q0,
                     l_principal: l0,
                 };
-                integrate(m.as_ref(), moments, &mut s, h, steps).unwrap_or_else(|e| panic!("{e}"));
+                integrate(m, moments, &mut s, h, steps).unwrap_or_else(|e| panic!("{e}"));
                 s
             };
             let start = Instant::now();

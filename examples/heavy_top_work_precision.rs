@@ -3,7 +3,7 @@
 //! asymmetric top with its centre of mass off the principal axes, both
 //! spinning at 150 rad/s, 2 s): the largest attitude error over the
 //! reference samples (every 0.01 s) and the run time per step, for every
-//! method of `kreisel::dynamics::HEAVY_TOP_METHODS`, the Taylor series
+//! method of `kreisel::dynamics::HeavyTopMethod::ALL`, the Taylor series
 //! (`HeavyTopTaylor::DEFAULT`, `taylor`) and, on the Lagrange top `bruls`,
 //! the closed form (`HeavyTopClosedForm`, `closed_form`: built once, then
 //! one `state_at` per step; its time per 2 s includes the set-up) over a
@@ -21,9 +21,7 @@ use std::hint::black_box;
 use std::io::Write;
 use std::time::Instant;
 
-use kreisel::dynamics::{
-    HEAVY_TOP_METHODS, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopTaylor, heavy_top_method,
-};
+use kreisel::dynamics::{HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopMethod, HeavyTopTaylor};
 
 #[path = "../crates/dynamics/tests/common/heavy_top.rs"]
 mod heavy_top;
@@ -38,7 +36,7 @@ const ROUNDS: usize = 11;
 #[derive(Clone, Copy)]
 enum Mover {
     /// A registered method, stepped.
-    Method(&'static str),
+    Method(HeavyTopMethod),
     /// `HeavyTopTaylor::DEFAULT`, stepped.
     Taylor,
     /// `HeavyTopClosedForm`: built once, evaluated every step.
@@ -48,7 +46,7 @@ enum Mover {
 impl Mover {
     fn name(self) -> &'static str {
         match self {
-            Mover::Method(name) => name,
+            Mover::Method(method) => method.name(),
             Mover::Taylor => "taylor",
             Mover::ClosedForm => "closed_form",
         }
@@ -71,10 +69,7 @@ impl Mover {
             }
         };
         match self {
-            Mover::Method(name) => stepped(
-                heavy_top_method(name).expect("registered").as_ref(),
-                &mut visit,
-            ),
+            Mover::Method(method) => stepped(method.integrator(), &mut visit),
             Mover::Taylor => stepped(&HeavyTopTaylor::DEFAULT, &mut visit),
             Mover::ClosedForm => {
                 let closed = HeavyTopClosedForm::try_new(&r.top, black_box(r.start))
@@ -122,7 +117,7 @@ fn main() {
     let mut points = Vec::new();
     for (scenario, r) in scenarios.iter().zip(&references) {
         let duration = r.samples.last().expect("samples").0;
-        let mut movers: Vec<Mover> = HEAVY_TOP_METHODS.into_iter().map(Mover::Method).collect();
+        let mut movers: Vec<Mover> = HeavyTopMethod::ALL.into_iter().map(Mover::Method).collect();
         movers.push(Mover::Taylor);
         if r.top.symmetry_axis().is_some() {
             movers.push(Mover::ClosedForm);

@@ -31,7 +31,7 @@
 //! core; the longest run is rapier's scenario, 6000 steps of 1/60 over
 //! 100 s, the measurement).
 
-use kreisel::dynamics::{PrincipalState, integrate, method};
+use kreisel::dynamics::{FreeBodyMethod, PrincipalState, integrate};
 use kreisel::kinematics::glam::{DQuat, DVec3};
 use kreisel::kinematics::rotation_angle_between;
 
@@ -56,12 +56,12 @@ fn energy(moments: DVec3, l: DVec3) -> f64 {
 
 /// kreisel's default method from (q0, L0) for `steps` steps of `dt`.
 fn kreisel_run(moments: DVec3, q0: DQuat, l0: DVec3, dt: f64, steps: usize) -> PrincipalState {
-    let m = method("auto").unwrap();
+    let m = FreeBodyMethod::Auto.integrator();
     let mut s = PrincipalState {
         world_from_principal: q0,
         l_principal: l0,
     };
-    integrate(m.as_ref(), moments, &mut s, dt, steps).unwrap();
+    integrate(m, moments, &mut s, dt, steps).unwrap();
     s
 }
 
@@ -375,7 +375,7 @@ fn rapier_scenario_error_and_flip_period() {
     }
     // The measurement itself on kreisel's trajectory at dt = 1/60.
     let dt = 1.0 / 60.0;
-    let m = method("auto").unwrap();
+    let m = FreeBodyMethod::Auto.integrator();
     let (_, q0, l0) = r.samples[0];
     let mut s = PrincipalState {
         world_from_principal: q0,

@@ -328,10 +328,8 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         // clap requires SCENE unless --list-methods.
         _ => return list_methods(),
     };
-    // A bad --method is reported before the scene is even read.
-    if let Some(name) = &args.method {
-        methods::integrator(name).map_err(|message| SceneError::Method { message })?;
-    }
+    // Parsed once, here; a bad --method is reported before the scene is even read.
+    let method = args.method.as_deref().map(methods::parse).transpose()?;
     let columns = match &args.columns {
         Some(list) => Column::parse_list(list).map_err(|message| CliError::Argument {
             argument: "--columns".to_owned(),
@@ -377,7 +375,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
                 source,
             }
         })?;
-    let (mut scene, name) = prepare(scene_path, &text, args.method.as_deref())?;
+    let (mut scene, method) = prepare(scene_path, &text, method)?;
     if args.explain {
         return explain(&scene);
     }
@@ -442,7 +440,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         Ok(()) => None,
         Err(Stop::Rows(source)) => return Err(write_error(&output, source)),
         Err(Stop::Body(stop)) if stop.is_event(&scene) => Some(stop),
-        Err(Stop::Body(stop)) => return Err(stop.into_error(&scene, scene_path, &name).into()),
+        Err(Stop::Body(stop)) => return Err(stop.into_error(&scene, scene_path, method).into()),
     };
     flushed.map_err(|source| write_error(&output, source))?;
     // The image is drawn before the CSV is put in place: a figure that
@@ -451,7 +449,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
         (Some((path, format, file, pending)), Some(recorder)) => {
             let scene_name = scene_path.file_name().unwrap_or(scene_path.as_os_str());
             let mut title = format!(
-                "kreisel simulate {} (method {name})",
+                "kreisel simulate {} (method {method})",
                 std::path::Path::new(scene_name).display()
             );
             if stopped.is_some() {
@@ -500,7 +498,7 @@ pub fn run(args: &SimulateArgs) -> Result<(), CliError> {
     }
     match stopped {
         None => Ok(()),
-        Some(stop) => Err(stop.into_error(&scene, scene_path, &name).into()),
+        Some(stop) => Err(stop.into_error(&scene, scene_path, method).into()),
     }
 }
 
@@ -622,6 +620,8 @@ fn write_error(output: &Stream, source: io::Error) -> CliError {
 mod tests {
     use std::path::Path;
 
+    use kreisel_dynamics::FreeBodyMethod;
+
     use super::*;
 
     const SCENE: &str = "[simulation]\nduration = 1\ndt = 0.1\ngravity = [0, 0, -9.81]\n\
@@ -633,7 +633,7 @@ mod tests {
         [[body]]\nname = \"tippe\"\nmass = 0.006\ninertia = [8e-7, 8e-7, 7e-7]\nangular_velocity = [0, 0, 180]\n\
         [body.contact]\nshape = \"sphere\"\nradius = 0.015\ncenter = [0, 0, 0.003]\nfriction = \"viscous\"\nmu = 0.3\n";
 
-    fn plans(method: Option<&str>) -> Vec<String> {
+    fn plans(method: Option<FreeBodyMethod>) -> Vec<String> {
         let scene =
             kreisel_scene::scene_file::parse_with_method(Path::new("s.toml"), SCENE, method)
                 .unwrap();
@@ -689,7 +689,7 @@ mod tests {
             assert!(line.starts_with(start), "{line}");
         }
         // A stepping method chosen: every body is stepped by it.
-        let lines = plans(Some("rk4"));
+        let lines = plans(Some(FreeBodyMethod::Rk4));
         assert!(
             lines[0].starts_with("still: free body stepped by rk4 (order 4)"),
             "{lines:?}"

@@ -75,16 +75,83 @@ pub const KAHAN_LI_8: CompositionCoefficients = CompositionCoefficients {
     middle: -0.605_508_533_830_034_511_70,
 };
 
-/// A symmetric composition of [`SymmetricTopSplitting`].
+/// A symmetric composition of [`SymmetricTopSplitting`]: the methods
+/// `splitting4`, `splitting6` and `splitting8` ([`Composition::ORDER_4`],
+/// [`Composition::ORDER_6`], [`Composition::ORDER_8`]), each with its
+/// name, order, description and measured step limit.
 #[derive(Debug, Clone, Copy)]
 pub struct Composition {
     name: &'static str,
     order: u32,
     coefficients: &'static CompositionCoefficients,
+    description: &'static str,
+    step_limit: Option<f64>,
 }
 
 impl Composition {
-    /// A composition method with its registry name and order.
+    /// `splitting4`: Suzuki's 5-stage composition ([`SUZUKI_4`]), order 4;
+    /// step limit `h ω_max` = 4.2 (beyond it the energy swings beyond
+    /// 10 %; |L| stays exact).
+    ///
+    /// ```text
+    /// Ψₕ = Φ(γh) ∘ Φ(γh) ∘ Φ((1 − 4γ)h) ∘ Φ(γh) ∘ Φ(γh),   γ = 1/(4 − 4^{1/3})
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{Composition, FreeBodyIntegrator};
+    /// let m = Composition::ORDER_4;
+    /// assert_eq!((m.name(), m.order(), m.step_limit()), ("splitting4", 4, Some(4.2)));
+    /// ```
+    pub const ORDER_4: Self = Self {
+        name: "splitting4",
+        order: 4,
+        coefficients: &SUZUKI_4,
+        description: "Suzuki's 5-stage symmetric composition of splitting",
+        step_limit: Some(4.2),
+    };
+    /// `splitting6`: Kahan & Li's 9-stage composition ([`KAHAN_LI_6`]),
+    /// order 6; step limit `h ω_max` = 6.5 (beyond it the energy swings
+    /// beyond 10 %; |L| stays exact).
+    ///
+    /// ```text
+    /// Ψₕ = Φ(γ₁h) ∘ … ∘ Φ(γ₄h) ∘ Φ(γ_mid h) ∘ Φ(γ₄h) ∘ … ∘ Φ(γ₁h)
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{Composition, FreeBodyIntegrator};
+    /// let m = Composition::ORDER_6;
+    /// assert_eq!((m.name(), m.order(), m.step_limit()), ("splitting6", 6, Some(6.5)));
+    /// ```
+    pub const ORDER_6: Self = Self {
+        name: "splitting6",
+        order: 6,
+        coefficients: &KAHAN_LI_6,
+        description: "Kahan and Li's 9-stage symmetric composition of splitting",
+        step_limit: Some(6.5),
+    };
+    /// `splitting8`: Kahan & Li's 17-stage composition ([`KAHAN_LI_8`]),
+    /// order 8; step limit `h ω_max` = 7.6 (beyond it the energy swings
+    /// beyond 10 %; |L| stays exact).
+    ///
+    /// ```text
+    /// Ψₕ = Φ(γ₁h) ∘ … ∘ Φ(γ₈h) ∘ Φ(γ_mid h) ∘ Φ(γ₈h) ∘ … ∘ Φ(γ₁h)
+    /// ```
+    ///
+    /// ```
+    /// use kreisel_dynamics::{Composition, FreeBodyIntegrator};
+    /// let m = Composition::ORDER_8;
+    /// assert_eq!((m.name(), m.order(), m.step_limit()), ("splitting8", 8, Some(7.6)));
+    /// ```
+    pub const ORDER_8: Self = Self {
+        name: "splitting8",
+        order: 8,
+        coefficients: &KAHAN_LI_8,
+        description: "Kahan and Li's 17-stage symmetric composition of splitting",
+        step_limit: Some(7.6),
+    };
+
+    /// A composition method of your own, with its name, order and
+    /// description (no measured step limit).
     ///
     /// ```text
     /// Ψₕ = Φ(γ₁h) ∘ … ∘ Φ(γ_mid h) ∘ … ∘ Φ(γ₁h)
@@ -92,18 +159,21 @@ impl Composition {
     ///
     /// ```
     /// use kreisel_dynamics::{Composition, FreeBodyIntegrator, SUZUKI_4};
-    /// let m = Composition::new("splitting4", 4, &SUZUKI_4);
-    /// assert_eq!(m.order(), 4);
+    /// let m = Composition::new("suzuki", 4, &SUZUKI_4, "Suzuki's composition");
+    /// assert_eq!((m.order(), m.description(), m.step_limit()), (4, "Suzuki's composition", None));
     /// ```
     pub const fn new(
         name: &'static str,
         order: u32,
         coefficients: &'static CompositionCoefficients,
+        description: &'static str,
     ) -> Self {
         Self {
             name,
             order,
             coefficients,
+            description,
+            step_limit: None,
         }
     }
 }
@@ -115,6 +185,14 @@ impl FreeBodyIntegrator for Composition {
 
     fn order(&self) -> u32 {
         self.order
+    }
+
+    fn description(&self) -> &'static str {
+        self.description
+    }
+
+    fn step_limit(&self) -> Option<f64> {
+        self.step_limit
     }
 
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {

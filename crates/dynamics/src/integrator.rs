@@ -1,21 +1,38 @@
-//! One stepping interface for every torque-free integrator, and the string
-//! registry that maps method names to integrators (a thin wrapper over
-//! [`FreeBodyMethod`]).
+//! One stepping interface for every torque-free integrator: each carries
+//! its method's facts (name, order, description, step limit), which
+//! [`FreeBodyMethod`] reads.
 
 use glam::DVec3;
 
-use crate::{DivergenceCheck, DynamicsError, FreeBodyMethod, PrincipalState, RigidBody};
+#[cfg(doc)]
+use crate::FreeBodyMethod;
+use crate::{DivergenceCheck, DynamicsError, PrincipalState, RigidBody};
 
 /// A one-step method for the torque-free rigid body in its principal frame
 /// (`Sync`: a [`crate::World`] steps its bodies on threads and may be sent
 /// between threads, e.g. by the Python package, which releases the GIL).
 pub trait FreeBodyIntegrator: Sync {
-    /// The method's registry name (e.g. `"rk4"`).
+    /// The method's name (e.g. `"rk4"`), which [`FreeBodyMethod`] parses
+    /// and writes.
     fn name(&self) -> &'static str;
     /// The order of the method (global error `O(hᵖ)`); `u32::MAX` for the
     /// exact solution, which has no truncation error (where
     /// [`FreeBodyMethod::order`] says `None`).
     fn order(&self) -> u32;
+    /// One line about the method, as `kreisel simulate --list-methods`
+    /// shows it.
+    fn description(&self) -> &'static str;
+    /// The largest `h ω_max` at which the method still follows a
+    /// torque-free body, measured as [`FreeBodyMethod::step_limit`] says;
+    /// `None` (the default) for a method without one (the exact solution)
+    /// or not measured.
+    ///
+    /// ```text
+    /// h ω_max ≤ limit,   ω_max = |L| / min(I₁, I₂, I₃)
+    /// ```
+    fn step_limit(&self) -> Option<f64> {
+        None
+    }
     /// Advances `state` by `h` seconds for principal moments `moments`.
     ///
     /// Infallible by design (the inner loop of every run): a step that has
@@ -46,14 +63,13 @@ pub trait FreeBodyIntegrator: Sync {
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
-/// use kreisel_dynamics::{method, PrincipalState};
+/// use kreisel_dynamics::{FreeBodyMethod, PrincipalState};
 /// let s0 = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 0.0, 2.0) };
-/// let strang = method("strang")?;
+/// let strang = FreeBodyMethod::Strang.integrator();
 /// let mut body = strang.propagator(DVec3::new(1.0, 1.0, 2.0), s0);
 /// body.advance(0.5);
 /// body.advance(0.5);
 /// assert!(kreisel_kinematics::rotation_angle_between(body.state().world_from_principal, DQuat::from_rotation_z(1.0)) < 1e-15);
-/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 pub trait Propagator: Send + Sync {
     /// Advances the body by `h` seconds (a step the method cannot take
@@ -114,15 +130,16 @@ impl<M: FreeBodyIntegrator + ?Sized> Propagator for Stepping<'_, M> {
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
-/// use kreisel_dynamics::{integrate, method, PrincipalState};
+/// use kreisel_dynamics::{integrate, FreeBodyMethod, PrincipalState};
+/// let rk4 = FreeBodyMethod::Rk4.integrator();
 /// let mut s = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.0, 0.0, 2.0) };
-/// integrate(method("rk4")?.as_ref(), DVec3::new(1.0, 1.0, 2.0), &mut s, 0.01, 100)?;
+/// integrate(rk4, DVec3::new(1.0, 1.0, 2.0), &mut s, 0.01, 100)?;
 /// // Spin about a principal axis: uniform rotation by ω t = 1 rad
 /// // (RK4's phase error here: 100 · (h ω/2)⁵/120 ≈ 3e-12 rad).
 /// assert!(kreisel_kinematics::rotation_angle_between(s.world_from_principal, DQuat::from_rotation_z(1.0)) < 1e-10);
 /// // h ω = 100: far beyond RK4's stability, an error rather than NaN.
 /// let mut fast = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(1e4, 2e2, 0.0) };
-/// let e = integrate(method("rk4")?.as_ref(), DVec3::new(1.0, 2.0, 3.0), &mut fast, 0.01, 100).unwrap_err();
+/// let e = integrate(rk4, DVec3::new(1.0, 2.0, 3.0), &mut fast, 0.01, 100).unwrap_err();
 /// assert!(matches!(e, kreisel_dynamics::DynamicsError::Diverged { method: "rk4", .. }), "{e}");
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
@@ -147,50 +164,4 @@ pub fn integrate(
         *state = next;
     }
     Ok(())
-}
-
-/// The names the registry knows, in [`FreeBodyMethod::ALL`]'s order:
-/// `auto`, the exact solution, then the integrators (RK4, the
-/// exact-rotation splittings and their compositions, the discrete
-/// Moser–Veselov family). A thin wrapper over [`FreeBodyMethod::name`].
-///
-/// ```
-/// use kreisel_dynamics::{FreeBodyMethod, METHODS};
-/// assert_eq!(METHODS, FreeBodyMethod::ALL.map(FreeBodyMethod::name));
-/// ```
-pub const METHODS: [&str; FreeBodyMethod::ALL.len()] = {
-    let mut names = [""; FreeBodyMethod::ALL.len()];
-    let mut k = 0;
-    while k < names.len() {
-        names[k] = FreeBodyMethod::ALL[k].name();
-        k += 1;
-    }
-    names
-};
-
-/// What `auto` resolves to ([`FreeBodyMethod::resolve`]): the exact
-/// solution. It skips what a body does not need — a sphere or a spin about
-/// a principal axis is one uniform rotation, a symmetric body two commuting
-/// rotations, an asymmetric body the elliptic-function solution — has no
-/// truncation error at any step (`tests/free_body_exact.rs`: ≤ 2e-14 rad
-/// against every reference sample), and a step costs less than one Strang
-/// splitting step (`BENCHMARKS.md`).
-pub const AUTO: &str = FreeBodyMethod::Auto.resolve().name();
-
-/// The integrator registered under `name`: a thin wrapper over
-/// [`FreeBodyMethod`]'s `FromStr` and [`FreeBodyMethod::integrator`].
-///
-/// # Errors
-/// [`DynamicsError::UnknownMethod`] listing the known names.
-///
-/// ```
-/// use kreisel_dynamics::method;
-/// assert_eq!(method("splitting6")?.order(), 6);
-/// assert_eq!(method("auto")?.name(), "exact");
-/// assert!(method("euler").is_err());
-/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
-/// ```
-pub fn method(name: &str) -> Result<Box<dyn FreeBodyIntegrator>, DynamicsError> {
-    name.parse::<FreeBodyMethod>()
-        .map(FreeBodyMethod::integrator)
 }

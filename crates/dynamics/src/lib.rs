@@ -24,11 +24,14 @@
 //!   the kinds of motion, sleeping-top stability and steady precession
 //!   (notes §3.10–3.11);
 //! - [`elliptic`]: the elliptic integrals and Jacobi functions this needs;
-//! - the methods as types, [`FreeBodyMethod`] and [`HeavyTopMethod`]: every
-//!   method's name (`FromStr`, `Display`), order, one-line description and
-//!   integrator, in one list ([`FreeBodyMethod::ALL`]) that the CLI, the
-//!   benches and the tests read. [`method`] and [`METHODS`] (and their
-//!   heavy-top twins) are thin wrappers over them;
+//! - the methods as types, [`FreeBodyMethod`] and [`HeavyTopMethod`]: one
+//!   list per enum, one line per method (`Variant => &INTEGRATOR`), that
+//!   the CLI, the Python package, the benches and the tests read
+//!   ([`FreeBodyMethod::ALL`], `FromStr`, `Display`, `integrator()`); each
+//!   method's name, order, one-line description and step limit are its
+//!   integrator's. Adding a method is one file (the integrator) and one
+//!   line of the list in `method/free_body.rs` or `method/heavy_top.rs`
+//!   (`method/forward_euler.rs` does it in a test);
 //! - a body touching the ground plane with a sphere (the tippe top),
 //!   [`GroundTop`]: the normal force solved from the constraint, friction
 //!   models [`Friction`], lift-off reported ([`contact`]);
@@ -71,11 +74,12 @@
 //!
 //! ```
 //! use glam::{DQuat, DVec3};
-//! use kreisel_dynamics::{integrate, method, PrincipalState, RigidBody};
+//! use kreisel_dynamics::{integrate, FreeBodyMethod, PrincipalState, RigidBody};
 //! let body = RigidBody::try_from_principal_moments(DVec3::new(1.0, 2.0, 3.0))?;
 //! let mut s = PrincipalState::try_from_omega_body(&body, DQuat::IDENTITY, DVec3::new(0.01, 1.0, 0.0))?;
 //! let l0 = s.l_world();
-//! integrate(method("splitting6")?.as_ref(), body.principal_moments(), &mut s, 0.01, 1000)?;
+//! let method: FreeBodyMethod = "splitting6".parse()?;
+//! integrate(method.integrator(), body.principal_moments(), &mut s, 0.01, 1000)?;
 //! // Exact rotations conserve L_world up to rounding (~1e-13 after 17 000 flows).
 //! assert!((s.l_world() - l0).length() < 1e-12 * l0.length());
 //! # Ok::<(), kreisel_dynamics::DynamicsError>(())
@@ -121,10 +125,10 @@ pub use forced::{
 };
 pub use free_body_f32::{FreeBodyF32, try_free_body_step_f32};
 pub use heavy_top::{
-    HEAVY_TOP_METHODS, HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting,
-    HeavyTopTaylor, MAX_SUBSTEPS, TAYLOR_MAX_ORDER, heavy_top_method, integrate_heavy_top,
+    HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting, HeavyTopTaylor,
+    MAX_SUBSTEPS, TAYLOR_MAX_ORDER, integrate_heavy_top,
 };
-pub use integrator::{AUTO, FreeBodyIntegrator, METHODS, Propagator, integrate, method};
+pub use integrator::{FreeBodyIntegrator, Propagator, integrate};
 pub use lagrange_top::{
     EulerAnglesAndRates, HeavyTopClosedForm, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion,
     SteadyPrecession, TopMotionKind,

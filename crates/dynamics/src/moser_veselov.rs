@@ -202,13 +202,35 @@ pub(crate) fn dmv_step(
 #[derive(Debug, Clone, Copy, Default)]
 pub struct MoserVeselov;
 
+impl MoserVeselov {
+    /// Its [`FreeBodyIntegrator::name`], which
+    /// [`crate::PreprocessedMoserVeselov`] of order 2 (DMV itself) shares.
+    pub(crate) const NAME: &str = "dmv";
+    /// Its [`FreeBodyIntegrator::description`], which
+    /// [`crate::PreprocessedMoserVeselov`] of order 2 (DMV itself) shares.
+    pub(crate) const DESCRIPTION: &str =
+        "discrete Moser-Veselov (implicit, conserves |L|, L_world and a modified energy)";
+    /// Its [`FreeBodyIntegrator::step_limit`] (`h ω_max`), which
+    /// [`crate::PreprocessedMoserVeselov`] of order 2 shares.
+    pub(crate) const STEP_LIMIT: f64 = 1.0;
+}
+
 impl FreeBodyIntegrator for MoserVeselov {
     fn name(&self) -> &'static str {
-        "dmv"
+        Self::NAME
     }
 
     fn order(&self) -> u32 {
         2
+    }
+
+    fn description(&self) -> &'static str {
+        Self::DESCRIPTION
+    }
+
+    /// 1.0: beyond it the implicit step fails (no finite state).
+    fn step_limit(&self) -> Option<f64> {
+        Some(Self::STEP_LIMIT)
     }
 
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {

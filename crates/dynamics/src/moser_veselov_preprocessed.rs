@@ -17,7 +17,7 @@
 
 use glam::DVec3;
 
-use crate::moser_veselov::dmv_step;
+use crate::moser_veselov::{MoserVeselov, dmv_step};
 use crate::rigid_body::moment_scale;
 use crate::{FreeBodyIntegrator, PrincipalState, Propagator};
 
@@ -185,7 +185,11 @@ impl Series {
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PreprocessedMoserVeselov {
+    name: &'static str,
     order: u32,
+    description: &'static str,
+    /// `h ω_max` beyond which the implicit step fails (no finite state).
+    step_limit: f64,
     /// Moments and their series coefficients, if prepared by
     /// [`PreprocessedMoserVeselov::for_body`].
     prepared: Option<(DVec3, Series)>,
@@ -193,6 +197,8 @@ pub struct PreprocessedMoserVeselov {
 
 impl PreprocessedMoserVeselov {
     /// PDMV of order 4 (`"pdmv4"`): `s`, `d` to `O(h²)`.
+    /// Step limit `h ω_max` = 2.8: beyond it the implicit step fails
+    /// (no finite state).
     ///
     /// ```text
     /// s = 1 + s₁(x, y),   d = d₁(x, y)
@@ -203,10 +209,15 @@ impl PreprocessedMoserVeselov {
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_4.order(), 4);
     /// ```
     pub const ORDER_4: Self = Self {
+        name: "pdmv4",
         order: 4,
+        description: "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 4",
+        step_limit: 2.8,
         prepared: None,
     };
     /// PDMV of order 6 (`"pdmv6"`): `s`, `d` to `O(h⁴)`.
+    /// Step limit `h ω_max` = 1.4: beyond it the implicit step fails
+    /// (no finite state).
     ///
     /// ```text
     /// s = 1 + s₁ + s₂,   d = d₁ + d₂
@@ -217,10 +228,15 @@ impl PreprocessedMoserVeselov {
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_6.name(), "pdmv6");
     /// ```
     pub const ORDER_6: Self = Self {
+        name: "pdmv6",
         order: 6,
+        description: "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 6",
+        step_limit: 1.4,
         prepared: None,
     };
     /// PDMV of order 8 (`"pdmv8"`): `s`, `d` to `O(h⁶)`.
+    /// Step limit `h ω_max` = 2.0: beyond it the implicit step fails
+    /// (no finite state).
     ///
     /// ```text
     /// s = 1 + s₁ + s₂ + s₃,   d = d₁ + d₂ + d₃
@@ -231,10 +247,15 @@ impl PreprocessedMoserVeselov {
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_8.order(), 8);
     /// ```
     pub const ORDER_8: Self = Self {
+        name: "pdmv8",
         order: 8,
+        description: "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 8",
+        step_limit: 2.0,
         prepared: None,
     };
     /// PDMV of order 10 (`"pdmv10"`): `s`, `d` to `O(h⁸)`.
+    /// Step limit `h ω_max` = 1.5: beyond it the implicit step fails
+    /// (no finite state).
     ///
     /// ```text
     /// s = 1 + s₁ + s₂ + s₃ + s₄,   d = d₁ + d₂ + d₃ + d₄
@@ -245,7 +266,10 @@ impl PreprocessedMoserVeselov {
     /// assert_eq!(PreprocessedMoserVeselov::ORDER_10.name(), "pdmv10");
     /// ```
     pub const ORDER_10: Self = Self {
+        name: "pdmv10",
         order: 10,
+        description: "Hairer and Vilmart's preprocessed discrete Moser-Veselov, order 10",
+        step_limit: 1.5,
         prepared: None,
     };
 
@@ -262,10 +286,18 @@ impl PreprocessedMoserVeselov {
     /// ```
     pub const fn new(order: u32) -> Option<Self> {
         match order {
-            2 | 4 | 6 | 8 | 10 => Some(Self {
+            // DMV itself: its name, description and step limit.
+            2 => Some(Self {
+                name: MoserVeselov::NAME,
                 order,
+                description: MoserVeselov::DESCRIPTION,
+                step_limit: MoserVeselov::STEP_LIMIT,
                 prepared: None,
             }),
+            4 => Some(Self::ORDER_4),
+            6 => Some(Self::ORDER_6),
+            8 => Some(Self::ORDER_8),
+            10 => Some(Self::ORDER_10),
             _ => None,
         }
     }
@@ -358,17 +390,19 @@ impl PreprocessedMoserVeselov {
 
 impl FreeBodyIntegrator for PreprocessedMoserVeselov {
     fn name(&self) -> &'static str {
-        match self.order {
-            4 => "pdmv4",
-            6 => "pdmv6",
-            8 => "pdmv8",
-            10 => "pdmv10",
-            _ => "dmv",
-        }
+        self.name
     }
 
     fn order(&self) -> u32 {
         self.order
+    }
+
+    fn description(&self) -> &'static str {
+        self.description
+    }
+
+    fn step_limit(&self) -> Option<f64> {
+        Some(self.step_limit)
     }
 
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {

@@ -36,6 +36,17 @@ impl FreeBodyIntegrator for Rk4 {
         4
     }
 
+    fn description(&self) -> &'static str {
+        "classical Runge-Kutta on L and q, the baseline; energy, |L| and |q| drift"
+    }
+
+    /// 1.0: beyond it the energy drifts (decays) beyond 10 %, and the run
+    /// blows up past `2√2`; the error grows with the run's length too (not
+    /// geometric).
+    fn step_limit(&self) -> Option<f64> {
+        Some(1.0)
+    }
+
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {
         let (q, l) = (state.world_from_principal, state.l_principal);
         let (k1q, k1l) = field(moments, q, l);

@@ -5,7 +5,7 @@
 //! at the workspace root.)
 
 use glam::{DQuat, DVec3};
-use kreisel_dynamics::{ExactSolution, PrincipalState, elliptic_motion, integrate, method};
+use kreisel_dynamics::{ExactSolution, FreeBodyMethod, PrincipalState, elliptic_motion, integrate};
 use kreisel_kinematics::rotation_angle_between;
 
 fn state(l: DVec3) -> PrincipalState {
@@ -74,7 +74,7 @@ fn steady_and_nearly_steady_spins() {
     let exact = ExactSolution::try_new(moments, s0).unwrap().state_at(10.0);
     let mut split = s0;
     integrate(
-        method("splitting8").unwrap().as_ref(),
+        FreeBodyMethod::Splitting8.integrator(),
         moments,
         &mut split,
         0.01,
@@ -139,7 +139,9 @@ fn bad_input() {
     let nan_l = state(DVec3::new(f64::NAN, 1.0, 0.0));
     assert!(ExactSolution::try_new(moments, nan_l).is_err());
     let mut s = nan_l;
-    method("exact").unwrap().step(moments, &mut s, 0.1);
+    FreeBodyMethod::Exact
+        .integrator()
+        .step(moments, &mut s, 0.1);
     assert!(s.l_principal.is_nan());
     // L = 0: at rest for ever.
     let rest = ExactSolution::try_new(moments, state(DVec3::ZERO))
@@ -156,7 +158,7 @@ fn bad_input() {
 fn step_and_propagator_agree() {
     let moments = DVec3::new(0.5, 0.85, 1.0);
     let s0 = state(DVec3::new(0.45, 0.0, 0.89));
-    let m = method("exact").unwrap();
+    let m = FreeBodyMethod::Exact.integrator();
     let mut stepped = s0;
     for _ in 0..50 {
         m.step(moments, &mut stepped, 0.2);

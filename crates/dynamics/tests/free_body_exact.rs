@@ -8,7 +8,7 @@ mod common;
 
 use common::free_body::load;
 
-use kreisel_dynamics::{ExactSolution, PrincipalState, integrate, method};
+use kreisel_dynamics::{ExactSolution, FreeBodyMethod, PrincipalState, integrate};
 use kreisel_kinematics::rotation_angle_between;
 
 const SCENARIOS: [&str; 9] = [
@@ -59,7 +59,7 @@ fn exact_solution_matches_every_reference_sample() {
 /// The `exact` method stepped with any step size lands on the reference.
 #[test]
 fn exact_method_at_any_step() {
-    let exact = method("exact").unwrap();
+    let exact = FreeBodyMethod::Exact.integrator();
     for name in SCENARIOS {
         let r = load(name);
         let (_, q0, l0) = r.samples[0];
@@ -73,7 +73,7 @@ fn exact_method_at_any_step() {
                 world_from_principal: q0,
                 l_principal: l0,
             };
-            integrate(exact.as_ref(), r.moments, &mut s, h, steps).unwrap();
+            integrate(exact, r.moments, &mut s, h, steps).unwrap();
             let e = rotation_angle_between(s.world_from_principal, q);
             assert!(e <= 1e-13, "{name} h = {h}: {e:e}");
         }

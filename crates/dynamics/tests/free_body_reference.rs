@@ -7,7 +7,7 @@ mod common;
 
 use common::free_body::{Reference, load};
 
-use kreisel_dynamics::{FreeBodyIntegrator, METHODS, PrincipalState, integrate, method};
+use kreisel_dynamics::{FreeBodyIntegrator, FreeBodyMethod, PrincipalState, integrate};
 use kreisel_kinematics::glam::DVec3;
 use kreisel_kinematics::rotation_angle_between;
 
@@ -64,9 +64,9 @@ fn measured_convergence_orders() {
         };
         for (name, h) in steps {
             let h = h * scale;
-            let m = method(name).unwrap();
-            let (e1, _) = error_at(m.as_ref(), &r, t_end, h);
-            let (e2, _) = error_at(m.as_ref(), &r, t_end, h / 2.0);
+            let m = name.parse::<FreeBodyMethod>().unwrap().integrator();
+            let (e1, _) = error_at(m, &r, t_end, h);
+            let (e2, _) = error_at(m, &r, t_end, h / 2.0);
             let order = (e1 / e2).log2();
             eprintln!(
                 "{scenario:>18} {name:>10}: error {e1:.2e} at h = {h}, {e2:.2e} at h/2: order {order:.2}"
@@ -81,10 +81,10 @@ fn measured_convergence_orders() {
 
 #[test]
 fn methods_listed_in_the_registry_all_exist() {
-    for name in METHODS.iter().filter(|&&n| n != "auto") {
-        assert_eq!(method(name).unwrap().name(), *name);
+    for m in FreeBodyMethod::ALL {
+        assert_eq!(m.integrator().name(), m.resolve().name());
+        assert_eq!(m.name().parse::<FreeBodyMethod>().unwrap(), m);
     }
-    assert!(method("auto").is_ok());
 }
 
 /// The default method's accuracy goal (issue #4): ≤ 1e-11 rad at dt = 0.01
@@ -92,7 +92,7 @@ fn methods_listed_in_the_registry_all_exist() {
 /// scenario (near the separatrix and at 1000:1 inertia ratios included).
 #[test]
 fn default_method_meets_the_accuracy_goal() {
-    let auto = method("auto").unwrap();
+    let auto = FreeBodyMethod::Auto.integrator();
     for scenario in [
         "rapier",
         "hlw",
@@ -107,7 +107,7 @@ fn default_method_meets_the_accuracy_goal() {
         let r = load(scenario);
         let t_end = r.samples.last().unwrap().0.min(20.0);
         for (h, goal) in [(0.01, 1e-11), (0.1, 1e-9)] {
-            let (e, el) = error_at(auto.as_ref(), &r, t_end, h);
+            let (e, el) = error_at(auto, &r, t_end, h);
             eprintln!("{scenario:>18}: dt = {h}: attitude {e:.2e} rad, L {el:.2e} at t = {t_end}");
             assert!(e <= goal && el <= goal, "{scenario} dt = {h}: {e:e}");
         }
@@ -121,7 +121,12 @@ fn exact_for_sphere_and_symmetric_top() {
     for scenario in ["sphere", "symmetric"] {
         let r = load(scenario);
         for name in ["splitting", "splitting4", "splitting8"] {
-            let (e, el) = error_at(method(name).unwrap().as_ref(), &r, 20.0, 0.5);
+            let (e, el) = error_at(
+                name.parse::<FreeBodyMethod>().unwrap().integrator(),
+                &r,
+                20.0,
+                0.5,
+            );
             eprintln!("{scenario} {name}: attitude {e:.1e}, L {el:.1e}");
             assert!(e < 1e-13 && el < 1e-14, "{scenario} {name}: {e:e} {el:e}");
         }
@@ -150,7 +155,7 @@ fn conservation_over_a_million_steps() {
         ("dmv", 0.02),
         ("pdmv8", 0.1),
     ] {
-        let m = method(name).unwrap();
+        let m = name.parse::<FreeBodyMethod>().unwrap().integrator();
         let mut s = PrincipalState {
             world_from_principal: q0,
             l_principal: l0,

@@ -7,7 +7,9 @@ mod common;
 
 use common::free_body::load;
 use common::reference_csv::Table;
-use kreisel_dynamics::{AxisStability, PrincipalState, axis_stability, elliptic_motion, method};
+use kreisel_dynamics::{
+    AxisStability, FreeBodyMethod, PrincipalState, axis_stability, elliptic_motion,
+};
 use kreisel_kinematics::glam::{DQuat, DVec3};
 
 #[test]
@@ -45,7 +47,7 @@ fn growth_rate_of_the_intermediate_axis_is_measured() {
     let AxisStability::Unstable { growth_rate } = axis_stability(moments, 1, omega) else {
         panic!("the intermediate axis must be unstable");
     };
-    let m = method("splitting8").unwrap();
+    let m = FreeBodyMethod::Splitting8.integrator();
     let mut s = PrincipalState {
         world_from_principal: DQuat::IDENTITY,
         l_principal: DVec3::new(1e-9, 2.0, 0.0),

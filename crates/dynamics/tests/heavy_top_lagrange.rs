@@ -12,8 +12,8 @@ use std::path::Path;
 
 use glam::{DQuat, DVec3};
 use kreisel_dynamics::{
-    HeavyTop, HeavyTopClosedForm, HeavyTopIntegrator, LagrangeTop, LagrangeTopInitial,
-    LagrangeTopMotion, PrincipalState, heavy_top_method,
+    HeavyTop, HeavyTopClosedForm, HeavyTopIntegrator, HeavyTopMethod, LagrangeTop,
+    LagrangeTopInitial, LagrangeTopMotion, PrincipalState,
 };
 use kreisel_kinematics::{EulerSequence, rotation_angle_between};
 
@@ -58,7 +58,7 @@ fn numbers(text: &str, key: &str) -> Vec<f64> {
 #[test]
 fn closed_form_and_splitting_agree_on_the_lagrange_scenarios() {
     let zxz: EulerSequence = "ZXZ".parse().unwrap();
-    let auto = heavy_top_method("auto").unwrap();
+    let auto = HeavyTopMethod::Auto.integrator();
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tests/data/lagrange_top");
     let mut names: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
@@ -106,7 +106,7 @@ fn closed_form_and_splitting_agree_on_the_lagrange_scenarios() {
             .filter(|l| !l.starts_with('#') && !l.starts_with('t'))
             .map(|l| l.split(',').next().unwrap().parse().unwrap())
             .collect();
-        let err = compare(&motion, &top, start, DQuat::IDENTITY, &times, auto.as_ref());
+        let err = compare(&motion, &top, start, DQuat::IDENTITY, &times, auto);
         let name = path.file_stem().unwrap().to_string_lossy();
         println!(
             "{name:>20}: closed form vs auto (dt ≈ 1e-3, {} s): {err:.2e} rad",
@@ -119,7 +119,7 @@ fn closed_form_and_splitting_agree_on_the_lagrange_scenarios() {
 #[test]
 fn closed_form_matches_the_symmetric_heavy_top_references() {
     let zxz: EulerSequence = "ZXZ".parse().unwrap();
-    let auto = heavy_top_method("auto").unwrap();
+    let auto = HeavyTopMethod::Auto.integrator();
     for name in ["bruls", "lagrange_slow"] {
         let r = common::heavy_top::load(name);
         let k = r.top.symmetry_axis().expect("a Lagrange top");
@@ -149,14 +149,7 @@ fn closed_form_matches_the_symmetric_heavy_top_references() {
             })
             .unwrap();
         let times: Vec<f64> = r.samples.iter().map(|s| s.0).collect();
-        let err = compare(
-            &motion,
-            &r.top,
-            r.start,
-            principal_from_top,
-            &times,
-            auto.as_ref(),
-        );
+        let err = compare(&motion, &r.top, r.start, principal_from_top, &times, auto);
         let mut to_reference: f64 = 0.0;
         for (k, &(t, _, _)) in r.samples.iter().enumerate() {
             let closed = PrincipalState {
@@ -224,7 +217,7 @@ fn heavy_top_closed_form_special_starts() {
         (DQuat::IDENTITY, DVec3::new(1.5, -0.5, 40.0)),
         (DQuat::from_rotation_z(2.0), DVec3::new(0.0, 0.0, 40.0)),
     ];
-    let splitting8 = heavy_top_method("splitting8").unwrap();
+    let splitting8 = HeavyTopMethod::Splitting8.integrator();
     for (moments, com, gravity) in tops {
         let top = HeavyTop::try_from_principal(moments, com, 1.0, gravity).unwrap();
         let k = top.symmetry_axis().unwrap();

@@ -6,7 +6,7 @@ mod common;
 
 use common::heavy_top::{HeavyTopReference, NAMES, load};
 use glam::{DQuat, DVec3};
-use kreisel_dynamics::{HEAVY_TOP_METHODS, HeavyTopIntegrator, PrincipalState, heavy_top_method};
+use kreisel_dynamics::{HeavyTopIntegrator, HeavyTopMethod, PrincipalState};
 
 /// Steps `method` through the reference with `substeps` steps per sample
 /// interval; returns the largest attitude error over the samples and the
@@ -33,10 +33,10 @@ fn run(
 /// dt = 1e-3 on fast tops (150 rad/s), at every sample.
 #[test]
 fn default_method_on_fast_tops() {
-    let auto = heavy_top_method("auto").unwrap();
+    let auto = HeavyTopMethod::Auto.integrator();
     for name in ["bruls", "asymmetric_fast"] {
         let r = load(name);
-        let (err, _) = run(&r, auto.as_ref(), 10);
+        let (err, _) = run(&r, auto, 10);
         println!("{name}: auto at dt = 1e-3: {err:.2e} rad");
         assert!(err < 1e-8, "{name}: {err:e}");
     }
@@ -51,9 +51,9 @@ fn every_method_matches_the_references() {
         let dt = r.samples[1].0 - r.samples[0].0;
         // ~2e-4 s: RK4 resolves 150 rad/s (h ω = 0.03).
         let substeps = (dt / 2e-4).round() as usize;
-        for m in HEAVY_TOP_METHODS {
-            let method = heavy_top_method(m).unwrap();
-            let (err, _) = run(&r, method.as_ref(), substeps);
+        for m in HeavyTopMethod::ALL {
+            let method = m.integrator();
+            let (err, _) = run(&r, method, substeps);
             println!(
                 "{name:>16} {m:>11} h = {:.1e}: {err:.2e} rad",
                 dt / substeps as f64
@@ -61,9 +61,9 @@ fn every_method_matches_the_references() {
             let bound = match m {
                 // RK4 at h ω = 0.03 on the 150 rad/s tops: 1.2e-6 rad;
                 // Strang on the chaotic tumbling top: 7e-5 rad.
-                "rk4" => 1e-5,
-                "strang" => 2e-4,
-                "splitting4" => 1e-8,
+                HeavyTopMethod::Rk4 => 1e-5,
+                HeavyTopMethod::Strang => 2e-4,
+                HeavyTopMethod::Splitting4 => 1e-8,
                 // Rounding: up to 850 000 stages over the 10 s scenario.
                 _ => 1e-10,
             };
@@ -92,11 +92,11 @@ fn convergence_orders() {
         ("tumbling", "splitting8", [1, 2, 4]),
     ] {
         let r = load(name);
-        let m = heavy_top_method(method).unwrap();
+        let m = method.parse::<HeavyTopMethod>().unwrap().integrator();
         let errors: Vec<f64> = range
             .iter()
             .map(|&n| {
-                let (_, s) = run(&r, m.as_ref(), n);
+                let (_, s) = run(&r, m, n);
                 r.attitude_error(&s, r.samples.len() - 1)
             })
             .collect();
@@ -132,7 +132,7 @@ fn conservation() {
             r.l_world_z
         );
         for m in ["strang", "splitting4", "splitting8"] {
-            let method = heavy_top_method(m).unwrap();
+            let method = m.parse::<HeavyTopMethod>().unwrap().integrator();
             let mut s = r.start;
             let (mut de, mut dlv, mut dl3): (f64, f64, f64) = (0.0, 0.0, 0.0);
             for _ in 0..20_000 {
@@ -186,7 +186,7 @@ fn bruls_published_values() {
     );
     assert!((u_reference - u_published).length() < 2e-6);
     assert!((last.1 - q_published).length() < 2e-6);
-    let auto = heavy_top_method("auto").unwrap();
+    let auto = HeavyTopMethod::Auto.integrator();
     let mut s = r.start;
     for _ in 0..2000 {
         auto.step(&r.top, &mut s, 1e-3);
@@ -221,8 +221,8 @@ fn every_method_gives_the_same_motion_in_every_unit_system() {
     for name in ["bruls", "asymmetric_fast", "tumbling"] {
         let r = load(name);
         let dt = r.samples[1].0 - r.samples[0].0;
-        for method_name in HEAVY_TOP_METHODS {
-            let method = heavy_top_method(method_name).unwrap();
+        for method_name in HeavyTopMethod::ALL {
+            let method = method_name.integrator();
             let path = |s: f64, sigma: f64| {
                 let mp = MassProperties::try_new(
                     r.mass_properties.mass * s,

@@ -6,7 +6,8 @@
 
 use glam::{DQuat, DVec3};
 use kreisel_dynamics::{
-    FreeBodyIntegrator, MoserVeselov, PreprocessedMoserVeselov, PrincipalState, integrate, method,
+    FreeBodyIntegrator, FreeBodyMethod, MoserVeselov, PreprocessedMoserVeselov, PrincipalState,
+    integrate,
 };
 use kreisel_kinematics::rotation_angle_between;
 
@@ -16,11 +17,15 @@ mod free_body;
 use free_body::{Reference, load};
 
 /// Every method of this file, lowest order first.
-fn methods() -> Vec<Box<dyn FreeBodyIntegrator>> {
-    ["dmv", "pdmv4", "pdmv6", "pdmv8", "pdmv10"]
-        .iter()
-        .map(|n| method(n).unwrap())
-        .collect()
+fn methods() -> [&'static dyn FreeBodyIntegrator; 5] {
+    [
+        FreeBodyMethod::Dmv,
+        FreeBodyMethod::Pdmv4,
+        FreeBodyMethod::Pdmv6,
+        FreeBodyMethod::Pdmv8,
+        FreeBodyMethod::Pdmv10,
+    ]
+    .map(FreeBodyMethod::integrator)
 }
 
 /// Attitude error (rad) and relative L error at the sample nearest `t_end`.
@@ -51,7 +56,7 @@ fn registry_names_and_orders() {
     for (m, order) in methods().iter().zip([2, 4, 6, 8, 10]) {
         assert_eq!(m.order(), order, "{}", m.name());
     }
-    assert_eq!(method("pdmv10").unwrap().name(), "pdmv10");
+    assert_eq!(FreeBodyMethod::Pdmv10.integrator().name(), "pdmv10");
     assert_eq!(PreprocessedMoserVeselov::new(2).unwrap().name(), "dmv");
 }
 
@@ -69,9 +74,9 @@ fn measured_convergence_orders() {
     ];
     for (scenario, t_end, steps) in table {
         let r = load(scenario);
-        for (m, h) in methods().iter().zip(steps) {
-            let (e1, _) = error_at(m.as_ref(), &r, t_end, h);
-            let (e2, _) = error_at(m.as_ref(), &r, t_end, h / 2.0);
+        for (m, h) in methods().into_iter().zip(steps) {
+            let (e1, _) = error_at(m, &r, t_end, h);
+            let (e2, _) = error_at(m, &r, t_end, h / 2.0);
             let order = (e1 / e2).log2();
             eprintln!(
                 "{scenario:>18} {:>7}: error {e1:.2e} at h = {h}, {e2:.2e} at h/2: order {order:.2}",
@@ -147,7 +152,7 @@ fn pdmv10_at_h_0_2() {
         s
     };
     let fine = run(&pdmv10, 0.0125);
-    let check = run(method("splitting8").unwrap().as_ref(), 0.005);
+    let check = run(FreeBodyMethod::Splitting8.integrator(), 0.005);
     let agree = rotation_angle_between(fine.world_from_principal, check.world_from_principal);
     eprintln!(
         "driver problem reference: pdmv10 h = 0.0125 vs splitting8 h = 0.005: {agree:.1e} rad"
@@ -183,8 +188,8 @@ fn errors_at_dt_0_01_and_0_1() {
         let r = load(scenario);
         let t_end = r.samples.last().unwrap().0.min(20.0);
         for m in methods() {
-            let (e1, l1) = error_at(m.as_ref(), &r, t_end, 0.01);
-            let (e2, l2) = error_at(m.as_ref(), &r, t_end, 0.1);
+            let (e1, l1) = error_at(m, &r, t_end, 0.01);
+            let (e2, l2) = error_at(m, &r, t_end, 0.1);
             eprintln!(
                 "{scenario:>18} {:>7}: dt 0.01: {e1:.2e} rad (L {l1:.1e}); dt 0.1: {e2:.2e} rad (L {l2:.1e}) at t = {t_end}",
                 m.name()
@@ -222,7 +227,7 @@ fn degenerate_inputs_do_not_panic() {
                 assert!(finite || nan, "{} {moments} {h}: {s:?}", m.name());
                 if h > 0.0 {
                     let mut s = s0;
-                    let result = integrate(m.as_ref(), moments, &mut s, h, 3);
+                    let result = integrate(m, moments, &mut s, h, 3);
                     let taken = result.is_ok() && s.l_principal.is_finite();
                     assert!(taken || result.is_err(), "{} {moments} {h}", m.name());
                     if h == 1e300 || moments != DVec3::new(1.0, 2.0, 3.0) {
@@ -239,7 +244,7 @@ fn degenerate_inputs_do_not_panic() {
             world_from_principal: DQuat::IDENTITY,
             l_principal: DVec3::new(1e4, 2e2, 0.0),
         };
-        match integrate(m.as_ref(), DVec3::new(1.0, 2.0, 3.0), &mut s, 0.01, 10) {
+        match integrate(m, DVec3::new(1.0, 2.0, 3.0), &mut s, 0.01, 10) {
             Err(kreisel_dynamics::DynamicsError::Diverged { method, time, .. }) => {
                 assert_eq!((method, time), (m.name(), 0.01));
             }

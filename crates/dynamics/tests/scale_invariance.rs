@@ -12,7 +12,7 @@
 //! moment, an I ω² that overflows.
 
 use glam::{DQuat, DVec3};
-use kreisel_dynamics::{DynamicsError, METHODS, PrincipalState, RigidBody, integrate, method};
+use kreisel_dynamics::{DynamicsError, FreeBodyMethod, PrincipalState, RigidBody, integrate};
 use kreisel_kinematics::rotation_angle_between;
 
 #[path = "common/free_body.rs"]
@@ -36,7 +36,12 @@ const SCALE_TOLERANCE: f64 = 1e-12;
 
 /// The attitude after `T_END/σ` seconds of steps `H/σ`, for moments and L
 /// scaled by `s` and `s σ`.
-fn run(name: &str, r: &free_body::Reference, s: f64, sigma: f64) -> Result<DQuat, DynamicsError> {
+fn run(
+    name: FreeBodyMethod,
+    r: &free_body::Reference,
+    s: f64,
+    sigma: f64,
+) -> Result<DQuat, DynamicsError> {
     let (_, q0, l0) = r.samples[0];
     let mut state = PrincipalState {
         world_from_principal: q0,
@@ -44,7 +49,7 @@ fn run(name: &str, r: &free_body::Reference, s: f64, sigma: f64) -> Result<DQuat
     };
     let steps = (T_END / H).round() as usize;
     integrate(
-        method(name)?.as_ref(),
+        name.integrator(),
         r.moments * s,
         &mut state,
         H / sigma,
@@ -67,7 +72,7 @@ fn every_method_gives_the_same_motion_in_every_unit_system() {
             (t_ref - T_END).abs() < 1e-12,
             "{scenario}: no sample at {T_END}"
         );
-        for name in METHODS {
+        for name in FreeBodyMethod::ALL {
             let unscaled = run(name, &r, 1.0, 1.0).unwrap();
             let accuracy = rotation_angle_between(unscaled, q_ref);
             // The unscaled body turns (a frozen one would not), so every
@@ -118,9 +123,9 @@ fn unrepresentable_scales_are_typed_errors() {
             RigidBody::try_from_principal_moments(bad),
             Err(DynamicsError::UnphysicalInertia { .. })
         ));
-        for name in METHODS {
+        for name in FreeBodyMethod::ALL {
             let mut s = s0;
-            let e = integrate(method(name).unwrap().as_ref(), bad, &mut s, 0.01, 10).unwrap_err();
+            let e = integrate(name.integrator(), bad, &mut s, 0.01, 10).unwrap_err();
             assert!(
                 matches!(e, DynamicsError::UnphysicalInertia { .. }),
                 "{name}: {e}"
@@ -142,7 +147,7 @@ fn unrepresentable_scales_are_typed_errors() {
     };
     let mut s = huge;
     let e = integrate(
-        method("exact").unwrap().as_ref(),
+        FreeBodyMethod::Exact.integrator(),
         DVec3::new(1.0, 2.0, 3.0),
         &mut s,
         0.01,
@@ -155,7 +160,7 @@ fn unrepresentable_scales_are_typed_errors() {
     // The same L on a body of moments 1e200 is ω = 1 rad/s: fine.
     assert!(
         integrate(
-            method("exact").unwrap().as_ref(),
+            FreeBodyMethod::Exact.integrator(),
             DVec3::new(1e200, 2e200, 2.5e200),
             &mut s,
             0.01,

@@ -4,7 +4,7 @@
 
 use glam::{DQuat, DVec3};
 use kreisel_dynamics::splitting::{SymmetricTopSplitting, default_axes};
-use kreisel_dynamics::{PrincipalState, RigidBody, integrate, method};
+use kreisel_dynamics::{FreeBodyMethod, PrincipalState, RigidBody, integrate};
 use kreisel_kinematics::rotation_angle_between;
 
 #[test]
@@ -28,7 +28,7 @@ fn default_ordering_is_the_best_of_six() {
         // (its error there is ~1e-13, far below the 1e-6 compared here).
         let mut reference = start;
         integrate(
-            method("splitting8").unwrap().as_ref(),
+            FreeBodyMethod::Splitting8.integrator(),
             moments,
             &mut reference,
             0.001,

@@ -218,7 +218,7 @@ fn heavy_tops_move_as_integrate_heavy_top_moves_them() {
             body.omega_body(),
         )
         .unwrap();
-        integrate_heavy_top(method.integrator().as_ref(), &top, &mut s, 2e-3, 500).unwrap();
+        integrate_heavy_top(method.integrator(), &top, &mut s, 2e-3, 500).unwrap();
         let w = world.state(id).unwrap();
         assert_eq!(w.world_from_body, s.world_from_body(top.body()), "{method}");
         assert_eq!(w.l_world, s.l_world(), "{method}");

@@ -16,6 +16,7 @@ use std::path::{Path, PathBuf};
 use kreisel_dynamics::BodyId;
 use kreisel_scene::columns::{Column, States};
 use kreisel_scene::error::SceneError;
+use kreisel_scene::methods;
 use kreisel_scene::run::{prepare, run_rows};
 use kreisel_scene::scene_file::Scene;
 use numpy::PyArray1;
@@ -107,12 +108,14 @@ fn run(
             }
         })?,
     };
-    let (mut scene, name) = prepare(path, &text, method)?;
+    // Parsed once, here (after the scene is read, as the CLI's errors come).
+    let method = method.map(methods::parse).transpose()?;
+    let (mut scene, method) = prepare(path, &text, method)?;
     let threads = threads
         .unwrap_or_else(|| std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN));
     scene.world.set_threads(threads);
     let mut columns = Columns::new();
-    run_rows(&mut scene, path, &name, &mut |states, bodies| {
+    run_rows(&mut scene, path, method, &mut |states, bodies| {
         columns.push(states, bodies);
     })?;
     Ok((columns, scene))

@@ -1,49 +1,59 @@
-//! The integration methods by name, for `--method`, the scene's `method`
-//! and `--list-methods`: everything is read from the library's
+//! The integration methods for `--method`, the scene's `method` and
+//! `--list-methods`: everything is read from the library's
 //! [`FreeBodyMethod`] and [`HeavyTopMethod`] (names, orders, descriptions,
 //! which methods have a heavy-top version), so the list cannot drift from
-//! what the library runs.
+//! what the library runs. A method's name is parsed once, where the
+//! user's text enters ([`parse`] for `--method` and Python's `method`, the
+//! scene file's `method` key in [`crate::scene_file`]); from there on it is
+//! a [`FreeBodyMethod`].
 
 #![forbid(unsafe_code)]
 
 use std::io::{self, Write};
 
-use kreisel_dynamics::{
-    BodyId, FreeBodyIntegrator, FreeBodyMethod, HeavyTopIntegrator, HeavyTopMethod, Plan, World,
-};
+use kreisel_dynamics::{BodyId, FreeBodyMethod, HeavyTopMethod, Plan, World};
 
-/// The name that stands for the recommended method (the default).
-pub const AUTO: &str = FreeBodyMethod::Auto.name();
+use crate::error::SceneError;
 
-/// The integrator called `name` (`auto` runs what
-/// [`FreeBodyMethod::resolve`] says: the exact solution).
+/// The method the user named (`--method`, Python's `method`), parsed
+/// where the text enters.
 ///
 /// # Errors
-/// A message naming the method and listing the known ones.
-pub fn integrator(name: &str) -> Result<Box<dyn FreeBodyIntegrator>, String> {
-    name.parse::<FreeBodyMethod>()
-        .map(FreeBodyMethod::integrator)
-        .map_err(|e| e.to_string())
+/// [`SceneError::Method`] naming the method and listing the known ones.
+///
+/// ```
+/// use kreisel_dynamics::FreeBodyMethod;
+/// use kreisel_scene::methods::parse;
+/// assert_eq!(parse("rk4").unwrap(), FreeBodyMethod::Rk4);
+/// assert!(parse("x").unwrap_err().to_string().starts_with("--method: unknown method `x` (known: auto,"));
+/// ```
+pub fn parse(name: &str) -> Result<FreeBodyMethod, SceneError> {
+    name.parse()
+        .map_err(|e: kreisel_dynamics::DynamicsError| SceneError::Method {
+            message: e.to_string(),
+        })
 }
 
-/// The heavy-top integrator that the method called `name` runs for bodies
-/// with a `pivot` ([`FreeBodyMethod::heavy_top`]: the one of the same
-/// name).
+/// The heavy-top method that `method` runs for bodies with a `pivot`
+/// ([`FreeBodyMethod::heavy_top`]: the one of the same name).
 ///
 /// # Errors
 /// A message naming the method and listing the heavy-top ones, for a
-/// method with no heavy-top version (or no method at all).
-pub fn heavy_top_integrator(name: &str) -> Result<Box<dyn HeavyTopIntegrator>, String> {
-    name.parse::<FreeBodyMethod>()
-        .ok()
-        .and_then(FreeBodyMethod::heavy_top)
-        .map(HeavyTopMethod::integrator)
-        .ok_or_else(|| {
-            format!(
-                "method `{name}` cannot move a body with a `pivot` (a heavy top); use one of {}",
-                HeavyTopMethod::ALL.map(HeavyTopMethod::name).join(", ")
-            )
-        })
+/// method with no heavy-top version.
+///
+/// ```
+/// use kreisel_dynamics::{FreeBodyMethod, HeavyTopMethod};
+/// use kreisel_scene::methods::heavy_top;
+/// assert_eq!(heavy_top(FreeBodyMethod::Strang), Ok(HeavyTopMethod::Strang));
+/// assert!(heavy_top(FreeBodyMethod::Dmv).unwrap_err().starts_with("method `dmv` cannot move"));
+/// ```
+pub fn heavy_top(method: FreeBodyMethod) -> Result<HeavyTopMethod, String> {
+    method.heavy_top().ok_or_else(|| {
+        format!(
+            "method `{method}` cannot move a body with a `pivot` (a heavy top); use one of {}",
+            HeavyTopMethod::ALL.map(HeavyTopMethod::name).join(", ")
+        )
+    })
 }
 
 /// A free body stepped by a method with a step limit
@@ -97,12 +107,13 @@ impl StepLimit {
     pub fn warning(&self, dt: f64) -> String {
         format!(
             "dt·ω_max = {:.3} is beyond {}'s step limit {} (energy errors above {} % or \
-             failed steps); use dt <= {:.2e} s or the default method ({AUTO})",
+             failed steps); use dt <= {:.2e} s or the default method ({})",
             self.ratio,
             self.method,
             self.limit,
             100.0 * kreisel_dynamics::STEP_LIMIT_ENERGY_ERROR,
-            dt * self.limit / self.ratio
+            dt * self.limit / self.ratio,
+            FreeBodyMethod::Auto
         )
     }
 }
@@ -136,21 +147,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn every_method_resolves_to_what_it_runs() {
-        for m in FreeBodyMethod::ALL {
-            assert_eq!(integrator(m.name()).unwrap().name(), m.resolve().name());
-        }
-        assert_eq!(integrator(AUTO).unwrap().name(), "exact");
-    }
-
-    #[test]
     fn heavy_top_methods_resolve_and_the_others_are_refused() {
         for m in HeavyTopMethod::ALL {
-            assert_eq!(heavy_top_integrator(m.name()).unwrap().name(), m.name());
+            let free: FreeBodyMethod = m.name().parse().unwrap();
+            assert_eq!(heavy_top(free), Ok(m));
         }
-        for name in ["exact", "splitting", "dmv", "pdmv4", "pdmv10", "euler"] {
+        for name in ["exact", "splitting", "dmv", "pdmv4", "pdmv10"] {
             assert_eq!(
-                heavy_top_integrator(name).err().unwrap(),
+                heavy_top(name.parse().unwrap()).unwrap_err(),
                 format!(
                     "method `{name}` cannot move a body with a `pivot` (a heavy top); \
                      use one of auto, rk4, strang, splitting4, splitting6, splitting8"
@@ -162,9 +166,9 @@ mod tests {
     #[test]
     fn unknown_method_lists_the_known_ones() {
         assert_eq!(
-            integrator("euler").err().unwrap(),
-            "unknown method `euler` (known: auto, exact, rk4, strang, splitting, splitting4, \
-             splitting6, splitting8, dmv, pdmv4, pdmv6, pdmv8, pdmv10)"
+            parse("euler").unwrap_err().to_string(),
+            "--method: unknown method `euler` (known: auto, exact, rk4, strang, splitting, \
+             splitting4, splitting6, splitting8, dmv, pdmv4, pdmv6, pdmv8, pdmv10)"
         );
     }
 

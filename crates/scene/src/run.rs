@@ -6,11 +6,11 @@
 use std::convert::Infallible;
 use std::path::Path;
 
-use kreisel_dynamics::{BodyId, World};
+use kreisel_dynamics::{BodyId, FreeBodyMethod, World};
 
 use crate::columns::{self, States};
 use crate::error::SceneError;
-use crate::methods::{self, AUTO};
+use crate::methods;
 use crate::scene_file::{self, Scene};
 use crate::stop::BodyStop;
 
@@ -45,32 +45,25 @@ pub struct Watcher<'a> {
 }
 
 /// The scene at `path` (whose text is `text`) parsed and checked, moved by
-/// `method` if given (a user's override of the scene's `method`): the
-/// scene and the name of its method.
+/// `method` if given (a user's override of the scene's `method`, parsed
+/// where it was given: [`methods::parse`]): the scene and the method that
+/// moves it.
 ///
 /// # Errors
-/// [`SceneError::Method`] for an unknown `method`; as
-/// [`scene_file::parse`]; [`SceneError::Method`] for a method without a
+/// As [`scene_file::parse`]; [`SceneError::Method`] for a method without a
 /// heavy-top version when a body has a pivot.
 pub fn prepare(
     path: &Path,
     text: &str,
-    method: Option<&str>,
-) -> Result<(Scene, String), SceneError> {
-    if let Some(name) = method {
-        methods::integrator(name).map_err(|message| SceneError::Method { message })?;
-    }
+    method: Option<FreeBodyMethod>,
+) -> Result<(Scene, FreeBodyMethod), SceneError> {
     let scene = scene_file::parse_with_method(path, text, method)?;
-    let name = match (method, &scene.method) {
-        (Some(name), _) => name.to_owned(),
-        (None, Some(name)) => name.clone(),
-        (None, None) => AUTO.to_owned(),
-    };
+    let method = method.or(scene.method).unwrap_or_default();
     // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
     if scene.has_pivot {
-        methods::heavy_top_integrator(&name).map_err(|message| SceneError::Method { message })?;
+        methods::heavy_top(method).map_err(|message| SceneError::Method { message })?;
     }
-    Ok((scene, name))
+    Ok((scene, method))
 }
 
 /// Moves a [`prepare`]d scene through its schedule, handing `rows` the
@@ -79,12 +72,12 @@ pub fn prepare(
 ///
 /// # Errors
 /// The one-line error for a body that stopped the run (`path` names the
-/// scene, `method` is the name [`prepare`] returned); the rows before it
+/// scene, `method` is the method [`prepare`] returned); the rows before it
 /// have been handed over.
 pub fn run_rows(
     scene: &mut Scene,
     path: &Path,
-    method: &str,
+    method: FreeBodyMethod,
     rows: &mut dyn FnMut(&States, &Names),
 ) -> Result<(), SceneError> {
     let ran = run::<Infallible>(

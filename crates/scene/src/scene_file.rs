@@ -12,7 +12,7 @@ use std::collections::HashSet;
 use std::path::Path;
 
 use glam::DVec3;
-use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, Tolerance, World};
+use kreisel_dynamics::{BodyId, FreeBodyMethod, Tolerance, World};
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -49,8 +49,8 @@ struct RawSimulation {
 pub struct Scene {
     /// The steps and the rows written.
     pub schedule: Schedule,
-    /// The `method` key, a known name; `None` when not given.
-    pub method: Option<String>,
+    /// The `method` key, parsed; `None` when not given.
+    pub method: Option<FreeBodyMethod>,
     /// The bodies, their methods, gravity and `dt`.
     pub world: World,
     /// The bodies' names and ids in file order (distinct names).
@@ -75,15 +75,15 @@ pub fn parse(path: &Path, text: &str) -> Result<Scene, SceneError> {
     parse_with_method(path, text, None)
 }
 
-/// As [`parse`], the world moved by method `override_method` if given (a
-/// known name, `--method`) instead of the scene's `method`.
+/// As [`parse`], the world moved by method `override_method` if given
+/// (`--method`) instead of the scene's `method`.
 ///
 /// # Errors
 /// As [`parse`].
 pub fn parse_with_method(
     path: &Path,
     text: &str,
-    override_method: Option<&str>,
+    override_method: Option<FreeBodyMethod>,
 ) -> Result<Scene, SceneError> {
     let file = SceneFile { path, text };
     let raw: RawScene =
@@ -115,9 +115,9 @@ pub fn parse_with_method(
         ),
     })?;
     let method = match &sim.method {
-        Some(name) => match methods::integrator(name.get_ref()) {
-            Ok(_) => Some(name.get_ref().clone()),
-            Err(message) => return Err(keys.fail(name, &format!("`method`: {message}"))),
+        Some(name) => match name.get_ref().parse::<FreeBodyMethod>() {
+            Ok(method) => Some(method),
+            Err(e) => return Err(keys.fail(name, &format!("`method`: {e}"))),
         },
         None => None,
     };
@@ -131,12 +131,7 @@ pub fn parse_with_method(
     }
     let folder = path.parent().unwrap_or(Path::new(""));
     let mut world = World::try_new(gravity, dt).map_err(|e| file.error(None, &e.to_string()))?;
-    let name = override_method
-        .or(method.as_deref())
-        .unwrap_or(methods::AUTO);
-    let free: FreeBodyMethod = name
-        .parse()
-        .map_err(|e: DynamicsError| file.error(None, &e.to_string()))?;
+    let free = override_method.or(method).unwrap_or_default();
     // A method without a heavy-top version is refused below if a body has
     // a pivot; until then the heavy-top default stands.
     let heavy = free.heavy_top().unwrap_or_default();
@@ -205,11 +200,12 @@ pub fn parse_with_method(
                 .collect(),
         );
     }
-    if let Some(name) = &sim.method
+    if let Some(key) = &sim.method
+        && let Some(method) = method
         && has_pivot
     {
-        methods::heavy_top_integrator(name.get_ref())
-            .map_err(|message| keys.fail(name, &format!("`method`: {message}")))?;
+        methods::heavy_top(method)
+            .map_err(|message| keys.fail(key, &format!("`method`: {message}")))?;
     }
     Ok(Scene {
         schedule,

@@ -4,10 +4,9 @@
 
 use std::path::Path;
 
-use kreisel_dynamics::{ContactMode, DynamicsError, Plan};
+use kreisel_dynamics::{ContactMode, DynamicsError, FreeBodyMethod, Plan};
 
 use crate::error::SceneError;
-use crate::methods::AUTO;
 use crate::numbers::Shortest;
 use crate::scene_file::Scene;
 
@@ -73,7 +72,7 @@ impl BodyStop {
 
     /// The one-line error of a run of `scene` (at `path`, moved by
     /// `method`) that stopped.
-    pub fn into_error(self, scene: &Scene, path: &Path, method: &str) -> SceneError {
+    pub fn into_error(self, scene: &Scene, path: &Path, method: FreeBodyMethod) -> SceneError {
         match self {
             BodyStop::Diverged { body, time, error } => {
                 painleve_on_table(scene, path, body, &error).unwrap_or_else(|| {
@@ -186,7 +185,7 @@ fn diverged(
     scene_path: &std::path::Path,
     failed: &Failed<'_>,
     error: &kreisel_dynamics::DynamicsError,
-    method: &str,
+    method: FreeBodyMethod,
 ) -> SceneError {
     let Failed {
         body,
@@ -234,10 +233,13 @@ fn diverged(
     let hint = if overflow {
         // No step size helps: the numbers outgrow f64.
         "the scene's torques, forces or speeds are too large for f64".to_owned()
-    } else if method == AUTO {
+    } else if method == FreeBodyMethod::Auto {
         "use a smaller dt".to_owned()
     } else {
-        format!("use a smaller dt or the default method ({AUTO})")
+        format!(
+            "use a smaller dt or the default method ({})",
+            FreeBodyMethod::Auto
+        )
     };
     let message = match error {
         DynamicsError::Diverged {
@@ -297,7 +299,9 @@ mod tests {
             source: Box::new(error.clone()),
         });
         assert!(stop.is_event(&scene));
-        let message = stop.into_error(&scene, path, AUTO).to_string();
+        let message = stop
+            .into_error(&scene, path, FreeBodyMethod::Auto)
+            .to_string();
         assert_eq!(
             message,
             format!(
@@ -324,7 +328,9 @@ mod tests {
             time: 0.3,
             source: Box::new(error),
         });
-        let message = stop.into_error(&scene, path, AUTO).to_string();
+        let message = stop
+            .into_error(&scene, path, FreeBodyMethod::Auto)
+            .to_string();
         assert!(
             message.starts_with(
                 "s.toml:14: body `ball`: `contact.mu` = 0.3 of [[body.contact]] #1 is beyond the \

@@ -2,6 +2,7 @@
 //! several bodies, `--output`, and `--list-methods`.
 
 use glam::{DQuat, DVec3};
+use kreisel_dynamics::{FreeBodyMethod, HeavyTopMethod};
 
 use crate::support::{HEADER, body, kreisel, parse_csv, scratch, simulate, simulation};
 
@@ -105,12 +106,13 @@ fn list_methods_names_every_registry_method_and_the_default() {
     let run = kreisel(&["simulate", "--list-methods"]);
     assert_eq!(run.code, Some(0), "{}", run.stderr);
     let lines: Vec<&str> = run.stdout.lines().collect();
-    for name in kreisel_dynamics::METHODS {
+    for method in FreeBodyMethod::ALL {
+        let name = method.name();
         let line = lines
             .iter()
             .find(|l| l.split_whitespace().next() == Some(name))
             .unwrap_or_else(|| panic!("{name} not listed:\n{}", run.stdout));
-        let order = match kreisel_dynamics::method(name).unwrap().order() {
+        let order = match method.integrator().order() {
             u32::MAX => "exact".to_owned(),
             p => p.to_string(),
         };
@@ -128,20 +130,14 @@ fn list_methods_names_every_registry_method_and_the_default() {
     );
     // The first line is a header, then one line per method and `auto`;
     // then a blank line, a heading and one line per heavy-top method.
-    let registry = kreisel_dynamics::METHODS
-        .iter()
-        .filter(|&&n| n != "auto")
-        .count();
-    let heavy = kreisel_dynamics::HEAVY_TOP_METHODS.len();
+    let registry = FreeBodyMethod::ALL.len() - 1;
+    let heavy = HeavyTopMethod::ALL.len();
     assert_eq!(lines.len(), 2 + registry + 2 + heavy, "{}", run.stdout);
     let tail = &lines[2 + registry + 2..];
-    for (line, name) in tail.iter().zip(kreisel_dynamics::HEAVY_TOP_METHODS) {
-        let order = kreisel_dynamics::heavy_top_method(name)
-            .unwrap()
-            .order()
-            .to_string();
+    for (line, method) in tail.iter().zip(HeavyTopMethod::ALL) {
+        let order = method.integrator().order().to_string();
         let fields: Vec<&str> = line.split_whitespace().collect();
-        assert_eq!(&fields[..2], &[name, order.as_str()], "{line}");
+        assert_eq!(&fields[..2], &[method.name(), order.as_str()], "{line}");
     }
 }
 

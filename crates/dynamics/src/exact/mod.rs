@@ -279,11 +279,11 @@ pub(crate) fn uniform_rotation(q0: DQuat, omega: DVec3, t: f64) -> DQuat {
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
-/// use kreisel_dynamics::{integrate, method, PrincipalState, ExactSolution};
+/// use kreisel_dynamics::{integrate, ExactFlow, PrincipalState, ExactSolution};
 /// let moments = DVec3::new(1.0, 2.0, 3.0);
 /// let s0 = PrincipalState { world_from_principal: DQuat::IDENTITY, l_principal: DVec3::new(0.3, 2.0, 0.4) };
 /// let mut s = s0;
-/// integrate(method("exact")?.as_ref(), moments, &mut s, 0.25, 40)?;
+/// integrate(&ExactFlow, moments, &mut s, 0.25, 40)?;
 /// let direct = ExactSolution::try_new(moments, s0)?.state_at(10.0);
 /// assert!(kreisel_kinematics::rotation_angle_between(s.world_from_principal, direct.world_from_principal) < 1e-14);
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
@@ -299,6 +299,11 @@ impl FreeBodyIntegrator for ExactFlow {
     /// `u32::MAX`: no truncation error.
     fn order(&self) -> u32 {
         u32::MAX
+    }
+
+    fn description(&self) -> &'static str {
+        "the exact solution: uniform rotation, symmetric-top closed form, \
+         or Jacobi elliptic functions"
     }
 
     fn step(&self, moments: DVec3, state: &mut PrincipalState, h: f64) {

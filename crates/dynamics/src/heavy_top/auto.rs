@@ -151,6 +151,10 @@ impl HeavyTopIntegrator for HeavyTopAuto {
         8
     }
 
+    fn description(&self) -> &'static str {
+        "the default; splitting8, sub-stepped where dt exceeds its stability limit"
+    }
+
     /// As [`HeavyTopIntegrator::try_step`]; a step it refuses leaves a NaN
     /// state (which [`crate::DivergenceCheck`] reports).
     fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64) {

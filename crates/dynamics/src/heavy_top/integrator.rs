@@ -1,15 +1,22 @@
-//! One stepping interface for the heavy-top integrators, and their string
-//! registry (a thin wrapper over [`HeavyTopMethod`]).
+//! One stepping interface for the heavy-top integrators: each carries its
+//! method's facts (name, order, description), which [`HeavyTopMethod`]
+//! reads.
 
 use super::HeavyTop;
-use crate::{DivergenceCheck, DynamicsError, HeavyTopMethod, PrincipalState, Propagator};
+#[cfg(doc)]
+use crate::HeavyTopMethod;
+use crate::{DivergenceCheck, DynamicsError, PrincipalState, Propagator};
 
 /// A one-step method for the heavy top.
 pub trait HeavyTopIntegrator: Sync {
-    /// The method's registry name (e.g. `"strang"`).
+    /// The method's name (e.g. `"strang"`), which [`HeavyTopMethod`]
+    /// parses and writes.
     fn name(&self) -> &'static str;
     /// The order of the method (global error `O(hᵖ)`).
     fn order(&self) -> u32;
+    /// One line about the method, as `kreisel simulate --list-methods`
+    /// shows it.
+    fn description(&self) -> &'static str;
     /// Advances `state` by `h` seconds.
     ///
     /// Infallible (the inner loop of every run): a step the method cannot
@@ -89,13 +96,13 @@ impl<M: HeavyTopIntegrator + ?Sized> Propagator for Stepping<'_, M> {
 ///
 /// ```
 /// use glam::{DQuat, DVec3};
-/// use kreisel_dynamics::{HeavyTop, PrincipalState, heavy_top_method, integrate_heavy_top};
+/// use kreisel_dynamics::{HeavyTop, HeavyTopMethod, PrincipalState, integrate_heavy_top};
 /// let top = HeavyTop::try_from_principal(DVec3::new(0.02, 0.02, 0.01), DVec3::new(0.0, 0.0, 0.1), 1.0, DVec3::new(0.0, 0.0, -9.81))?;
 /// let mut s = PrincipalState { world_from_principal: DQuat::from_rotation_x(0.3), l_principal: DVec3::new(0.0, 0.0, 0.5) };
 /// let e0 = top.energy(&s);
-/// integrate_heavy_top(heavy_top_method("splitting8")?.as_ref(), &top, &mut s, 1e-3, 1000)?;
+/// integrate_heavy_top(HeavyTopMethod::Splitting8.integrator(), &top, &mut s, 1e-3, 1000)?;
 /// assert!((top.energy(&s) - e0).abs() < 1e-13 * e0);
-/// assert!(integrate_heavy_top(heavy_top_method("rk4")?.as_ref(), &top, &mut s, -1.0, 1).is_err());
+/// assert!(integrate_heavy_top(HeavyTopMethod::Rk4.integrator(), &top, &mut s, -1.0, 1).is_err());
 /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
 /// ```
 pub fn integrate_heavy_top(
@@ -117,39 +124,4 @@ pub fn integrate_heavy_top(
         *state = next;
     }
     Ok(())
-}
-
-/// The names the heavy-top registry knows, in [`HeavyTopMethod::ALL`]'s
-/// order: `auto`, the RK4 baseline, the Strang splitting and its
-/// compositions. A thin wrapper over [`HeavyTopMethod::name`].
-///
-/// ```
-/// use kreisel_dynamics::{HEAVY_TOP_METHODS, HeavyTopMethod};
-/// assert_eq!(HEAVY_TOP_METHODS, HeavyTopMethod::ALL.map(HeavyTopMethod::name));
-/// ```
-pub const HEAVY_TOP_METHODS: [&str; HeavyTopMethod::ALL.len()] = {
-    let mut names = [""; HeavyTopMethod::ALL.len()];
-    let mut k = 0;
-    while k < names.len() {
-        names[k] = HeavyTopMethod::ALL[k].name();
-        k += 1;
-    }
-    names
-};
-
-/// The heavy-top integrator registered under `name`: a thin wrapper over
-/// [`HeavyTopMethod`]'s `FromStr` and [`HeavyTopMethod::integrator`].
-///
-/// # Errors
-/// [`DynamicsError::UnknownMethod`] listing the known names.
-///
-/// ```
-/// use kreisel_dynamics::heavy_top_method;
-/// assert_eq!(heavy_top_method("splitting6")?.order(), 6);
-/// assert!(heavy_top_method("exact").is_err());
-/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
-/// ```
-pub fn heavy_top_method(name: &str) -> Result<Box<dyn HeavyTopIntegrator>, DynamicsError> {
-    name.parse::<HeavyTopMethod>()
-        .map(HeavyTopMethod::integrator)
 }

@@ -13,9 +13,7 @@ use glam::{DQuat, DVec3};
 use kreisel_inertia::MassProperties;
 
 pub use self::auto::{HeavyTopAuto, MAX_SUBSTEPS};
-pub use self::integrator::{
-    HEAVY_TOP_METHODS, HeavyTopIntegrator, heavy_top_method, integrate_heavy_top,
-};
+pub use self::integrator::{HeavyTopIntegrator, integrate_heavy_top};
 pub use self::rk4::HeavyTopRk4;
 pub use self::splitting::HeavyTopSplitting;
 pub use self::taylor::{HeavyTopTaylor, TAYLOR_MAX_ORDER};

@@ -50,6 +50,10 @@ impl HeavyTopIntegrator for HeavyTopRk4 {
         4
     }
 
+    fn description(&self) -> &'static str {
+        "classical Runge-Kutta on L and q with the gravity torque, the baseline"
+    }
+
     fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64) {
         let (q, l) = (state.world_from_principal, state.l_principal);
         let (k1q, k1l) = field(top, q, l);

@@ -76,6 +76,7 @@ pub struct HeavyTopSplitting {
     order: u32,
     coefficients: &'static CompositionCoefficients,
     stability_limit: f64,
+    description: &'static str,
 }
 
 impl HeavyTopSplitting {
@@ -85,6 +86,8 @@ impl HeavyTopSplitting {
         order: 2,
         coefficients: &STRANG,
         stability_limit: 2.0,
+        description: "half gravity kick, exact free-body flow, half kick \
+                      (PDMV10 for 3 distinct moments)",
     };
     /// Suzuki's 5-stage composition (`"splitting4"`), order 4.
     pub const ORDER_4: Self = Self {
@@ -92,6 +95,7 @@ impl HeavyTopSplitting {
         order: 4,
         coefficients: &SUZUKI_4,
         stability_limit: 2.721,
+        description: "Suzuki's 5-stage symmetric composition of strang",
     };
     /// Kahan & Li's 9-stage composition (`"splitting6"`), order 6.
     pub const ORDER_6: Self = Self {
@@ -99,6 +103,7 @@ impl HeavyTopSplitting {
         order: 6,
         coefficients: &KAHAN_LI_6,
         stability_limit: 2.533,
+        description: "Kahan and Li's 9-stage symmetric composition of strang",
     };
     /// Kahan & Li's 17-stage composition (`"splitting8"`), order 8.
     pub const ORDER_8: Self = Self {
@@ -106,6 +111,7 @@ impl HeavyTopSplitting {
         order: 8,
         coefficients: &KAHAN_LI_8,
         stability_limit: 3.096,
+        description: "Kahan and Li's 17-stage symmetric composition of strang",
     };
 
     /// All of them, lowest order first.
@@ -139,6 +145,10 @@ impl HeavyTopIntegrator for HeavyTopSplitting {
 
     fn order(&self) -> u32 {
         self.order
+    }
+
+    fn description(&self) -> &'static str {
+        self.description
     }
 
     fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64) {

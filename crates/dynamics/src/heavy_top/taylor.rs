@@ -399,6 +399,10 @@ impl HeavyTopIntegrator for HeavyTopTaylor {
         self.order as u32
     }
 
+    fn description(&self) -> &'static str {
+        "Taylor series of the whole heavy top, sub-stepped within its reach"
+    }
+
     /// As [`HeavyTopIntegrator::try_step`]; a step it refuses leaves a NaN
     /// state (which [`crate::DivergenceCheck`] reports).
     fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64) {

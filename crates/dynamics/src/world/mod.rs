@@ -74,7 +74,6 @@ mod motion;
 mod next_event;
 mod plan;
 mod reads;
-mod registry;
 mod setters;
 mod state;
 mod stepping;
@@ -571,7 +570,7 @@ impl World {
                         (plan, motion) = Motion::free(method, moments, state, now)?;
                     }
                 }
-                let name = registry::free_body(method).name();
+                let name = method.integrator().name();
                 let check = DivergenceCheck::free_body(name, moments, &state);
                 (plan, motion, Some(check), choice)
             }
@@ -649,7 +648,7 @@ impl World {
             .and_then(|tol| tolerance::choose_taylor(&tol, top, &state, self.dt(), default_work))
             .filter(|taylor| chosen.as_ref().is_none_or(|(_, c)| taylor.work < c.work));
         if let Some(choice) = series {
-            let integrator = &registry::HEAVY_TAYLOR;
+            let integrator = &crate::HeavyTopTaylor::DEFAULT;
             let motion = Motion::HeavyTop { state, integrator };
             return Ok((Plan::HeavyTopSeries, motion, Some(choice)));
         }

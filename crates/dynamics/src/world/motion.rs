@@ -7,7 +7,6 @@ use std::fmt;
 
 use super::ground_motion::GroundMotion;
 use super::plan::Plan;
-use super::registry;
 use super::table_run::TableRun;
 use super::uniform::UniformBatch;
 use crate::elliptic::dd::Dd;
@@ -128,7 +127,7 @@ impl Motion {
         start: Dd,
     ) -> Result<(Plan, Motion), DynamicsError> {
         if method.resolve() != FreeBodyMethod::Exact {
-            let propagator = registry::free_body(method).propagator(moments, state);
+            let propagator = method.integrator().propagator(moments, state);
             return Ok((Plan::Stepping(method), Motion::Stepping(propagator)));
         }
         let solution = ExactSolution::try_new(moments, state)?;
@@ -136,7 +135,8 @@ impl Motion {
             // ω t = 0 at every t: the exact solution at any time is its
             // value at 0, computed once.
             let settled = solution.state_at(0.0);
-            DivergenceCheck::free_body("exact", moments, &state).check(&settled, 0.0)?;
+            DivergenceCheck::free_body(FreeBodyMethod::Exact.name(), moments, &state)
+                .check(&settled, 0.0)?;
             return Ok((Plan::Resting, Motion::Resting { state, settled }));
         }
         let plan = match solution.kind() {
@@ -167,7 +167,7 @@ impl Motion {
 
     /// The plan and motion of a heavy top.
     pub(crate) fn heavy_top(method: HeavyTopMethod, state: PrincipalState) -> (Plan, Motion) {
-        let integrator = registry::heavy_top(method);
+        let integrator = method.integrator();
         (
             Plan::HeavyTop(method),
             Motion::HeavyTop { state, integrator },

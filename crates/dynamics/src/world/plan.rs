@@ -18,7 +18,6 @@
 
 use std::fmt;
 
-use super::registry;
 use crate::{DynamicsError, ForcedSplitting, FreeBodyMethod, HeavyTopMethod};
 
 /// What a body of a [`crate::World`] is and how it is moved (see
@@ -181,7 +180,7 @@ impl Plan {
             FreeBodyMethod::Splitting8 => Ok(ForcedSplitting::ORDER_8),
             other => Err(DynamicsError::MethodTakesNoInputs {
                 kind: "free-body",
-                method: registry::free_body(other).name(),
+                method: other.integrator().name(),
                 known: TAKES_INPUTS,
             }),
         }
@@ -217,7 +216,7 @@ impl Plan {
             HeavyTopMethod::Splitting6 => Ok(ForcedSplitting::ORDER_6),
             other => Err(DynamicsError::MethodTakesNoInputs {
                 kind: "heavy-top",
-                method: registry::heavy_top(other).name(),
+                method: other.integrator().name(),
                 known: TOP_TAKES_INPUTS,
             }),
         }

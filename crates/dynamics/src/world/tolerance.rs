@@ -27,7 +27,6 @@ use std::fmt;
 
 use glam::DVec3;
 
-use super::registry;
 use crate::{
     DynamicsError, ExactSolution, ForcedBody, ForcedSplitting, ForcedState, FreeBodyMethod,
     HeavyTop, HeavyTopIntegrator, PrincipalState,
@@ -265,7 +264,7 @@ pub(crate) fn choose_free(
         Choice {
             tolerance: tol.attitude,
             horizon: tol.horizon,
-            method: "exact",
+            method: FreeBodyMethod::Exact.name(),
             substeps: 1,
             predicted: 0.0,
             work: exact_work,
@@ -280,7 +279,7 @@ pub(crate) fn choose_free(
         if work >= best.1.work {
             continue;
         }
-        let integrator = registry::free_body(method);
+        let integrator = method.integrator();
         let local = (0..4)
             .map(|k| {
                 let t = f64::from(k) * tol.horizon / 4.0;
@@ -483,7 +482,7 @@ pub(crate) fn choose_taylor(
     if !tol.above_rounding() {
         return None;
     }
-    let taylor = &registry::HEAVY_TAYLOR;
+    let taylor = &crate::HeavyTopTaylor::DEFAULT;
     let steps = ((tol.horizon / dt).ceil() as usize).clamp(1, PROBES);
     let mut s = *state;
     let mut worst: f64 = 0.0;
