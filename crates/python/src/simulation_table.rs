@@ -7,12 +7,11 @@
 
 use glam::DVec3;
 use kreisel_dynamics::{
-    Body, ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, SphereContact,
-    Support, TableContact, TableEvent, TableEventKind, World,
+    ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, SphereContact,
+    TableContact, TableEvent, TableEventKind, World,
 };
 use kreisel_scene::events::{kind_name, merged};
 use kreisel_scene::run::Names;
-use kreisel_scene::table_start::sliding_at_start;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PySequence, PyString, PyTuple};
@@ -205,15 +204,6 @@ pub fn contacts(value: &Bound<'_, PyAny>) -> PyResult<Vec<TableContact>> {
             })
         })
         .collect()
-}
-
-/// The contact of a body on the table that Painlevé's case at its start
-/// is about, and its `mu` ([`sliding_at_start`] of its support).
-pub fn painleve_contact(body: &Body) -> (usize, f64) {
-    let Support::Table { position, .. } = body.support() else {
-        return (0, f64::NAN);
-    };
-    sliding_at_start(body.table_contacts(), position, body.world_from_body())
 }
 
 /// The fields after `kind` of an event: the speeds of an impact, the

@@ -5,16 +5,16 @@
 //! numpy arrays. Every number is the engine's; this file converts and
 //! names errors.
 
-use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{Body, BodyId, DynamicsError, FreeBodyMethod, Inputs, World};
-use kreisel_inertia::MassProperties;
+use glam::{DQuat, DVec3};
+use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, Inputs, World};
 use kreisel_kinematics::try_normalize_quat;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+use kreisel_scene::body_request::{Attitude, BodyKey, BodyKeyProblem, BodyRequest, Inertia};
+use kreisel_scene::contact_keys::Contacts;
 use kreisel_scene::numbers::Shortest;
-use kreisel_scene::table_start::touching;
 
 use super::table;
 use crate::arguments::{finite, int, integer, matrix3, named, numbers};
@@ -106,6 +106,82 @@ fn world_error(e: DynamicsError) -> PyErr {
     match argument_of(&e) {
         Some(name) => named(name)(e),
         None => error(e),
+    }
+}
+
+/// The Python keyword of a body's key.
+fn keyword(key: BodyKey) -> &'static str {
+    match key {
+        BodyKey::Body => "body",
+        BodyKey::Mass => "mass",
+        BodyKey::Moments => "moments",
+        BodyKey::Tensor => "inertia",
+        BodyKey::Mesh => "mesh",
+        BodyKey::Attitude => "attitude",
+        BodyKey::Omega => "omega_body",
+        BodyKey::Position => "position",
+        BodyKey::Velocity => "velocity",
+        BodyKey::Pivot => "pivot",
+        BodyKey::Torque => "torque",
+        BodyKey::TorqueBody => "torque_body",
+        BodyKey::Force => "force",
+        BodyKey::AngularDamping => "angular_damping",
+        BodyKey::Contacts => "contacts",
+    }
+}
+
+/// The one line of a problem with `add_body`'s keywords.
+fn key_error(problem: BodyKeyProblem) -> PyErr {
+    match problem {
+        BodyKeyProblem::NoInertia | BodyKeyProblem::TwoInertias { .. } => {
+            error("give exactly one of moments (principal, kg m^2) and inertia (3 x 3 tensor)")
+        }
+        BodyKeyProblem::MissingMass => error("mass: is missing"),
+        BodyKeyProblem::NotPositive { key, value } => {
+            error(format!("{}: {value} kg: must be positive", keyword(key)))
+        }
+        BodyKeyProblem::NotAQuaternion => {
+            error("attitude: must be a quaternion w, x, y, z, not zero")
+        }
+        BodyKeyProblem::PivotWithContacts => error(
+            "pivot cannot be given with contacts: a body turns about a pivot or is on the \
+             table, not both",
+        ),
+        BodyKeyProblem::VelocityWithPivot => {
+            error("velocity cannot be given with pivot: the pivot is fixed")
+        }
+        BodyKeyProblem::LoadsOnTable { key } => error(format!(
+            "{}: applied loads are not modelled for a body on the table (contacts): only \
+             gravity and the contacts act",
+            keyword(key)
+        )),
+        BodyKeyProblem::Damping { value } => error(format!(
+            "angular_damping: must be zero or positive and finite (N m s), got {}",
+            Shortest(value)
+        )),
+        BodyKeyProblem::InsideTable { contact, gap, .. } => error(format!(
+            "position: contacts[{contact}] is below the table at the start (its lowest point \
+             at z = {} m): a body on the table starts above it or touching it",
+            Shortest(gap)
+        )),
+        BodyKeyProblem::Painleve {
+            contact,
+            mu,
+            error: e,
+        } => error(format!(
+            "contacts[{contact}].mu: {} is beyond the Painlevé bound of its slip ({e}): no \
+             normal force keeps the sliding contact on the table",
+            Shortest(mu)
+        )),
+        BodyKeyProblem::Library {
+            key: BodyKey::Tensor,
+            error: DynamicsError::InertiaTensor { reason },
+        } => error(format!("inertia: {reason}")),
+        BodyKeyProblem::Library { error: e, .. } => world_error(e),
+        // Only a scene's bodies stand on the ground plane.
+        other @ (BodyKeyProblem::VelocityWithRolling
+        | BodyKeyProblem::VelocityNotHorizontal { .. }
+        | BodyKeyProblem::WatchedTouching { .. }) => error(format!("{other:?}")),
     }
 }
 
@@ -212,87 +288,63 @@ impl PyWorld {
         contacts: Arg<'_, '_>,
     ) -> PyResult<usize> {
         guard(|| {
+            let given = |key, value: Arg<'_, '_>| value.map(|_| (key, ()));
+            let inertias: Vec<(BodyKey, ())> = [
+                given(BodyKey::Moments, moments),
+                given(BodyKey::Tensor, inertia),
+            ]
+            .into_iter()
+            .flatten()
+            .collect();
             let mass = finite("mass", mass)?;
-            if mass <= 0.0 {
-                return Err(error(format!("mass: {mass} kg: must be positive")));
-            }
-            let builder = match (moments, inertia) {
-                (Some(m), None) => Body::from_principal_moments(mass, vector("moments", Some(m))?),
-                (None, Some(rows)) => {
-                    let tensor = DMat3::from_cols_array_2d(&matrix3("inertia", rows)?).transpose();
-                    let props = MassProperties::try_new(mass, DVec3::ZERO, tensor)
-                        .map_err(|e| error(format!("inertia: {e}")))?;
-                    Body::from_mass_properties(props)
-                }
-                _ => {
-                    return Err(error(
-                        "give exactly one of moments (principal, kg m^2) and inertia (3 x 3 tensor)",
-                    ));
-                }
+            let (key, ()) =
+                BodyRequest::one_inertia(&inertias, ()).map_err(|e| key_error(e.problem))?;
+            let inertia = match (moments, inertia) {
+                (Some(m), _) => Inertia::Moments(vector("moments", Some(m))?),
+                (None, Some(rows)) => Inertia::Tensor(matrix3("inertia", rows)?),
+                (None, None) => return Err(key_error(BodyKeyProblem::NoInertia)),
             };
-            let attitude = attitude.map_or(Ok(DQuat::IDENTITY), quaternion)?;
-            let builder = builder
-                .world_from_body(attitude)
-                .omega_body(vector("omega_body", omega_body)?);
-            let given_position = position;
-            let position = vector("position", position)?;
+            let vector_of = |name, value: Arg<'_, '_>| -> PyResult<Option<(DVec3, ())>> {
+                value.map(|v| Ok((vector(name, Some(v))?, ()))).transpose()
+            };
+            let attitude = attitude
+                .map(|q| numbers::<4>("attitude", q).map(|q| (Attitude::Quaternion(q), ())))
+                .transpose()?;
+            let omega_body = vector_of("omega_body", omega_body)?;
+            let position = vector_of("position", position)?;
             let loads = [
-                ("torque", torque),
-                ("torque_body", torque_body),
-                ("force", force),
-                ("angular_damping", angular_damping),
+                vector_of("torque", torque)?,
+                vector_of("torque_body", torque_body)?,
+                vector_of("force", force)?,
             ];
-            let builder = match (contacts, pivot, velocity) {
-                (Some(_), Some(_), _) => {
-                    return Err(error(
-                        "pivot cannot be given with contacts: a body turns about a pivot or \
-                         is on the table, not both",
-                    ));
-                }
-                (Some(c), None, v) => {
-                    if let Some((name, _)) = loads.iter().find(|(_, given)| given.is_some()) {
-                        return Err(error(format!(
-                            "{name}: applied loads are not modelled for a body on the table \
-                             (contacts): only gravity and the contacts act"
-                        )));
-                    }
-                    let contacts = table::contacts(c)?;
-                    let position = match given_position {
-                        Some(_) => position,
-                        None => touching(&contacts, attitude.normalize()),
-                    };
-                    builder.on_table(position, vector("velocity", v)?, &contacts)
-                }
-                (None, Some(_), Some(_)) => {
-                    return Err(error(
-                        "velocity cannot be given with pivot: the pivot is fixed",
-                    ));
-                }
-                (None, Some(p), None) => builder.pivot(vector("pivot", Some(p))?, position),
-                (None, None, v) => builder.free(position, vector("velocity", v)?),
+            let angular_damping = angular_damping
+                .map(|d| finite("angular_damping", d).map(|d| (d, ())))
+                .transpose()?;
+            let contacts = match (contacts, pivot) {
+                (Some(c), None) => Some((Contacts::Table(table::contacts(c)?), ())),
+                // With a pivot, the conflict is the error, whatever the contacts.
+                (Some(_), Some(_)) => Some((Contacts::Table(Vec::new()), ())),
+                (None, _) => None,
             };
-            let inputs = inputs(torque, torque_body, force, angular_damping)?;
-            let body = builder
-                .try_build()
-                .and_then(|b| b.with_inputs(inputs))
-                .map_err(world_error)?;
-            let sliding = table::painleve_contact(&body);
-            let id = self.world.add(body).map_err(|e| match e {
-                e @ DynamicsError::ContactIndeterminate { .. } => {
-                    let (i, mu) = sliding;
-                    error(format!(
-                        "contacts[{i}].mu: {} is beyond the Painlevé bound of its slip ({e}): no \
-                         normal force keeps the sliding contact on the table",
-                        Shortest(mu)
-                    ))
-                }
-                DynamicsError::BodyInsideTable { contact, gap } => error(format!(
-                    "position: contacts[{contact}] is below the table at the start (its lowest \
-                     point at z = {} m): a body on the table starts above it or touching it",
-                    Shortest(gap)
-                )),
-                other => world_error(other),
-            })?;
+            let [torque, torque_body, force] = loads;
+            let request = BodyRequest {
+                body: (),
+                mass: Some((mass, ())),
+                inertia: (key, inertia, ()),
+                attitude,
+                omega_body,
+                position,
+                velocity: vector_of("velocity", velocity)?,
+                pivot: vector_of("pivot", pivot)?,
+                torque,
+                torque_body,
+                force,
+                angular_damping,
+                contacts,
+            };
+            let (id, _) = request
+                .add_to(&mut self.world)
+                .map_err(|e| key_error(e.problem))?;
             self.ids.push(id);
             Ok(self.ids.len() - 1)
         })

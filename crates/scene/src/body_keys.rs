@@ -1,29 +1,31 @@
 //! One `[[body]]` of the scene: its inertia (moments, a tensor or a mesh),
 //! initial attitude, spin, support (free, a pivot, or the ground with a
-//! `[body.contact]` table, `contact.rs`) and applied inputs (torques, a
-//! force, damping), checked key by key and added to the scene's [`World`]
-//! (which holds the physics).
+//! `[body.contact]` table, `contact_keys.rs`) and applied inputs (torques,
+//! a force, damping), read key by key (types, spans, the mesh, Euler
+//! angles) into a [`BodyRequest`], which checks them together and adds the
+//! body to the scene's [`World`] (`body_request.rs`, shared with Python's
+//! `World.add_body`); this file words its problems at their lines.
 
 #![forbid(unsafe_code)]
 
 use std::io::Write;
 use std::path::Path;
 
-use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{
-    Body, BodyBuilder, BodyId, DynamicsError, Friction, Inputs, Plan, TableContact, World,
-};
+use glam::DVec3;
+use kreisel_dynamics::{BodyId, DynamicsError, World};
 use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
 use kreisel_inertia::{MassProperties, Material};
-use kreisel_kinematics::{EulerSequence, try_normalize_quat};
+use kreisel_kinematics::EulerSequence;
 use serde::Deserialize;
 use toml::Spanned;
 
+use crate::body_request::{
+    Attitude, BodyKey, BodyKeyError, BodyKeyProblem, BodyRequest, Given, Inertia,
+};
 use crate::contact_keys::{self as contact, Contacts, RawContacts};
 use crate::error::SceneError;
 use crate::numbers::Shortest;
 use crate::scene_keys::{Keys, SceneFile};
-use crate::table_start::{sliding_at_start, touching};
 
 /// A `[[body]]` table as written.
 #[derive(Debug, Deserialize)]
@@ -95,6 +97,10 @@ impl RawBody {
 /// Checks body number `number` (1-based, for the default name) and adds it
 /// to `world`; mesh paths are relative to `folder`. Returns its name and id.
 ///
+/// The keys' values are read here (types, finite numbers, the mesh, Euler
+/// angles, the contact tables); what they must satisfy together is
+/// checked, and the body built and added, by [`BodyRequest::add_to`].
+///
 /// # Errors
 /// [`SceneError::Scene`] naming the line and key of the first problem.
 pub fn add_body(
@@ -110,111 +116,141 @@ pub fn add_body(
         None => format!("body{number}"),
     };
     let keys = Keys::new(file, format!("body `{name}`: "));
-    let inertia = inertia(&keys, raw, folder)?;
-    let attitude = attitude(&keys, b)?;
-    let omega = keys.vector("angular_velocity", &b.angular_velocity)?;
-    let position = optional_vector(&keys, "position", &b.position)?;
-    let velocity = optional_vector(&keys, "velocity", &b.velocity)?;
-    let (inputs, first_input) = inputs(&keys, b)?;
-    let builder = inertia.builder.world_from_body(attitude).omega_body(omega);
-    // A body on the table: its contacts and the start of its centre of mass.
-    let mut on_table: Option<(Vec<TableContact>, DVec3)> = None;
-    let builder = match (&b.contact, &b.pivot) {
-        (Some(_), Some(pivot)) => {
-            let message = "`pivot` cannot be given with `contact`: a body turns about a \
-                           pivot or stands on the ground, not both";
-            return Err(keys.fail(pivot, message));
-        }
-        (Some(contact), None) => match contact::check(&keys, contact)? {
-            Contacts::Table(contacts) => {
-                if let Some((key, span)) = &first_input {
-                    let message = format!(
-                        "`{key}`: applied loads are not modelled for a body on the table \
-                         (friction \"coulomb\"): only gravity and the contacts act"
-                    );
-                    return Err(keys.fail_at(span.clone(), &message));
-                }
-                // Without `position`: above the origin, its lowest shape touching.
-                let position = match &b.position {
-                    Some(_) => position,
-                    None => touching(&contacts, attitude),
-                };
-                let built = builder.on_table(position, velocity, &contacts);
-                on_table = Some((contacts, position));
-                built
-            }
-            Contacts::Ground(contacts) => {
-                let checked = contacts.first;
-                if let Some(v) = &b.velocity {
-                    if checked.friction == Friction::Rolling {
-                        let message = "`velocity` cannot be given with friction \"rolling\": \
-                                   it follows from rolling without slipping";
-                        return Err(keys.fail(v, message));
-                    }
-                    if velocity.z != 0.0 {
-                        let message = format!(
-                            "`velocity` of a body on the ground must be horizontal, \
-                         [vx, vy, 0], got vz = {}: the vertical velocity follows from \
-                         the spin",
-                            Shortest(velocity.z)
-                        );
-                        return Err(keys.fail(v, &message));
-                    }
-                }
-                builder
-                    .on_ground_at(
-                        checked.shape,
-                        checked.friction,
-                        position.truncate(),
-                        velocity.truncate(),
-                    )
-                    .other_contacts(&contacts.others)
-            }
-        },
-        (None, Some(pivot)) => {
-            if let Some(v) = &b.velocity {
-                let message = "`velocity` cannot be given with `pivot`: the pivot is fixed";
-                return Err(keys.fail(v, message));
-            }
-            builder.pivot(keys.vector("pivot", pivot)?, position)
-        }
-        (None, None) => builder.free(position, velocity),
+    let fail = |e: BodyKeyError<Span>| body_error(&keys, b, e);
+    let given: Vec<(BodyKey, Span)> = [
+        (BodyKey::Moments, b.inertia.as_ref().map(Spanned::span)),
+        (
+            BodyKey::Tensor,
+            b.inertia_tensor.as_ref().map(Spanned::span),
+        ),
+        (BodyKey::Mesh, b.mesh.as_ref().map(Spanned::span)),
+    ]
+    .into_iter()
+    .filter_map(|(key, span)| span.map(|s| (key, s)))
+    .collect();
+    let (key, span) = BodyRequest::one_inertia(&given, raw.span()).map_err(fail)?;
+    let inertia = (key, inertia(&keys, raw, folder)?, span);
+    let spanned = |v: &Option<Spanned<[f64; 3]>>, key| -> Result<Given<DVec3, Span>, SceneError> {
+        v.as_ref()
+            .map(|v| Ok((keys.vector(key, v)?, v.span())))
+            .transpose()
     };
-    let state_error = |e: DynamicsError| keys.fail(&b.angular_velocity, &e.to_string());
-    let body = builder.try_build().map_err(|e| match e {
-        DynamicsError::InvalidState { .. } => state_error(e),
-        other => keys.fail_at(inertia.span.clone(), &format!("`{}`: {other}", inertia.key)),
-    })?;
-    // Checked above: finite, damping not negative.
-    let body = body
-        .with_inputs(inputs)
-        .map_err(|e| keys.fail(raw, &e.to_string()))?;
-    let id = world
-        .add(body)
-        .map_err(|e| match (e, &b.pivot, &b.contact) {
-            (DynamicsError::OtherContactTouching { contact: i, gap }, _, Some(contact)) => {
-                watched_touching(&keys, contact, i, gap)
-            }
-            (DynamicsError::BodyInsideTable { contact: i, gap }, _, Some(contact)) => {
-                inside_table(&keys, b.position.as_ref(), contact, i, gap)
-            }
-            (e @ DynamicsError::ContactIndeterminate { .. }, _, Some(contact)) => {
-                painleve_at_start(&keys, contact, on_table.as_ref(), attitude, &e)
-            }
-            (e, _, Some(contact)) => keys.fail(contact, &format!("`contact`: {e}")),
-            (e @ DynamicsError::InvalidState { .. }, _, _) => state_error(e),
-            (e @ DynamicsError::MethodTakesNoInputs { .. }, _, _) => match &first_input {
-                Some((key, span)) => keys.fail_at(span.clone(), &format!("`{key}`: {e}")),
-                None => keys.fail(raw, &e.to_string()),
-            },
-            (e, Some(pivot), _) => keys.fail(pivot, &format!("`pivot`: {e}")),
-            (e, None, _) => keys.fail(raw, &e.to_string()),
-        })?;
-    let on_ground = matches!(world.plan(id), Some(Plan::OnGround { .. }));
+    let request = BodyRequest {
+        body: raw.span(),
+        mass: b.mass.as_ref().map(|m| (*m.get_ref(), m.span())),
+        inertia,
+        attitude: attitude(&keys, b)?,
+        omega_body: Some((
+            keys.vector("angular_velocity", &b.angular_velocity)?,
+            b.angular_velocity.span(),
+        )),
+        position: spanned(&b.position, "position")?,
+        velocity: spanned(&b.velocity, "velocity")?,
+        torque: spanned(&b.torque, "torque")?,
+        torque_body: spanned(&b.torque_body, "torque_body")?,
+        force: spanned(&b.force, "force")?,
+        angular_damping: b.angular_damping.as_ref().map(|c| (*c.get_ref(), c.span())),
+        pivot: match (&b.pivot, &b.contact) {
+            (Some(p), None) => spanned(&b.pivot, "pivot")?.or(Some((DVec3::ZERO, p.span()))),
+            // With `contact`, the conflict is the error, whatever the value.
+            (Some(p), Some(_)) => Some((DVec3::ZERO, p.span())),
+            (None, _) => None,
+        },
+        contacts: match (&b.contact, &b.pivot) {
+            (Some(c), None) => Some((contact::check(&keys, c)?, c.span())),
+            (Some(c), Some(_)) => Some((Contacts::Table(Vec::new()), c.span())),
+            (None, _) => None,
+        },
+    };
+    let (id, on_ground) = request.add_to(world).map_err(fail)?;
     if let (true, Some(given)) = (on_ground, &b.position) {
         check_height(&keys, given, world, id)?;
     }
     Ok((name, id))
+}
+
+/// A span of the scene's text.
+type Span = std::ops::Range<usize>;
+
+/// The scene's words for `key`.
+fn key_name(key: BodyKey) -> &'static str {
+    match key {
+        BodyKey::Body => "body",
+        BodyKey::Mass => "mass",
+        BodyKey::Moments => "inertia",
+        BodyKey::Tensor => "inertia_tensor",
+        BodyKey::Mesh => "mesh",
+        BodyKey::Attitude => "orientation",
+        BodyKey::Omega => "angular_velocity",
+        BodyKey::Position => "position",
+        BodyKey::Velocity => "velocity",
+        BodyKey::Pivot => "pivot",
+        BodyKey::Torque => "torque",
+        BodyKey::TorqueBody => "torque_body",
+        BodyKey::Force => "force",
+        BodyKey::AngularDamping => "angular_damping",
+        BodyKey::Contacts => "contact",
+    }
+}
+
+/// The one line of a problem with body `b`'s keys, at its line.
+fn body_error(keys: &Keys<'_>, b: &RawBody, e: BodyKeyError<Span>) -> SceneError {
+    const ONE_OF: &str = "use exactly one of `inertia`, `inertia_tensor` and `mesh`";
+    let at = e.at;
+    let message = match e.problem {
+        BodyKeyProblem::NoInertia => format!("no inertia given: {ONE_OF}"),
+        BodyKeyProblem::TwoInertias { first, second } => format!(
+            "both `{}` and `{}` given: {ONE_OF}",
+            key_name(first),
+            key_name(second)
+        ),
+        BodyKeyProblem::MissingMass => "`mass` (kg) is missing".to_owned(),
+        BodyKeyProblem::NotPositive { key, value } => format!(
+            "`{}` must be positive and finite, got {}",
+            key_name(key),
+            Shortest(value)
+        ),
+        BodyKeyProblem::NotAQuaternion => {
+            "`orientation` must be a quaternion w, x, y, z of finite numbers, not zero".to_owned()
+        }
+        BodyKeyProblem::PivotWithContacts => "`pivot` cannot be given with `contact`: a body \
+             turns about a pivot or stands on the ground, not both"
+            .to_owned(),
+        BodyKeyProblem::VelocityWithPivot => {
+            "`velocity` cannot be given with `pivot`: the pivot is fixed".to_owned()
+        }
+        BodyKeyProblem::VelocityWithRolling => "`velocity` cannot be given with friction \
+             \"rolling\": it follows from rolling without slipping"
+            .to_owned(),
+        BodyKeyProblem::VelocityNotHorizontal { vz } => format!(
+            "`velocity` of a body on the ground must be horizontal, [vx, vy, 0], got vz = {}: \
+             the vertical velocity follows from the spin",
+            Shortest(vz)
+        ),
+        BodyKeyProblem::LoadsOnTable { key } => format!(
+            "`{}`: applied loads are not modelled for a body on the table (friction \
+             \"coulomb\"): only gravity and the contacts act",
+            key_name(key)
+        ),
+        BodyKeyProblem::Damping { value } => format!(
+            "`angular_damping` must be zero or positive and finite (N m s), got {}",
+            Shortest(value)
+        ),
+        BodyKeyProblem::InsideTable { contact, gap, .. } => {
+            return inside_table(keys, b.position.as_ref(), b.contact.as_ref(), contact, gap);
+        }
+        BodyKeyProblem::WatchedTouching { index, gap } => {
+            return watched_touching(keys, b.contact.as_ref(), index, gap);
+        }
+        BodyKeyProblem::Painleve { contact, mu, error } => {
+            return painleve_at_start(keys, b.contact.as_ref(), contact, mu, &error);
+        }
+        BodyKeyProblem::Library { key, error } => match key {
+            BodyKey::Body | BodyKey::Omega => error.to_string(),
+            other => format!("`{}`: {error}", key_name(other)),
+        },
+    };
+    keys.fail_at(at, &message)
 }
 
 /// The error for further contact `index` (0-based among the watched
@@ -222,14 +258,15 @@ pub fn add_body(
 /// at its table's line.
 fn watched_touching(
     keys: &Keys<'_>,
-    contacts: &Spanned<RawContacts>,
+    contacts: Option<&Spanned<RawContacts>>,
     index: usize,
     gap: f64,
 ) -> SceneError {
-    let tables = contact::tables(contacts);
-    let span = tables
-        .get(index + 1)
-        .map_or(contacts.span(), |(_, span)| span.clone());
+    let span = contacts.map_or(0..0, |contacts| {
+        contact::tables(contacts)
+            .get(index + 1)
+            .map_or(contacts.span(), |(_, span)| span.clone())
+    });
     let message = format!(
         "[[body.contact]] #{} is at or below the plane at the start (its lowest point at \
          z = {} m): the contacts after the first are watched for touchdown and must start \
@@ -240,22 +277,21 @@ fn watched_touching(
     keys.fail_at(span, &message)
 }
 
-/// The error for Painlevé's case when a body on the table (`on_table`: its
-/// contacts and centre of mass at attitude `q`) is added: at the `mu` key
-/// of the first contact that touches at the start with friction (else
-/// the first table).
+/// The error for Painlevé's case when a body on the table is added: at
+/// the `mu` key of its contact `index` (else that table), with its `mu`.
 fn painleve_at_start(
     keys: &Keys<'_>,
-    contacts: &Spanned<RawContacts>,
-    on_table: Option<&(Vec<TableContact>, DVec3)>,
-    q: DQuat,
+    contacts: Option<&Spanned<RawContacts>>,
+    index: usize,
+    mu: f64,
     error: &DynamicsError,
 ) -> SceneError {
-    let (laws, position) = on_table.map_or((&[][..], DVec3::ZERO), |(c, p)| (c.as_slice(), *p));
-    let (index, mu) = sliding_at_start(laws, position, q);
-    let tables = contact::tables(contacts);
-    let span = tables.get(index).map_or(contacts.span(), |(raw, span)| {
-        raw.mu_span().unwrap_or(span.clone())
+    let span = contacts.map_or(0..0, |contacts| {
+        contact::tables(contacts)
+            .get(index)
+            .map_or(contacts.span(), |(raw, span)| {
+                raw.mu_span().unwrap_or(span.clone())
+            })
     });
     keys.fail_at(span, &contact::painleve_message(index, mu, error))
 }
@@ -266,7 +302,7 @@ fn painleve_at_start(
 fn inside_table(
     keys: &Keys<'_>,
     position: Option<&Spanned<[f64; 3]>>,
-    contacts: &Spanned<RawContacts>,
+    contacts: Option<&Spanned<RawContacts>>,
     index: usize,
     gap: f64,
 ) -> SceneError {
@@ -279,10 +315,11 @@ fn inside_table(
     match position {
         Some(p) => keys.fail(p, &format!("`position`: {message}")),
         None => {
-            let tables = contact::tables(contacts);
-            let span = tables
-                .get(index)
-                .map_or(contacts.span(), |(_, span)| span.clone());
+            let span = contacts.map_or(0..0, |contacts| {
+                contact::tables(contacts)
+                    .get(index)
+                    .map_or(contacts.span(), |(_, span)| span.clone())
+            });
             keys.fail_at(span, &message)
         }
     }
@@ -323,41 +360,6 @@ fn check_height(
     Err(keys.fail(given, &message))
 }
 
-/// A key and where it is.
-type KeySpan = (&'static str, std::ops::Range<usize>);
-
-/// The applied inputs from `torque`, `torque_body`, `force` and
-/// `angular_damping` (all zero when absent), and the first of those keys
-/// given with its span.
-fn inputs(keys: &Keys<'_>, b: &RawBody) -> Result<(Inputs, Option<KeySpan>), SceneError> {
-    let vectors = [
-        ("torque", &b.torque),
-        ("torque_body", &b.torque_body),
-        ("force", &b.force),
-    ];
-    let mut first = vectors
-        .iter()
-        .find_map(|(key, v)| v.as_ref().map(|v| (*key, v.span())));
-    let [torque, torque_body, force] = vectors.map(|(key, v)| optional_vector(keys, key, v));
-    let mut inputs = Inputs::default()
-        .with_torque_world(torque?)
-        .with_torque_body(torque_body?)
-        .with_force_world(force?);
-    if let Some(c) = &b.angular_damping {
-        let value = *c.get_ref();
-        if !(value.is_finite() && value >= 0.0) {
-            let message = format!(
-                "`angular_damping` must be zero or positive and finite (N m s), got {}",
-                Shortest(value)
-            );
-            return Err(keys.fail(c, &message));
-        }
-        inputs = inputs.with_angular_damping(value);
-        first = first.or(Some(("angular_damping", c.span())));
-    }
-    Ok((inputs, first))
-}
-
 /// The `name`, which must be a plain CSV field.
 fn checked_name(file: SceneFile<'_>, name: &Spanned<String>) -> Result<String, SceneError> {
     let text = name.get_ref();
@@ -369,58 +371,14 @@ fn checked_name(file: SceneFile<'_>, name: &Spanned<String>) -> Result<String, S
     Ok(text.clone())
 }
 
-/// `[0, 0, 0]` when absent.
-fn optional_vector(
-    keys: &Keys<'_>,
-    key: &str,
-    value: &Option<Spanned<[f64; 3]>>,
-) -> Result<DVec3, SceneError> {
-    value
-        .as_ref()
-        .map_or(Ok(DVec3::ZERO), |v| keys.vector(key, v))
-}
-
-/// The inertia of a body, checked, and the key it came from.
-struct CheckedInertia {
-    /// The body with this inertia (state and support still to set).
-    builder: BodyBuilder,
-    /// `inertia`, `inertia_tensor` or `mesh`.
-    key: &'static str,
-    /// Where that key is.
-    span: std::ops::Range<usize>,
-}
-
-/// The inertia from exactly one of `inertia` (principal moments, body axes
-/// = principal axes, centre of mass at the origin), `inertia_tensor` (about
-/// the centre of mass at the origin) and `mesh` (a solid of `density`,
-/// mesh coordinates), checked by building a body at rest with it.
-fn inertia(
-    keys: &Keys<'_>,
-    raw: &Spanned<RawBody>,
-    folder: &Path,
-) -> Result<CheckedInertia, SceneError> {
+/// The inertia of the key given (one of `inertia`, `inertia_tensor` and
+/// `mesh`: principal moments, body axes = principal axes, centre of mass
+/// at the origin; the tensor about the centre of mass at the origin; a
+/// solid of `density`, mesh coordinates), read as far as its keys go:
+/// the mass and the inertia's physics are [`BodyRequest::add_to`]'s.
+fn inertia(keys: &Keys<'_>, raw: &Spanned<RawBody>, folder: &Path) -> Result<Inertia, SceneError> {
     let b = raw.get_ref();
-    let given: Vec<(&'static str, std::ops::Range<usize>)> = [
-        ("inertia", b.inertia.as_ref().map(Spanned::span)),
-        (
-            "inertia_tensor",
-            b.inertia_tensor.as_ref().map(Spanned::span),
-        ),
-        ("mesh", b.mesh.as_ref().map(Spanned::span)),
-    ]
-    .into_iter()
-    .filter_map(|(key, span)| span.map(|s| (key, s)))
-    .collect();
-    const ONE_OF: &str = "use exactly one of `inertia`, `inertia_tensor` and `mesh`";
-    let (key, span) = match given.as_slice() {
-        [] => return Err(keys.fail(raw, &format!("no inertia given: {ONE_OF}"))),
-        [(key, span)] => (*key, span.clone()),
-        [(first, _), (second, span), ..] => {
-            let message = format!("both `{first}` and `{second}` given: {ONE_OF}");
-            return Err(keys.fail_at(span.clone(), &message));
-        }
-    };
-    let builder = if let Some(mesh) = &b.mesh {
+    if let Some(mesh) = &b.mesh {
         if let Some(mass) = &b.mass {
             let message =
                 "`mass` cannot be given with `mesh`: it follows from the mesh and `density`";
@@ -430,43 +388,25 @@ fn inertia(
             return Err(keys.fail(mesh, "`mesh` needs `density` (kg/m^3)"));
         };
         let density = keys.positive("density", density)?;
-        Body::from_mass_properties(mesh_properties(keys, mesh, density, folder)?)
-    } else {
-        if let Some(density) = &b.density {
-            return Err(keys.fail(density, "`density` is only used with `mesh`"));
-        }
-        let Some(mass) = &b.mass else {
-            return Err(keys.fail(raw, "`mass` (kg) is missing"));
-        };
-        let mass = keys.positive("mass", mass)?;
-        match (&b.inertia, &b.inertia_tensor) {
-            (Some(moments), _) => {
-                Body::from_principal_moments(mass, DVec3::from_array(*moments.get_ref()))
+        return Ok(Inertia::Properties(mesh_properties(
+            keys, mesh, density, folder,
+        )?));
+    }
+    if let Some(density) = &b.density {
+        return Err(keys.fail(density, "`density` is only used with `mesh`"));
+    }
+    match (&b.inertia, &b.inertia_tensor) {
+        (Some(moments), _) => Ok(Inertia::Moments(DVec3::from_array(*moments.get_ref()))),
+        (None, Some(tensor)) => {
+            let rows = *tensor.get_ref();
+            if !rows.as_flattened().iter().all(|x| x.is_finite()) {
+                return Err(keys.fail(tensor, "`inertia_tensor` must be finite numbers"));
             }
-            (None, Some(tensor)) => {
-                let rows = *tensor.get_ref();
-                if !rows.as_flattened().iter().all(|x| x.is_finite()) {
-                    return Err(keys.fail(tensor, "`inertia_tensor` must be finite numbers"));
-                }
-                let matrix = DMat3::from_cols_array_2d(&rows).transpose();
-                let props = MassProperties::try_new(mass, DVec3::ZERO, matrix).map_err(|e| {
-                    let e = DynamicsError::InertiaTensor {
-                        reason: e.to_string(),
-                    };
-                    keys.fail(tensor, &format!("`inertia_tensor`: {e}"))
-                })?;
-                Body::from_mass_properties(props)
-            }
-            // Ruled out above; kept as an error rather than a panic.
-            (None, None) => return Err(keys.fail(raw, &format!("no inertia given: {ONE_OF}"))),
+            Ok(Inertia::Tensor(rows))
         }
-    };
-    // At rest, identity attitude, free: only the inertia can be refused.
-    builder
-        .clone()
-        .try_build()
-        .map_err(|e| keys.fail_at(span.clone(), &format!("`{key}`: {e}")))?;
-    Ok(CheckedInertia { builder, key, span })
+        // Ruled out by BodyRequest::one_inertia; kept as an error rather than a panic.
+        (None, None) => Err(keys.fail(raw, "no inertia given")),
+    }
 }
 
 /// The solid mass properties of every body of the mesh file, summed (mesh axes).
@@ -494,21 +434,15 @@ fn mesh_properties(
     Ok(solid.properties)
 }
 
-/// The initial attitude from `orientation` or `euler` (identity without either).
-fn attitude(keys: &Keys<'_>, b: &RawBody) -> Result<DQuat, SceneError> {
+/// The initial attitude from `orientation` (normalised by
+/// [`BodyRequest::add_to`]) or `euler` (none without either).
+fn attitude(keys: &Keys<'_>, b: &RawBody) -> Result<Given<Attitude, Span>, SceneError> {
     match (&b.orientation, &b.euler) {
         (Some(_), Some(euler)) => Err(keys.fail(
             euler,
             "both `orientation` and `euler` given: use at most one",
         )),
-        (Some(q), None) => {
-            let [w, x, y, z] = *q.get_ref();
-            try_normalize_quat(DQuat::from_xyzw(x, y, z, w)).map_err(|_| {
-                let message =
-                    "`orientation` must be a quaternion w, x, y, z of finite numbers, not zero";
-                keys.fail(q, message)
-            })
-        }
+        (Some(q), None) => Ok(Some((Attitude::Quaternion(*q.get_ref()), q.span()))),
         (None, Some(euler)) => {
             let e = euler.get_ref();
             let sequence: EulerSequence = e
@@ -517,8 +451,11 @@ fn attitude(keys: &Keys<'_>, b: &RawBody) -> Result<DQuat, SceneError> {
                 .parse()
                 .map_err(|err| keys.fail(&e.sequence, &format!("`euler.sequence`: {err}")))?;
             let angles = keys.vector("euler.angles", &e.angles)?;
-            Ok(sequence.to_quat(angles))
+            Ok(Some((
+                Attitude::Rotation(sequence.to_quat(angles)),
+                euler.span(),
+            )))
         }
-        (None, None) => Ok(DQuat::IDENTITY),
+        (None, None) => Ok(None),
     }
 }

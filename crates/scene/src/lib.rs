@@ -22,6 +22,7 @@
 #![forbid(unsafe_code)]
 
 pub mod body_keys;
+pub mod body_request;
 pub mod columns;
 pub mod contact_keys;
 pub mod error;
