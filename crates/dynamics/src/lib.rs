@@ -96,7 +96,6 @@ mod exact;
 mod forced;
 mod free_body_f32;
 mod heavy_top;
-mod integrator;
 mod lagrange_top;
 mod method;
 mod moser_veselov;
@@ -108,6 +107,7 @@ mod rk4;
 pub mod splitting;
 mod stability;
 mod state;
+mod stepping;
 pub mod table;
 mod world;
 
@@ -125,10 +125,9 @@ pub use forced::{
 };
 pub use free_body_f32::{FreeBodyF32, try_free_body_step_f32};
 pub use heavy_top::{
-    HeavyTop, HeavyTopAuto, HeavyTopIntegrator, HeavyTopRk4, HeavyTopSplitting, HeavyTopTaylor,
-    MAX_SUBSTEPS, TAYLOR_MAX_ORDER, integrate_heavy_top,
+    HeavyTop, HeavyTopAuto, HeavyTopRk4, HeavyTopSplitting, HeavyTopTaylor, MAX_SUBSTEPS,
+    TAYLOR_MAX_ORDER,
 };
-pub use integrator::{FreeBodyIntegrator, Propagator, integrate};
 pub use lagrange_top::{
     EulerAnglesAndRates, HeavyTopClosedForm, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion,
     SteadyPrecession, TopMotionKind,
@@ -143,6 +142,9 @@ pub use stability::{
     AxisStability, EllipticMotion, axis_stability, elliptic_motion, try_axis_stability,
 };
 pub use state::PrincipalState;
+pub use stepping::{
+    FreeBodyIntegrator, HeavyTopIntegrator, Propagator, integrate, integrate_heavy_top,
+};
 pub use table::{
     AirLayer, ContactLaw, ContactMode, DISK_FLAT_TILT, FACE_LANDING, SLIP_BAND, TABLE_ACCUMULATION,
     TABLE_RESOLUTION, TableBody, TableContact, TableEvent, TableEventKind, TableMotion,

@@ -10,9 +10,9 @@ use glam::{DQuat, DVec3};
 
 use self::asymmetric::Asymmetric;
 use crate::elliptic::dd::Dd;
-use crate::integrator::Propagator;
 use crate::rigid_body::moment_scale;
 use crate::splitting::{axis_flow, casimir_flow};
+use crate::stepping::Propagator;
 use crate::{DynamicsError, FreeBodyIntegrator, PrincipalState, RigidBody};
 
 /// The exact torque-free motion from an initial state, evaluated at any time.

@@ -2,8 +2,8 @@
 //! subdivided where the stability limits ask for it, for the whole motion.
 
 use super::HeavyTop;
-use super::integrator::HeavyTopIntegrator;
 use super::splitting::HeavyTopSplitting;
+use crate::stepping::HeavyTopIntegrator;
 use crate::{DynamicsError, PrincipalState};
 
 /// The fraction of the small-swing stability limit `auto` stays below.

@@ -4,7 +4,6 @@
 
 mod auto;
 mod free_flow;
-mod integrator;
 mod rk4;
 mod splitting;
 mod taylor;
@@ -13,7 +12,6 @@ use glam::{DQuat, DVec3};
 use kreisel_inertia::MassProperties;
 
 pub use self::auto::{HeavyTopAuto, MAX_SUBSTEPS};
-pub use self::integrator::{HeavyTopIntegrator, integrate_heavy_top};
 pub use self::rk4::HeavyTopRk4;
 pub use self::splitting::HeavyTopSplitting;
 pub use self::taylor::{HeavyTopTaylor, TAYLOR_MAX_ORDER};

@@ -4,8 +4,8 @@
 use glam::{DQuat, DVec3};
 
 use super::HeavyTop;
-use super::integrator::HeavyTopIntegrator;
 use crate::PrincipalState;
+use crate::stepping::HeavyTopIntegrator;
 
 /// Classical RK4 (Kutta 1901) on `(q, L)` of the heavy top, with no
 /// renormalisation of `q`.

@@ -2,9 +2,9 @@
 //! symmetric compositions of that Strang splitting to orders 4, 6 and 8.
 
 use super::HeavyTop;
-use super::integrator::HeavyTopIntegrator;
 use crate::PrincipalState;
 use crate::composition::{CompositionCoefficients, KAHAN_LI_6, KAHAN_LI_8, SUZUKI_4};
+use crate::stepping::HeavyTopIntegrator;
 
 /// Strang's splitting itself: one stage.
 const STRANG: CompositionCoefficients = CompositionCoefficients {

@@ -7,7 +7,7 @@ use std::cell::RefCell;
 use glam::{DQuat, DVec3};
 
 use super::HeavyTop;
-use super::integrator::HeavyTopIntegrator;
+use crate::stepping::HeavyTopIntegrator;
 use crate::{DynamicsError, PrincipalState};
 
 /// The highest order a [`HeavyTopTaylor`] may have.

@@ -1,12 +1,21 @@
-//! One stepping interface for every torque-free integrator: each carries
-//! its method's facts (name, order, description, step limit), which
-//! [`FreeBodyMethod`] reads.
+//! The stepping core: the one-step interfaces of the torque-free body
+//! ([`FreeBodyIntegrator`]) and of the heavy top ([`HeavyTopIntegrator`]),
+//! each carrying its method's facts (name, order, description, step
+//! limit) that [`FreeBodyMethod`] and [`HeavyTopMethod`] read; one body
+//! advanced step after step ([`Propagator`], which the World, the forced
+//! splitting ([`crate::ForcedPropagator`]) and the exact solution
+//! ([`crate::ExactPropagator`]) implement too); and the one checked loop
+//! behind [`integrate`] and [`integrate_heavy_top`].
+//!
+//! A body on the ground or the table is not stepped through these: its
+//! steps are error-controlled and event-driven
+//! ([`crate::GroundTop::try_step`], [`crate::TableMotion`]).
 
 use glam::DVec3;
 
+use crate::{DivergenceCheck, DynamicsError, HeavyTop, PrincipalState, RigidBody};
 #[cfg(doc)]
-use crate::FreeBodyMethod;
-use crate::{DivergenceCheck, DynamicsError, PrincipalState, RigidBody};
+use crate::{FreeBodyMethod, HeavyTopMethod};
 
 /// A one-step method for the torque-free rigid body in its principal frame
 /// (`Sync`: a [`crate::World`] steps its bodies on threads and may be sent
@@ -156,9 +165,137 @@ pub fn integrate(
     RigidBody::try_from_principal_moments(moments)?;
     state.validate(moments)?;
     let check = DivergenceCheck::free_body(method.name(), moments, state);
-    let mut body = method.propagator(moments, *state);
+    checked_steps(method.propagator(moments, *state), &check, state, h, steps)
+}
+
+/// A one-step method for the heavy top.
+pub trait HeavyTopIntegrator: Sync {
+    /// The method's name (e.g. `"strang"`), which [`HeavyTopMethod`]
+    /// parses and writes.
+    fn name(&self) -> &'static str;
+    /// The order of the method (global error `O(hᵖ)`).
+    fn order(&self) -> u32;
+    /// One line about the method, as `kreisel simulate --list-methods`
+    /// shows it.
+    fn description(&self) -> &'static str;
+    /// Advances `state` by `h` seconds.
+    ///
+    /// Infallible (the inner loop of every run): a step the method cannot
+    /// take leaves a non-finite state, which [`integrate_heavy_top`] and
+    /// [`crate::DivergenceCheck`] report.
+    fn step(&self, top: &HeavyTop, state: &mut PrincipalState, h: f64);
+
+    /// Advances `state` by `h` seconds, or says why the method refuses the
+    /// step (the sub-step cap of [`crate::HeavyTopAuto`]). By default one
+    /// [`HeavyTopIntegrator::step`].
+    ///
+    /// # Errors
+    /// The method's refusal, e.g. [`DynamicsError::TooManySubsteps`].
+    fn try_step(
+        &self,
+        top: &HeavyTop,
+        state: &mut PrincipalState,
+        h: f64,
+    ) -> Result<(), DynamicsError> {
+        self.step(top, state, h);
+        Ok(())
+    }
+
+    /// One top from `state`, to be advanced step after step (what
+    /// `kreisel simulate` uses): each [`Propagator::advance`] is one
+    /// [`HeavyTopIntegrator::step`].
+    fn propagator<'a>(
+        &'a self,
+        top: &'a HeavyTop,
+        state: PrincipalState,
+    ) -> Box<dyn Propagator + 'a> {
+        Box::new(HeavyStepping {
+            method: self,
+            top,
+            state,
+        })
+    }
+}
+
+/// Repeated steps of a heavy-top method.
+struct HeavyStepping<'a, M: ?Sized> {
+    method: &'a M,
+    top: &'a HeavyTop,
+    state: PrincipalState,
+}
+
+impl<M: HeavyTopIntegrator + ?Sized> Propagator for HeavyStepping<'_, M> {
+    fn advance(&mut self, h: f64) {
+        self.method.step(self.top, &mut self.state, h);
+    }
+
+    fn try_advance(&mut self, h: f64) -> Result<(), DynamicsError> {
+        self.method.try_step(self.top, &mut self.state, h)
+    }
+
+    fn state(&self) -> PrincipalState {
+        self.state
+    }
+}
+
+/// Advances `state` by `steps` steps of size `h`.
+///
+/// ```text
+/// x(t₀ + n h) ≈ Φₕⁿ x(t₀)
+/// ```
+///
+/// Every state reached is checked ([`crate::DivergenceCheck`]).
+///
+/// # Errors
+/// [`DynamicsError::InvalidStep`] for `h` that is not positive and finite;
+/// [`DynamicsError::InvalidState`] for a state that
+/// [`PrincipalState::validate`] refuses; the method's refusal of a step
+/// ([`DynamicsError::TooManySubsteps`]); [`DynamicsError::Diverged`] when a
+/// state becomes non-finite or its energy drifts beyond
+/// [`crate::DIVERGENCE_FACTOR`] times its scale (`state` then holds the
+/// last good state).
+///
+/// ```
+/// use glam::{DQuat, DVec3};
+/// use kreisel_dynamics::{HeavyTop, HeavyTopMethod, PrincipalState, integrate_heavy_top};
+/// let top = HeavyTop::try_from_principal(DVec3::new(0.02, 0.02, 0.01), DVec3::new(0.0, 0.0, 0.1), 1.0, DVec3::new(0.0, 0.0, -9.81))?;
+/// let mut s = PrincipalState { world_from_principal: DQuat::from_rotation_x(0.3), l_principal: DVec3::new(0.0, 0.0, 0.5) };
+/// let e0 = top.energy(&s);
+/// integrate_heavy_top(HeavyTopMethod::Splitting8.integrator(), &top, &mut s, 1e-3, 1000)?;
+/// assert!((top.energy(&s) - e0).abs() < 1e-13 * e0);
+/// assert!(integrate_heavy_top(HeavyTopMethod::Rk4.integrator(), &top, &mut s, -1.0, 1).is_err());
+/// # Ok::<(), kreisel_dynamics::DynamicsError>(())
+/// ```
+pub fn integrate_heavy_top(
+    method: &dyn HeavyTopIntegrator,
+    top: &HeavyTop,
+    state: &mut PrincipalState,
+    h: f64,
+    steps: usize,
+) -> Result<(), DynamicsError> {
+    if !(h.is_finite() && h > 0.0) {
+        return Err(DynamicsError::InvalidStep { h });
+    }
+    state.validate(top.body().principal_moments())?;
+    let check = DivergenceCheck::heavy_top(method.name(), top, state);
+    checked_steps(method.propagator(top, *state), &check, state, h, steps)
+}
+
+/// The one stepping loop: `steps` steps of `h` of `body` (from `state`),
+/// each state reached checked, `state` left at the last good one.
+///
+/// ```text
+/// for k = 1..n:  x ← Φₕ(x) (or the method's refusal);  check(x, k h);  state ← x
+/// ```
+fn checked_steps(
+    mut body: Box<dyn Propagator + '_>,
+    check: &DivergenceCheck,
+    state: &mut PrincipalState,
+    h: f64,
+    steps: usize,
+) -> Result<(), DynamicsError> {
     for k in 1..=steps {
-        body.advance(h);
+        body.try_advance(h)?;
         let next = body.state();
         check.check(&next, k as f64 * h)?;
         *state = next;
