@@ -262,11 +262,7 @@ fn watched_touching(
     index: usize,
     gap: f64,
 ) -> SceneError {
-    let span = contacts.map_or(0..0, |contacts| {
-        contact::tables(contacts)
-            .get(index + 1)
-            .map_or(contacts.span(), |(_, span)| span.clone())
-    });
+    let span = table_span(contacts, index + 1, false);
     let message = format!(
         "[[body.contact]] #{} is at or below the plane at the start (its lowest point at \
          z = {} m): the contacts after the first are watched for touchdown and must start \
@@ -286,14 +282,20 @@ fn painleve_at_start(
     mu: f64,
     error: &DynamicsError,
 ) -> SceneError {
-    let span = contacts.map_or(0..0, |contacts| {
+    let span = table_span(contacts, index, true);
+    keys.fail_at(span, &contact::painleve_message(index, mu, error))
+}
+
+/// Where contact table `index` (0-based) of `contacts` is — its `mu` key
+/// with `mu` when given — else the `contact` key.
+fn table_span(contacts: Option<&Spanned<RawContacts>>, index: usize, mu: bool) -> Span {
+    contacts.map_or(0..0, |contacts| {
         contact::tables(contacts)
             .get(index)
             .map_or(contacts.span(), |(raw, span)| {
-                raw.mu_span().unwrap_or(span.clone())
+                raw.mu_span().filter(|_| mu).unwrap_or_else(|| span.clone())
             })
-    });
-    keys.fail_at(span, &contact::painleve_message(index, mu, error))
+    })
 }
 
 /// The error for contact `index` (0-based) of a body on the table below
@@ -314,14 +316,7 @@ fn inside_table(
     );
     match position {
         Some(p) => keys.fail(p, &format!("`position`: {message}")),
-        None => {
-            let span = contacts.map_or(0..0, |contacts| {
-                contact::tables(contacts)
-                    .get(index)
-                    .map_or(contacts.span(), |(_, span)| span.clone())
-            });
-            keys.fail_at(span, &message)
-        }
+        None => keys.fail_at(table_span(contacts, index, false), &message),
     }
 }
 
