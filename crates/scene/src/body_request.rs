@@ -432,3 +432,135 @@ impl<A: Clone> BodyRequest<A> {
         Ok((id, on_ground))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use kreisel_dynamics::{ContactLaw, ContactShape, SphereContact};
+
+    use super::*;
+
+    /// A unit body at rest given by its moments, every key labelled by
+    /// its name (the place a client would point at).
+    fn request() -> BodyRequest<&'static str> {
+        BodyRequest {
+            body: "body",
+            mass: Some((1.0, "mass")),
+            inertia: (
+                BodyKey::Moments,
+                Inertia::Moments(DVec3::splat(0.004)),
+                "moments",
+            ),
+            attitude: None,
+            omega_body: None,
+            position: None,
+            velocity: None,
+            pivot: None,
+            torque: None,
+            torque_body: None,
+            force: None,
+            angular_damping: None,
+            contacts: None,
+        }
+    }
+
+    fn ball() -> Contacts {
+        let sphere = SphereContact::try_new(0.1, DVec3::ZERO).unwrap();
+        Contacts::Table(vec![TableContact {
+            shape: ContactShape::Sphere(sphere),
+            law: ContactLaw::new(0.3),
+        }])
+    }
+
+    fn world() -> World {
+        World::try_new(DVec3::new(0.0, 0.0, -9.81), 0.01).unwrap()
+    }
+
+    fn problem(r: BodyRequest<&'static str>) -> (&'static str, BodyKeyProblem) {
+        let e = r.add_to(&mut world()).unwrap_err();
+        (e.at, e.problem)
+    }
+
+    #[test]
+    fn each_problem_points_at_its_key() {
+        let mut r = request();
+        r.mass = Some((-1.0, "mass"));
+        let p = BodyKeyProblem::NotPositive {
+            key: BodyKey::Mass,
+            value: -1.0,
+        };
+        assert_eq!(problem(r), ("mass", p));
+        let mut r = request();
+        r.mass = None;
+        assert_eq!(problem(r), ("body", BodyKeyProblem::MissingMass));
+        let mut r = request();
+        r.attitude = Some((Attitude::Quaternion([0.0; 4]), "attitude"));
+        assert_eq!(problem(r), ("attitude", BodyKeyProblem::NotAQuaternion));
+        let mut r = request();
+        r.pivot = Some((DVec3::Z, "pivot"));
+        r.velocity = Some((DVec3::X, "velocity"));
+        assert_eq!(problem(r), ("velocity", BodyKeyProblem::VelocityWithPivot));
+        let mut r = request();
+        r.pivot = Some((DVec3::Z, "pivot"));
+        r.contacts = Some((ball(), "contacts"));
+        assert_eq!(problem(r), ("pivot", BodyKeyProblem::PivotWithContacts));
+        let mut r = request();
+        r.contacts = Some((ball(), "contacts"));
+        r.angular_damping = Some((0.5, "angular_damping"));
+        let p = BodyKeyProblem::LoadsOnTable {
+            key: BodyKey::AngularDamping,
+        };
+        assert_eq!(problem(r), ("angular_damping", p));
+        let mut r = request();
+        r.angular_damping = Some((-0.5, "angular_damping"));
+        assert_eq!(
+            problem(r),
+            ("angular_damping", BodyKeyProblem::Damping { value: -0.5 })
+        );
+        // Moments that break the triangle inequality: the library's error,
+        // at the inertia key.
+        let mut r = request();
+        r.inertia = (
+            BodyKey::Moments,
+            Inertia::Moments(DVec3::new(1.0, 1.0, 3.0)),
+            "moments",
+        );
+        let (at, p) = problem(r);
+        assert_eq!(at, "moments");
+        assert!(
+            matches!(
+                p,
+                BodyKeyProblem::Library {
+                    key: BodyKey::Moments,
+                    error: DynamicsError::UnphysicalInertia { .. }
+                }
+            ),
+            "{p:?}"
+        );
+    }
+
+    #[test]
+    fn a_body_on_the_table_starts_touching_unless_placed() {
+        let mut w = world();
+        let mut r = request();
+        r.contacts = Some((ball(), "contacts"));
+        let (id, on_ground) = r.clone().add_to(&mut w).unwrap();
+        assert!(!on_ground);
+        // The ball's radius above the table: touching.
+        assert_eq!(w.state(id).unwrap().position, DVec3::new(0.0, 0.0, 0.1));
+        // Placed below it: the start is refused, at the position.
+        r.position = Some((DVec3::new(0.0, 0.0, 0.05), "position"));
+        let (at, p) = problem(r);
+        assert_eq!(at, "position");
+        assert!(
+            matches!(
+                p,
+                BodyKeyProblem::InsideTable {
+                    contact: 0,
+                    position_given: true,
+                    ..
+                }
+            ),
+            "{p:?}"
+        );
+    }
+}
