@@ -35,7 +35,7 @@ pub fn scene_error(e: SceneError) -> PyErr {
         SceneError::Argument { argument, message } => {
             error(format!("{}: {message}", keyword(&argument)))
         }
-        SceneError::Method { message } => error(format!("method: {message}")),
+        SceneError::Method { problem } => error(format!("method: {problem}")),
         SceneError::DerivedDensity { path, mass, volume } => error(format!(
             "mass: {}: total volume {} m^3 gives no finite positive density for mass {} kg",
             path.display(),

@@ -7,6 +7,7 @@
 use std::io;
 use std::path::PathBuf;
 
+use kreisel_dynamics::{DynamicsError, FreeBodyMethod, HeavyTopMethod};
 use kreisel_inertia::InertiaError;
 
 use crate::numbers::Shortest;
@@ -86,11 +87,28 @@ pub enum SceneError {
         /// The library's description of the problem (one line).
         message: String,
     },
-    /// A method name that names no known method.
-    #[error("--method: {message}")]
+    /// The method the user named cannot be used.
+    #[error("--method: {problem}")]
     Method {
-        /// What is wrong, listing the known methods.
-        message: String,
+        /// What is wrong with it.
+        problem: MethodProblem,
+    },
+}
+
+/// Why a method the user named cannot move the scene.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum MethodProblem {
+    /// No method has that name (the library's error lists the known ones).
+    #[error("{0}")]
+    Unknown(DynamicsError),
+    /// The method has no heavy-top version, and a body has a pivot.
+    #[error(
+        "method `{method}` cannot move a body with a `pivot` (a heavy top); use one of {}",
+        HeavyTopMethod::ALL.map(HeavyTopMethod::name).join(", ")
+    )]
+    NoHeavyTopVersion {
+        /// The method named.
+        method: FreeBodyMethod,
     },
 }
 

@@ -13,7 +13,7 @@ use std::io::{self, Write};
 
 use kreisel_dynamics::{BodyId, FreeBodyMethod, HeavyTopMethod, Plan, World};
 
-use crate::error::SceneError;
+use crate::error::{MethodProblem, SceneError};
 
 /// The method the user named (`--method`, Python's `method`), parsed
 /// where the text enters.
@@ -28,32 +28,29 @@ use crate::error::SceneError;
 /// assert!(parse("x").unwrap_err().to_string().starts_with("--method: unknown method `x` (known: auto,"));
 /// ```
 pub fn parse(name: &str) -> Result<FreeBodyMethod, SceneError> {
-    name.parse()
-        .map_err(|e: kreisel_dynamics::DynamicsError| SceneError::Method {
-            message: e.to_string(),
-        })
+    name.parse().map_err(|e| SceneError::Method {
+        problem: MethodProblem::Unknown(e),
+    })
 }
 
 /// The heavy-top method that `method` runs for bodies with a `pivot`
 /// ([`FreeBodyMethod::heavy_top`]: the one of the same name).
 ///
 /// # Errors
-/// A message naming the method and listing the heavy-top ones, for a
-/// method with no heavy-top version.
+/// [`MethodProblem::NoHeavyTopVersion`] for a method with no heavy-top
+/// version (its message lists the heavy-top ones).
 ///
 /// ```
 /// use kreisel_dynamics::{FreeBodyMethod, HeavyTopMethod};
 /// use kreisel_scene::methods::heavy_top;
 /// assert_eq!(heavy_top(FreeBodyMethod::Strang), Ok(HeavyTopMethod::Strang));
-/// assert!(heavy_top(FreeBodyMethod::Dmv).unwrap_err().starts_with("method `dmv` cannot move"));
+/// let e = heavy_top(FreeBodyMethod::Dmv).unwrap_err();
+/// assert!(e.to_string().starts_with("method `dmv` cannot move"));
 /// ```
-pub fn heavy_top(method: FreeBodyMethod) -> Result<HeavyTopMethod, String> {
-    method.heavy_top().ok_or_else(|| {
-        format!(
-            "method `{method}` cannot move a body with a `pivot` (a heavy top); use one of {}",
-            HeavyTopMethod::ALL.map(HeavyTopMethod::name).join(", ")
-        )
-    })
+pub fn heavy_top(method: FreeBodyMethod) -> Result<HeavyTopMethod, MethodProblem> {
+    method
+        .heavy_top()
+        .ok_or(MethodProblem::NoHeavyTopVersion { method })
 }
 
 /// A free body stepped by a method with a step limit
@@ -154,7 +151,7 @@ mod tests {
         }
         for name in ["exact", "splitting", "dmv", "pdmv4", "pdmv10"] {
             assert_eq!(
-                heavy_top(name.parse().unwrap()).unwrap_err(),
+                heavy_top(name.parse().unwrap()).unwrap_err().to_string(),
                 format!(
                     "method `{name}` cannot move a body with a `pivot` (a heavy top); \
                      use one of auto, rk4, strang, splitting4, splitting6, splitting8"

@@ -61,7 +61,7 @@ pub fn prepare(
     let method = method.or(scene.method).unwrap_or_default();
     // Bodies with a pivot are heavy tops, moved by the heavy-top methods.
     if scene.has_pivot {
-        methods::heavy_top(method).map_err(|message| SceneError::Method { message })?;
+        methods::heavy_top(method).map_err(|problem| SceneError::Method { problem })?;
     }
     Ok((scene, method))
 }

@@ -205,7 +205,7 @@ pub fn parse_with_method(
         && has_pivot
     {
         methods::heavy_top(method)
-            .map_err(|message| keys.fail(key, &format!("`method`: {message}")))?;
+            .map_err(|problem| keys.fail(key, &format!("`method`: {problem}")))?;
     }
     Ok(Scene {
         schedule,
