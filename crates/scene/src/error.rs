@@ -82,10 +82,10 @@ pub enum SceneError {
         message: String,
     },
     /// The library cannot solve the heavy top for these parameters.
-    #[error("heavy top: {message}")]
+    #[error("heavy top: {}", one_line(&error.to_string()))]
     Top {
-        /// The library's description of the problem (one line).
-        message: String,
+        /// The library's error.
+        error: DynamicsError,
     },
     /// The method the user named cannot be used.
     #[error("--method: {problem}")]

@@ -8,7 +8,7 @@ use kreisel_dynamics::{
     DynamicsError, LagrangeTop, LagrangeTopInitial, LagrangeTopMotion, TopMotionKind,
 };
 
-use crate::error::{SceneError, one_line};
+use crate::error::SceneError;
 use crate::numbers::Shortest;
 
 /// A heavy top and its initial state (φ₀ = ψ₀ = 0), as the user gives them.
@@ -170,9 +170,7 @@ fn dynamics_error(error: DynamicsError) -> SceneError {
             argument: option_name(parameter),
             message: format!("{}: {reason}", Shortest(value)),
         },
-        _ => SceneError::Top {
-            message: one_line(&error.to_string()),
-        },
+        error => SceneError::Top { error },
     }
 }
 
