@@ -169,7 +169,7 @@ pub enum DynamicsError {
         /// The method's name.
         method: &'static str,
         /// The methods that can, comma-separated.
-        known: &'static str,
+        known: String,
     },
     /// A contact parameter outside its domain (a sphere radius that is
     /// not positive, a negative friction coefficient, a mass or inertia

@@ -146,8 +146,24 @@ impl Plan {
     }
 }
 
-/// The free-body methods that can move a body with applied inputs.
-const TAKES_INPUTS: &str = "auto, strang, splitting4, splitting6, splitting8";
+/// The torque splitting called `name` (a free-body or heavy-top method of
+/// that name runs it on a body with inputs; `auto` runs `auto`).
+///
+/// # Errors
+/// For a method without a torque kick: the names of those with one,
+/// comma-separated, for [`DynamicsError::MethodTakesNoInputs`].
+fn splitting_named(name: &str, auto: ForcedSplitting) -> Result<ForcedSplitting, String> {
+    if name == "auto" {
+        return Ok(auto);
+    }
+    ForcedSplitting::ALL
+        .into_iter()
+        .find(|f| f.name() == name)
+        .ok_or_else(|| {
+            let names = ForcedSplitting::ALL.map(|f| f.name());
+            format!("auto, {}", names.join(", "))
+        })
+}
 
 impl Plan {
     /// The torque splitting that free-body method `method` means for a body
@@ -172,23 +188,15 @@ impl Plan {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn forced_splitting(method: FreeBodyMethod) -> Result<ForcedSplitting, DynamicsError> {
-        match method {
-            FreeBodyMethod::Auto => Ok(ForcedSplitting::DEFAULT),
-            FreeBodyMethod::Strang => Ok(ForcedSplitting::STRANG),
-            FreeBodyMethod::Splitting4 => Ok(ForcedSplitting::ORDER_4),
-            FreeBodyMethod::Splitting6 => Ok(ForcedSplitting::ORDER_6),
-            FreeBodyMethod::Splitting8 => Ok(ForcedSplitting::ORDER_8),
-            other => Err(DynamicsError::MethodTakesNoInputs {
+        splitting_named(method.name(), ForcedSplitting::DEFAULT).map_err(|known| {
+            DynamicsError::MethodTakesNoInputs {
                 kind: "free-body",
-                method: other.integrator().name(),
-                known: TAKES_INPUTS,
-            }),
-        }
+                method: method.integrator().name(),
+                known,
+            }
+        })
     }
 }
-
-/// The heavy-top methods that can move a body on a pivot with inputs.
-const TOP_TAKES_INPUTS: &str = "auto, strang, splitting4, splitting6, splitting8";
 
 impl Plan {
     /// The torque splitting that heavy-top method `method` means for a body
@@ -209,17 +217,13 @@ impl Plan {
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn driven_top_splitting(method: HeavyTopMethod) -> Result<ForcedSplitting, DynamicsError> {
-        match method {
-            HeavyTopMethod::Auto | HeavyTopMethod::Splitting8 => Ok(ForcedSplitting::ORDER_8),
-            HeavyTopMethod::Strang => Ok(ForcedSplitting::STRANG),
-            HeavyTopMethod::Splitting4 => Ok(ForcedSplitting::ORDER_4),
-            HeavyTopMethod::Splitting6 => Ok(ForcedSplitting::ORDER_6),
-            other => Err(DynamicsError::MethodTakesNoInputs {
+        splitting_named(method.name(), ForcedSplitting::ORDER_8).map_err(|known| {
+            DynamicsError::MethodTakesNoInputs {
                 kind: "heavy-top",
-                method: other.integrator().name(),
-                known: TOP_TAKES_INPUTS,
-            }),
-        }
+                method: method.integrator().name(),
+                known,
+            }
+        })
     }
 
     /// The heavy-top method that runs the splitting of order `order`
