@@ -12,7 +12,8 @@ use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use kreisel_scene::body_request::{Attitude, BodyKey, BodyKeyProblem, BodyRequest, Inertia};
+use kreisel_scene::body_key::{BodyKey, BodyKeyProblem};
+use kreisel_scene::body_request::{Attitude, BodyRequest, Inertia};
 use kreisel_scene::contact_keys::Contacts;
 use kreisel_scene::numbers::Shortest;
 

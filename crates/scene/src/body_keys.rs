@@ -19,9 +19,8 @@ use kreisel_kinematics::EulerSequence;
 use serde::Deserialize;
 use toml::Spanned;
 
-use crate::body_request::{
-    Attitude, BodyKey, BodyKeyError, BodyKeyProblem, BodyRequest, Given, Inertia,
-};
+use crate::body_key::{BodyKey, BodyKeyError, BodyKeyProblem};
+use crate::body_request::{Attitude, BodyRequest, Given, Inertia};
 use crate::contact_keys::{self as contact, Contacts, RawContacts};
 use crate::error::SceneError;
 use crate::numbers::Shortest;

@@ -21,6 +21,7 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+pub mod body_key;
 pub mod body_keys;
 pub mod body_request;
 pub mod columns;
