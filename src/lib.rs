@@ -9,7 +9,7 @@
 //!   primitives, point masses, compounds and closed triangle meshes.
 //! - [`dynamics`]: free bodies, heavy tops and tops on a table, solved
 //!   exactly or integrated, and the [`dynamics::World`] a game steps.
-//! - `scene` (feature `scene`, default): scene files to a World and its
+//! - `scene` (feature `scene`): scene files to a World and its
 //!   run along the output grid, mesh and heavy-top requests, rotations as
 //!   lines of numbers — what the CLI and the Python package are made of.
 //!
