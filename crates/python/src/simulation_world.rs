@@ -343,7 +343,7 @@ impl PyWorld {
                 angular_damping,
                 contacts,
             };
-            let (id, _) = request
+            let id = request
                 .add_to(&mut self.world)
                 .map_err(|e| key_error(e.problem))?;
             self.ids.push(id);

@@ -12,7 +12,7 @@ use std::io::Write;
 use std::path::Path;
 
 use glam::DVec3;
-use kreisel_dynamics::{BodyId, DynamicsError, World};
+use kreisel_dynamics::{BodyId, DynamicsError, Plan, World};
 use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
 use kreisel_inertia::{MassProperties, Material};
 use kreisel_kinematics::EulerSequence;
@@ -150,18 +150,20 @@ pub fn add_body(
         force: spanned(&b.force, "force")?,
         angular_damping: b.angular_damping.as_ref().map(|c| (*c.get_ref(), c.span())),
         pivot: match (&b.pivot, &b.contact) {
-            (Some(p), None) => spanned(&b.pivot, "pivot")?.or(Some((DVec3::ZERO, p.span()))),
+            (Some(_), None) => spanned(&b.pivot, "pivot")?,
             // With `contact`, the conflict is the error, whatever the value.
             (Some(p), Some(_)) => Some((DVec3::ZERO, p.span())),
             (None, _) => None,
         },
         contacts: match (&b.contact, &b.pivot) {
             (Some(c), None) => Some((contact::check(&keys, c)?, c.span())),
+            // With `pivot`, the conflict is the error, whatever the tables say.
             (Some(c), Some(_)) => Some((Contacts::Table(Vec::new()), c.span())),
             (None, _) => None,
         },
     };
-    let (id, on_ground) = request.add_to(world).map_err(fail)?;
+    let id = request.add_to(world).map_err(fail)?;
+    let on_ground = matches!(world.plan(id), Some(Plan::OnGround { .. }));
     if let (true, Some(given)) = (on_ground, &b.position) {
         check_height(&keys, given, world, id)?;
     }

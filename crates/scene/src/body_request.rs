@@ -18,7 +18,7 @@
 //! ```
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_dynamics::{Body, BodyId, DynamicsError, Friction, Inputs, Plan, TableContact, World};
+use kreisel_dynamics::{Body, BodyId, DynamicsError, Friction, Inputs, TableContact, World};
 use kreisel_inertia::MassProperties;
 use kreisel_kinematics::try_normalize_quat;
 
@@ -112,13 +112,12 @@ impl<A: Clone> BodyRequest<A> {
         }
     }
 
-    /// Checks the body and adds it to `world`; `on_ground` says whether
-    /// the world moves it on the ground plane (a smooth contact model).
+    /// Checks the body and adds it to `world`: its id.
     ///
     /// # Errors
     /// The first problem found, at the key it is about (see the module
     /// docs for the order of the checks).
-    pub fn add_to(self, world: &mut World) -> Result<(BodyId, bool), BodyKeyError<A>> {
+    pub fn add_to(self, world: &mut World) -> Result<BodyId, BodyKeyError<A>> {
         let body = self.body.clone();
         let fail = |at: &A, problem| BodyKeyError {
             at: at.clone(),
@@ -306,14 +305,13 @@ impl<A: Clone> BodyRequest<A> {
             e if self.pivot.is_some() => library(BodyKey::Pivot, e),
             e => library(BodyKey::Body, e),
         })?;
-        let on_ground = matches!(world.plan(id), Some(Plan::OnGround { .. }));
-        Ok((id, on_ground))
+        Ok(id)
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use kreisel_dynamics::{ContactLaw, ContactShape, SphereContact};
+    use kreisel_dynamics::{ContactLaw, ContactShape, Plan, SphereContact};
 
     use super::*;
 
@@ -421,8 +419,8 @@ mod tests {
         let mut w = world();
         let mut r = request();
         r.contacts = Some((ball(), "contacts"));
-        let (id, on_ground) = r.clone().add_to(&mut w).unwrap();
-        assert!(!on_ground);
+        let id = r.clone().add_to(&mut w).unwrap();
+        assert!(matches!(w.plan(id), Some(Plan::OnTable { .. })));
         // The ball's radius above the table: touching.
         assert_eq!(w.state(id).unwrap().position, DVec3::new(0.0, 0.0, 0.1));
         // Placed below it: the start is refused, at the position.
