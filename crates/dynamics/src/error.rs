@@ -12,11 +12,13 @@ pub enum DynamicsError {
         /// Why (not positive and finite, or the triangle inequality broken).
         reason: &'static str,
     },
-    /// The inertia tensor could not be used (see the inner message).
-    #[error("inertia tensor: {reason}")]
+    /// A mass or inertia tensor that no physical body has: which check
+    /// fails, typed (the inertia crate's [`kreisel_inertia::MassPropertiesError`]).
+    #[error("inertia tensor: {error}")]
     InertiaTensor {
-        /// The inertia crate's description.
-        reason: String,
+        /// Which check fails.
+        #[from]
+        error: kreisel_inertia::MassPropertiesError,
     },
     /// A state with a non-finite or zero-length attitude quaternion, or a
     /// non-finite angular momentum.

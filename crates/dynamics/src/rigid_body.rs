@@ -112,14 +112,18 @@ impl RigidBody {
     /// let tensor = r * DMat3::from_diagonal(DVec3::new(1.0, 2.0, 2.5)) * r.transpose();
     /// let body = RigidBody::try_from_inertia_tensor(tensor)?;
     /// assert!((body.principal_moments() - DVec3::new(1.0, 2.0, 2.5)).length() < 1e-14);
+    /// // The reason is typed: which check, with its numbers.
+    /// let mut skew = DMat3::IDENTITY;
+    /// skew.x_axis.y = 0.5;
+    /// let e = RigidBody::try_from_inertia_tensor(skew).unwrap_err();
+    /// assert_eq!(e, kreisel_dynamics::DynamicsError::InertiaTensor {
+    ///     error: kreisel_inertia::MassPropertiesError::NotSymmetric { asymmetry: 0.5 },
+    /// });
+    /// assert_eq!(e.to_string(), "inertia tensor: inertia tensor is not physical: tensor is not symmetric (asymmetry 5e-1)");
     /// # Ok::<(), kreisel_dynamics::DynamicsError>(())
     /// ```
     pub fn try_from_inertia_tensor(tensor: DMat3) -> Result<Self, DynamicsError> {
-        let props = MassProperties::try_new(1.0, DVec3::ZERO, tensor).map_err(|e| {
-            DynamicsError::InertiaTensor {
-                reason: e.to_string(),
-            }
-        })?;
+        let props = MassProperties::try_new(1.0, DVec3::ZERO, tensor)?;
         Self::from_mass_properties(&props)
     }
 

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 
+use crate::mass_properties_error::MassPropertiesError;
 use crate::mesh_format::MeshFormat;
 
 /// Everything that can go wrong when loading a mesh or computing mass properties.
@@ -172,12 +173,10 @@ pub enum InertiaError {
         /// The value given.
         value: f64,
     },
-    /// An inertia tensor that no physical body has.
-    #[error("inertia tensor is not physical: {reason}")]
-    UnphysicalInertia {
-        /// Why (not symmetric, not positive definite, triangle inequality broken).
-        reason: String,
-    },
+    /// A mass or an inertia tensor that no physical body has (which
+    /// check fails, typed).
+    #[error(transparent)]
+    MassProperties(#[from] MassPropertiesError),
     /// A convex hull failed its checks (closed, outward, convex, containing
     /// every point): no result rather than a wrong one.
     #[error("convex hull of {points} points failed its check: {reason}")]

@@ -6,7 +6,7 @@ use core::ops::Add;
 
 use glam::{DMat3, DQuat, DVec3};
 
-use crate::{InertiaError, PrincipalAxes};
+use crate::{InertiaError, MassPropertiesError, PrincipalAxes};
 
 /// Mass properties of a rigid body in its own (body) axes.
 ///
@@ -38,11 +38,11 @@ impl MassProperties {
     /// Builds mass properties, checking that they describe a physical body.
     ///
     /// # Errors
-    /// [`InertiaError::NonPositive`] for a mass that is not positive and
-    /// finite; [`InertiaError::UnphysicalInertia`] for a tensor that is not
-    /// finite, not symmetric (to 1e-12 relative), has a negative principal
-    /// moment, or breaks the triangle inequality `I₁ + I₂ ≥ I₃` (beyond
-    /// 1e-12 relative).
+    /// [`MassPropertiesError::Mass`] for a mass that is not positive and
+    /// finite; the other [`MassPropertiesError`]s for a centre or tensor
+    /// that is not finite, a tensor not symmetric (to 1e-12 relative), with
+    /// a negative principal moment, or breaking the triangle inequality
+    /// `I₁ + I₂ ≥ I₃` (beyond 1e-12 relative).
     ///
     /// ```
     /// use glam::{DMat3, DVec3};
@@ -52,7 +52,11 @@ impl MassProperties {
     /// let bad = MassProperties::try_new(2.0, DVec3::ZERO, DMat3::from_diagonal(DVec3::new(1.0, 1.0, 3.0)));
     /// assert!(bad.is_err());
     /// ```
-    pub fn try_new(mass: f64, center_of_mass: DVec3, inertia: DMat3) -> Result<Self, InertiaError> {
+    pub fn try_new(
+        mass: f64,
+        center_of_mass: DVec3,
+        inertia: DMat3,
+    ) -> Result<Self, MassPropertiesError> {
         let props = Self {
             mass,
             center_of_mass,
@@ -94,16 +98,15 @@ impl MassProperties {
     /// assert!(MassProperties::solid_sphere(1000.0, 0.1)?.validate().is_ok());
     /// # Ok::<(), kreisel_inertia::InertiaError>(())
     /// ```
-    pub fn validate(&self) -> Result<(), InertiaError> {
-        check_positive("mass", self.mass)?;
-        let unphysical = |reason: String| Err(InertiaError::UnphysicalInertia { reason });
+    pub fn validate(&self) -> Result<(), MassPropertiesError> {
+        if !(self.mass > 0.0 && self.mass.is_finite()) {
+            return Err(MassPropertiesError::Mass { value: self.mass });
+        }
         if !self.center_of_mass.is_finite() {
-            return Err(InertiaError::UnphysicalInertia {
-                reason: "centre of mass is not finite".into(),
-            });
+            return Err(MassPropertiesError::CentreOfMassNotFinite);
         }
         if !self.inertia.is_finite() {
-            return unphysical("tensor has a non-finite element".into());
+            return Err(MassPropertiesError::TensorNotFinite);
         }
         let i = self.inertia;
         let scale = i
@@ -111,25 +114,19 @@ impl MassProperties {
             .iter()
             .fold(0.0_f64, |a, v| a.max(v.abs()));
         let tol = 1e-12 * scale;
-        let asym = (i - i.transpose())
+        let asymmetry = (i - i.transpose())
             .to_cols_array()
             .iter()
             .fold(0.0_f64, |a, v| a.max(v.abs()));
-        if asym > tol {
-            return unphysical(format!("tensor is not symmetric (asymmetry {asym:e})"));
+        if asymmetry > tol {
+            return Err(MassPropertiesError::NotSymmetric { asymmetry });
         }
-        let m = PrincipalAxes::from_tensor(i).moments;
-        if m.x < -tol {
-            return unphysical(format!(
-                "principal moment {:e} is negative (not positive semi-definite)",
-                m.x
-            ));
+        let moments = PrincipalAxes::from_tensor(i).moments;
+        if moments.x < -tol {
+            return Err(MassPropertiesError::NegativeMoment { moment: moments.x });
         }
-        if m.x + m.y < m.z - tol {
-            return unphysical(format!(
-                "principal moments {:e}, {:e}, {:e} break the triangle inequality I₁ + I₂ ≥ I₃",
-                m.x, m.y, m.z
-            ));
+        if moments.x + moments.y < moments.z - tol {
+            return Err(MassPropertiesError::TriangleInequality { moments });
         }
         Ok(())
     }
@@ -253,7 +250,7 @@ impl MassProperties {
         center_of_mass: DVec3,
         inertia_about_point: DMat3,
         point: DVec3,
-    ) -> Result<Self, InertiaError> {
+    ) -> Result<Self, MassPropertiesError> {
         Self::try_new(
             mass,
             center_of_mass,

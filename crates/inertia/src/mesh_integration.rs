@@ -232,7 +232,11 @@ impl MeshMoments {
             });
         }
         let (c, inertia) = self.central(density);
-        MassProperties::try_new(density * self.zeroth, self.origin + c, inertia)
+        Ok(MassProperties::try_new(
+            density * self.zeroth,
+            self.origin + c,
+            inertia,
+        )?)
     }
 
     /// The centre of mass relative to the origin, and the inertia tensor

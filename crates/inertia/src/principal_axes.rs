@@ -4,7 +4,7 @@
 use glam::{DMat3, DQuat, DVec3};
 use kreisel_kinematics::quat_from_rotation_matrix;
 
-use crate::InertiaError;
+use crate::MassPropertiesError;
 
 /// Principal moments of inertia and the principal frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -25,7 +25,9 @@ impl PrincipalAxes {
     /// [`PrincipalAxes::from_tensor`] gives NaN throughout).
     ///
     /// # Errors
-    /// [`InertiaError::UnphysicalInertia`] if an element is NaN or infinite.
+    /// [`MassPropertiesError::TensorNotFinite`] if an element is NaN or
+    /// infinite, [`MassPropertiesError::MomentsOverflow`] if the moments of
+    /// a finite tensor overflow.
     ///
     /// ```
     /// use glam::{DMat3, DVec3};
@@ -33,18 +35,16 @@ impl PrincipalAxes {
     /// let p = PrincipalAxes::try_from_tensor(DMat3::from_diagonal(DVec3::new(2.0, 1.0, 3.0)))?;
     /// assert_eq!(p.moments, DVec3::new(1.0, 2.0, 3.0));
     /// assert!(PrincipalAxes::try_from_tensor(DMat3::from_diagonal(DVec3::INFINITY)).is_err());
-    /// # Ok::<(), kreisel_inertia::InertiaError>(())
+    /// # Ok::<(), kreisel_inertia::MassPropertiesError>(())
     /// ```
-    pub fn try_from_tensor(tensor: DMat3) -> Result<Self, InertiaError> {
+    pub fn try_from_tensor(tensor: DMat3) -> Result<Self, MassPropertiesError> {
         if !tensor.is_finite() {
-            return Err(InertiaError::UnphysicalInertia {
-                reason: "tensor has a non-finite element".into(),
-            });
+            return Err(MassPropertiesError::TensorNotFinite);
         }
         let axes = Self::from_tensor(tensor);
         if !axes.moments.is_finite() {
-            return Err(InertiaError::UnphysicalInertia {
-                reason: format!("principal moments {} exceed the range of f64", axes.moments),
+            return Err(MassPropertiesError::MomentsOverflow {
+                moments: axes.moments,
             });
         }
         Ok(axes)

@@ -176,8 +176,8 @@ fn key_error(problem: BodyKeyProblem) -> PyErr {
         )),
         BodyKeyProblem::Library {
             key: BodyKey::Tensor,
-            error: DynamicsError::InertiaTensor { reason },
-        } => error(format!("inertia: {reason}")),
+            error: DynamicsError::InertiaTensor { error: e },
+        } => error(format!("inertia: {e}")),
         BodyKeyProblem::Library { error: e, .. } => world_error(e),
         // Only a scene's bodies stand on the ground plane.
         other @ (BodyKeyProblem::VelocityWithRolling

@@ -148,11 +148,8 @@ impl<A: Clone> BodyRequest<A> {
             }
             (Inertia::Tensor(rows), Some((mass, _))) => {
                 let tensor = DMat3::from_cols_array_2d(rows).transpose();
-                let props = MassProperties::try_new(*mass, DVec3::ZERO, tensor).map_err(|e| {
-                    inertia_error(DynamicsError::InertiaTensor {
-                        reason: e.to_string(),
-                    })
-                })?;
+                let props = MassProperties::try_new(*mass, DVec3::ZERO, tensor)
+                    .map_err(|e| inertia_error(DynamicsError::from(e)))?;
                 Body::from_mass_properties(props)
             }
         };

@@ -147,11 +147,7 @@ impl HeavyTop {
         gravity_world: DVec3,
     ) -> Result<Self, DynamicsError> {
         check_finite("pivot", pivot_body)?;
-        mass_properties
-            .validate()
-            .map_err(|e| DynamicsError::InertiaTensor {
-                reason: e.to_string(),
-            })?;
+        mass_properties.validate()?;
         let about_pivot = MassProperties {
             center_of_mass: pivot_body,
             inertia: mass_properties.inertia_about_point(pivot_body),

@@ -635,19 +635,15 @@ impl BodyBuilder {
     /// assert!(matches!(Body::from_principal_moments(-1.0, DVec3::ONE).try_build(), Err(DynamicsError::InertiaTensor { .. })));
     /// ```
     pub fn try_build(self) -> Result<Body, DynamicsError> {
-        let tensor_error = |e: kreisel_inertia::InertiaError| DynamicsError::InertiaTensor {
-            reason: e.to_string(),
-        };
         let (mass_properties, rigid) = match self.inertia {
             Inertia::Principal { mass, moments } => {
                 let rigid = RigidBody::try_from_principal_moments(moments)?;
                 let props =
-                    MassProperties::try_new(mass, DVec3::ZERO, DMat3::from_diagonal(moments))
-                        .map_err(tensor_error)?;
+                    MassProperties::try_new(mass, DVec3::ZERO, DMat3::from_diagonal(moments))?;
                 (props, rigid)
             }
             Inertia::Properties(props) => {
-                props.validate().map_err(tensor_error)?;
+                props.validate()?;
                 (props, RigidBody::from_mass_properties(&props)?)
             }
         };
