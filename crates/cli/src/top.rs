@@ -402,7 +402,8 @@ pub fn run(command: &TopCommand) -> Result<(), CliError> {
 mod tests {
     use super::*;
 
-    fn args() -> TopArgs {
+    /// The top of the CLI's tests (also `output.rs`'s).
+    pub(super) fn args() -> TopArgs {
         TopArgs {
             i1: 0.3,
             i3: 0.1,

@@ -145,21 +145,11 @@ pub fn text(s: &Summary, degrees: bool) -> String {
 
 #[cfg(test)]
 mod tests {
-    use kreisel_scene::top_summary::TopRequest;
-
     use super::*;
 
     fn summary() -> Summary {
         Summary {
-            top: TopRequest {
-                i1: 0.3,
-                i3: 0.1,
-                mgl: 2.0,
-                theta0: 0.5,
-                theta_dot0: 0.0,
-                phi_dot0: 0.0,
-                psi_dot0: 60.0,
-            },
+            top: crate::top::tests::args().request(),
             a: 20.0,
             b: 17.5,
             alpha: 11.7,
