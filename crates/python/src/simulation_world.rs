@@ -14,7 +14,7 @@ use pyo3::types::PyDict;
 
 use kreisel_scene::body_key::{BodyKey, BodyKeyProblem};
 use kreisel_scene::body_request::{Attitude, BodyRequest, Inertia};
-use kreisel_scene::contact_keys::Contacts;
+use kreisel_scene::contact_list::Contacts;
 use kreisel_scene::numbers::Shortest;
 
 use super::table;
