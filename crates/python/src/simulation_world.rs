@@ -250,7 +250,8 @@ impl PyWorld {
     /// (disk), ``semi_axes`` (ellipsoid), ``mu`` (required, >= 0),
     /// ``restitution`` and ``tangential_restitution`` (in [0, 1], default
     /// 0), ``contensou_radius`` and ``rolling_resistance`` (m, default 0),
-    /// ``friction`` (only
+    /// ``air_viscosity`` (Pa s; a disk: Moffatt's air layer under the rim)
+    /// with ``air_gap`` (its floor, m, default 1e-6), ``friction`` (only
     /// ``"coulomb"``). A bad value raises KreiselError naming its key
     /// (``contacts[0].mu: ...``); a contact below the table names
     /// ``position``. ``events(body)`` lists what happens.
