@@ -2,14 +2,17 @@
 //! (dicts with the keys of a scene's `[[body.contact]]` table with
 //! `friction = "coulomb"`), and the table's events as tuples — those of
 //! `World.events` and those of `kreisel.simulate(..., events=True)` (the
-//! rows of the CLI's `--events` file). No physics here: the library's
-//! [`ContactLaw`] and shapes check the numbers, this names the key.
+//! rows of the CLI's `--events` file). No checks here: each dict fills in
+//! the scene layer's [`ContactRequest`], which checks it as it checks a
+//! scene's table; this converts the values and names the key.
 
 use glam::DVec3;
-use kreisel_dynamics::{
-    ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, SphereContact,
-    TableContact, TableEvent, TableEventKind, World,
+use kreisel_dynamics::{DynamicsError, TableContact, TableEvent, TableEventKind, World};
+use kreisel_scene::contact_key::{
+    ContactKey, ContactKeyError, ContactKeyProblem, NotFor, ShapeName, Surface,
 };
+use kreisel_scene::contact_list::on_table;
+use kreisel_scene::contact_request::ContactRequest;
 use kreisel_scene::events::{kind_name, merged};
 use kreisel_scene::run::Names;
 use pyo3::exceptions::PyTypeError;
@@ -21,144 +24,128 @@ use kreisel_scene::numbers::Shortest;
 use crate::arguments::{finite, numbers};
 use crate::errors::error;
 
-/// The keys of a contact dict (those of the scene's `[[body.contact]]`
-/// table that a body on the table takes).
-const KEYS: [&str; 11] = [
-    "shape",
-    "radius",
-    "center",
-    "normal",
-    "semi_axes",
-    "friction",
-    "mu",
-    "restitution",
-    "tangential_restitution",
-    "contensou_radius",
-    "rolling_resistance",
+/// The keys of a contact dict: those of the scene's `[[body.contact]]`
+/// table that a body on the table takes (all but `slip_velocity`).
+const KEYS: [ContactKey; 13] = [
+    ContactKey::Shape,
+    ContactKey::Radius,
+    ContactKey::Center,
+    ContactKey::Normal,
+    ContactKey::SemiAxes,
+    ContactKey::Friction,
+    ContactKey::Mu,
+    ContactKey::Restitution,
+    ContactKey::TangentialRestitution,
+    ContactKey::ContensouRadius,
+    ContactKey::RollingResistance,
+    ContactKey::AirViscosity,
+    ContactKey::AirGap,
 ];
 
-/// One contact dict, read key by key under the name `contacts[i]`.
-struct Keys<'a, 'py> {
-    name: &'a str,
-    dict: &'a Bound<'py, PyDict>,
+/// One contact dict (`name`: `contacts[i]`) as the scene layer's request:
+/// each value converted under its full name (`contacts[0].mu`), `None`
+/// as absent; the checks are the request's.
+fn request(name: &str, dict: &Bound<'_, PyDict>) -> PyResult<ContactRequest<()>> {
+    let mut r = ContactRequest::new(());
+    for (key, value) in dict.iter() {
+        let key: String = key.extract()?;
+        let full = format!("{name}.{key}");
+        let Some(known) = KEYS.into_iter().find(|k| k.name() == key) else {
+            let known = KEYS.map(ContactKey::name).join(", ");
+            return Err(error(format!("{full}: unknown key (known: {known})")));
+        };
+        if value.is_none() {
+            continue;
+        }
+        let vector = || numbers::<3>(&full, &value).map(|v| Some((DVec3::from_array(v), ())));
+        match known {
+            ContactKey::Shape => {
+                let shape: String = value
+                    .extract()
+                    .map_err(|_| PyTypeError::new_err(format!("{full} must be a str")))?;
+                r.shape = Some((shape, ()));
+            }
+            // Any value: what is not "coulomb" is refused, as it prints.
+            ContactKey::Friction => r.friction = Some((value.str()?.to_string(), ())),
+            ContactKey::Center => r.center = vector()?,
+            ContactKey::Normal => r.normal = vector()?,
+            ContactKey::SemiAxes => r.semi_axes = vector()?,
+            number => {
+                if let Some(slot) = r.number_mut(number) {
+                    *slot = Some((finite(&full, &value)?, ()));
+                }
+            }
+        }
+    }
+    Ok(r)
 }
 
-impl Keys<'_, '_> {
-    /// The value of `key`, if given (and not `None`).
-    fn get(&self, key: &str) -> PyResult<Option<Bound<'_, PyAny>>> {
-        Ok(self.dict.get_item(key)?.filter(|v| !v.is_none()))
-    }
-
-    /// The full name of `key` in messages: `contacts[0].mu`.
-    fn full(&self, key: &str) -> String {
-        format!("{}.{key}", self.name)
-    }
-
-    /// A finite number under `key`, or `default` when it is absent.
-    fn number(&self, key: &str, default: Option<f64>) -> PyResult<f64> {
-        match (self.get(key)?, default) {
-            (Some(v), _) => finite(&self.full(key), &v),
-            (None, Some(d)) => Ok(d),
-            (None, None) => Err(error(format!("{}: is missing", self.full(key)))),
-        }
-    }
-
-    /// A vector of 3 finite numbers under `key` (zero when absent and
-    /// `required` is false).
-    fn vector(&self, key: &str, required: bool) -> PyResult<DVec3> {
-        match self.get(key)? {
-            Some(v) => numbers::<3>(&self.full(key), &v).map(DVec3::from_array),
-            None if required => Err(error(format!("{}: is missing", self.full(key)))),
-            None => Ok(DVec3::ZERO),
-        }
-    }
-
-    /// `key` given where the shape has no use for it: an error.
-    fn unused(&self, key: &str, why: &str) -> PyResult<()> {
-        match self.get(key)? {
-            Some(_) => Err(error(format!("{}: {why}", self.full(key)))),
-            None => Ok(()),
-        }
-    }
-
-    /// A library error about a contact parameter, naming its key.
-    fn invalid(&self, e: DynamicsError) -> PyErr {
-        match e {
-            DynamicsError::InvalidContact {
-                parameter,
-                value,
-                reason,
-            } => error(format!(
-                "{}: {reason}, got {}",
-                self.full(parameter),
-                Shortest(value)
-            )),
-            other => error(format!("{}: {other}", self.name)),
-        }
-    }
-}
-
-/// The surface from `shape`, `radius`, `center`, `normal`, `semi_axes`.
-fn shape(keys: &Keys<'_, '_>) -> PyResult<ContactShape> {
-    let name: String = match keys.get("shape")? {
-        Some(v) => v
-            .extract()
-            .map_err(|_| PyTypeError::new_err(format!("{} must be a str", keys.full("shape"))))?,
-        None => return Err(error(format!("{}: is missing", keys.full("shape")))),
+/// The one line of a problem with the `contacts` argument, naming the
+/// key (`contacts[1].mu: …`).
+fn contact_error(e: ContactKeyError<()>) -> PyErr {
+    let place = e
+        .contact
+        .map_or_else(|| "contacts".to_owned(), |i| format!("contacts[{i}]"));
+    let full = |key: &str| format!("{place}.{key}");
+    let how_many = |given: usize| {
+        format!(
+            "contacts: {given} contacts: a body on the table has 1 to {}",
+            Surface::Table.most()
+        )
     };
-    let center = keys.vector("center", false)?;
-    let only_disk = "is only for a disk (its axis)";
-    let made = match name.as_str() {
-        "sphere" => {
-            keys.unused("normal", only_disk)?;
-            keys.unused("semi_axes", "is only for an ellipsoid")?;
-            SphereContact::try_new(keys.number("radius", None)?, center).map(ContactShape::Sphere)
+    let message = match &e.problem {
+        ContactKeyProblem::NoContacts => how_many(0),
+        ContactKeyProblem::TooMany { given, .. } => how_many(*given),
+        ContactKeyProblem::UnknownShape { name } => format!(
+            "{}: unknown contact shape '{name}' (known: {})",
+            full("shape"),
+            ShapeName::known()
+        ),
+        ContactKeyProblem::UnknownFriction { name }
+        | ContactKeyProblem::NotCoulomb { friction: name, .. } => format!(
+            "{}: a body on the table has friction 'coulomb' (the only law here), got {name}",
+            full("friction")
+        ),
+        ContactKeyProblem::Missing { key, .. } => format!("{}: is missing", full(key.name())),
+        ContactKeyProblem::NotFor { key, why } => {
+            let why = match why {
+                NotFor::OnlyDisk => "is only for a disk (its axis)",
+                NotFor::OnlyEllipsoid => "is only for an ellipsoid",
+                NotFor::Ellipsoid => "is not used by an ellipsoid (give semi_axes)",
+                NotFor::AirOnlyDisk => {
+                    "is Moffatt's air layer under a disk rim: only for shape 'disk'"
+                }
+                NotFor::NoAirViscosity => "needs air_viscosity (the air layer's viscosity)",
+                // A body on the ground's rules: not Python's.
+                _ => "has no meaning for a body on the table",
+            };
+            format!("{}: {why}", full(key.name()))
         }
-        "disk" => {
-            keys.unused("semi_axes", "is only for an ellipsoid")?;
-            let radius = keys.number("radius", None)?;
-            let normal = keys.vector("normal", true)?;
-            DiskContact::try_new(radius, center, normal).map(ContactShape::Disk)
+        ContactKeyProblem::NotFinite { key } => {
+            format!("{}: must be finite numbers", full(key.name()))
         }
-        "ellipsoid" => {
-            keys.unused("normal", only_disk)?;
-            keys.unused("radius", "is not used by an ellipsoid (give semi_axes)")?;
-            let axes = keys.vector("semi_axes", true)?;
-            EllipsoidContact::try_new(axes, center).map(ContactShape::Ellipsoid)
-        }
-        other => {
-            return Err(error(format!(
-                "{}: unknown contact shape '{other}' (known: sphere, disk, ellipsoid)",
-                keys.full("shape")
-            )));
-        }
+        ContactKeyProblem::NotPositive { key, value } => format!(
+            "{}: must be positive and finite, got {}",
+            full(key.name()),
+            Shortest(*value)
+        ),
+        ContactKeyProblem::Negative { key, value } => format!(
+            "{}: must be zero or positive and finite, got {}",
+            full(key.name()),
+            Shortest(*value)
+        ),
+        ContactKeyProblem::Library {
+            error:
+                DynamicsError::InvalidContact {
+                    parameter,
+                    value,
+                    reason,
+                },
+            ..
+        } => format!("{}: {reason}, got {}", full(parameter), Shortest(*value)),
+        ContactKeyProblem::Library { error, .. } => format!("{place}: {error}"),
     };
-    made.map_err(|e| keys.invalid(e))
-}
-
-/// The Coulomb law from `mu`, `restitution`, `tangential_restitution`,
-/// `contensou_radius`, `rolling_resistance` (the scene's defaults: 0).
-fn law(keys: &Keys<'_, '_>) -> PyResult<ContactLaw> {
-    if let Some(f) = keys.get("friction")? {
-        let name: String = f.extract().unwrap_or_default();
-        if name != "coulomb" {
-            return Err(error(format!(
-                "{}: a body on the table has friction 'coulomb' (the only law here), got {f}",
-                keys.full("friction")
-            )));
-        }
-    }
-    let mu = keys.number("mu", None)?;
-    let e = keys.number("restitution", Some(0.0))?;
-    let e_t = keys.number("tangential_restitution", Some(0.0))?;
-    let r_c = keys.number("contensou_radius", Some(0.0))?;
-    let delta = keys.number("rolling_resistance", Some(0.0))?;
-    ContactLaw::try_new(mu)
-        .and_then(|l| l.try_with_restitution(e))
-        .and_then(|l| l.try_with_tangential_restitution(e_t))
-        .and_then(|l| l.try_with_contensou_radius(r_c))
-        .and_then(|l| l.try_with_rolling_resistance(delta))
-        .map_err(|e| keys.invalid(e))
+    error(message)
 }
 
 /// The `contacts` argument: a list of dicts, each a contact shape and its
@@ -174,36 +161,17 @@ pub fn contacts(value: &Bound<'_, PyAny>) -> PyResult<Vec<TableContact>> {
         .ok()
         .filter(|_| !value.is_instance_of::<PyString>())
         .ok_or_else(|| PyTypeError::new_err("contacts must be a list of dicts"))?;
-    let n = list.len()?;
-    if n == 0 || n > kreisel_dynamics::TableBody::MAX_CONTACTS {
-        return Err(error(format!(
-            "contacts: {n} contacts: a body on the table has 1 to {}",
-            kreisel_dynamics::TableBody::MAX_CONTACTS
-        )));
-    }
-    (0..n)
+    let requests = (0..list.len()?)
         .map(|i| {
             let name = format!("contacts[{i}]");
             let item = list.get_item(i)?;
             let dict = item
                 .cast::<PyDict>()
                 .map_err(|_| PyTypeError::new_err(format!("{name} must be a dict")))?;
-            for key in dict.keys() {
-                let key: String = key.extract()?;
-                if !KEYS.contains(&key.as_str()) {
-                    return Err(error(format!(
-                        "{name}.{key}: unknown key (known: {})",
-                        KEYS.join(", ")
-                    )));
-                }
-            }
-            let keys = Keys { name: &name, dict };
-            Ok(TableContact {
-                shape: shape(&keys)?,
-                law: law(&keys)?,
-            })
+            request(&name, dict)
         })
-        .collect()
+        .collect::<PyResult<Vec<_>>>()?;
+    on_table(&requests, ()).map_err(contact_error)
 }
 
 /// The fields after `kind` of an event: the speeds of an impact, the

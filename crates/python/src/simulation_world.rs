@@ -14,7 +14,7 @@ use pyo3::types::PyDict;
 
 use kreisel_scene::body_key::{BodyKey, BodyKeyProblem};
 use kreisel_scene::body_request::{Attitude, BodyRequest, Inertia};
-use kreisel_scene::contact_keys::Contacts;
+use kreisel_scene::contact_list::Contacts;
 use kreisel_scene::numbers::Shortest;
 
 use super::table;
@@ -250,7 +250,8 @@ impl PyWorld {
     /// (disk), ``semi_axes`` (ellipsoid), ``mu`` (required, >= 0),
     /// ``restitution`` and ``tangential_restitution`` (in [0, 1], default
     /// 0), ``contensou_radius`` and ``rolling_resistance`` (m, default 0),
-    /// ``friction`` (only
+    /// ``air_viscosity`` (Pa s; a disk: Moffatt's air layer under the rim)
+    /// with ``air_gap`` (its floor, m, default 1e-6), ``friction`` (only
     /// ``"coulomb"``). A bad value raises KreiselError naming its key
     /// (``contacts[0].mu: ...``); a contact below the table names
     /// ``position``. ``events(body)`` lists what happens.

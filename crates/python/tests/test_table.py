@@ -178,12 +178,63 @@ def test_without_position_the_lowest_contact_touches():
         (dict(friction="sliding"), "contacts[0].friction:"),
         (dict(slip_velocity=1e-3), "contacts[0].slip_velocity: unknown key"),
         (dict(normal=(0, 0, 1)), "contacts[0].normal: is only for a disk"),
+        (
+            dict(shape="ellipsoid", radius=None, semi_axes=(0.2, -0.03, 0.02)),
+            "contacts[0].semi_axes: must be positive and finite, got -0.03",
+        ),
+        (dict(air_viscosity=1.8e-5), "contacts[0].air_viscosity: is Moffatt's air layer under a disk rim"),
+        (dict(air_gap=1e-6), "contacts[0].air_gap: needs air_viscosity"),
     ],
 )
 def test_bad_contact_keys_are_named(contact, message):
     with pytest.raises(kreisel.KreiselError) as e:
         ball_world(**contact)
     assert str(e.value).startswith(message), str(e.value)
+
+
+@pytest.mark.parametrize(
+    "air, message",
+    [
+        (
+            dict(air_viscosity=-1.0),
+            "contacts[0].air_viscosity: the air's viscosity must be finite and not negative, got -1",
+        ),
+        (
+            dict(air_viscosity=1.8e-5, air_gap=0.0),
+            "contacts[0].air_gap: the air layer's floor must be finite and positive, got 0",
+        ),
+    ],
+)
+def test_bad_air_layers_are_named(air, message):
+    world = kreisel.World(0.01, gravity=(0.0, 0.0, -G))
+    disk = dict(shape="disk", radius=0.05, normal=(0.0, 0.0, 1.0), mu=0.3, **air)
+    with pytest.raises(kreisel.KreiselError) as e:
+        world.add_body(0.2, moments=(1.25e-4, 1.25e-4, 2.5e-4), contacts=[disk])
+    assert str(e.value) == message
+    assert len(world) == 0
+
+
+def test_eulers_disk_takes_the_air_layer_of_its_scene(tmp_path):
+    # examples/scenes/euler_disk.toml from Python, on the CLI's grid: the air
+    # layer brings the disk down to Moffatt's breakdown, its first hop
+    # (lift_off) at the CLI's time; without the layer it rolls on.
+    rows = [parsed(r) for r in cli_events(SCENES / "euler_disk.toml", tmp_path)]
+    cli_hop = next(r[0] for r in rows if r[3] == "lift_off")
+
+    def hops(**air):
+        world = kreisel.World(0.01, gravity=(0.0, 0.0, -G))
+        rim = dict(shape="disk", radius=0.0375, normal=(0.0, 0.0, 1.0), friction="coulomb", mu=0.5, **air)
+        disk = world.add_body(
+            0.4, moments=(1.40625e-4, 1.40625e-4, 2.8125e-4), attitude=kreisel.from_euler("XYZ", [0.0, 0.2, 0.0]),
+            omega_body=(-14.418307381379831, 0.0, 0.0), contacts=[rim],
+        )  # fmt: skip
+        for _ in range(int(round(cli_hop / 0.01)) + 1):
+            world.advance_steps(1)
+        return [e[0] for e in world.events(disk) if e[2] == "lift_off"]
+
+    with_air = hops(air_viscosity=2.5e-3, air_gap=3.75e-5)
+    assert with_air and abs(with_air[0] - cli_hop) < 1e-9, (with_air, cli_hop)
+    assert hops() == []
 
 
 def test_a_body_inside_the_table_names_position():

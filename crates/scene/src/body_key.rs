@@ -6,6 +6,9 @@
 
 use kreisel_dynamics::DynamicsError;
 
+/// A value and where it was given.
+pub type Given<T, A> = Option<(T, A)>;
+
 /// A key of a body, whatever a client calls it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BodyKey {

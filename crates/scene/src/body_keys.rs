@@ -19,9 +19,10 @@ use kreisel_kinematics::EulerSequence;
 use serde::Deserialize;
 use toml::Spanned;
 
-use crate::body_key::{BodyKey, BodyKeyError, BodyKeyProblem};
-use crate::body_request::{Attitude, BodyRequest, Given, Inertia};
-use crate::contact_keys::{self as contact, Contacts, RawContacts};
+use crate::body_key::{BodyKey, BodyKeyError, BodyKeyProblem, Given};
+use crate::body_request::{Attitude, BodyRequest, Inertia};
+use crate::contact_keys::{self as contact, RawContacts};
+use crate::contact_list::Contacts;
 use crate::error::SceneError;
 use crate::numbers::Shortest;
 use crate::scene_keys::{Keys, SceneFile};

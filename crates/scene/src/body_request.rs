@@ -22,8 +22,8 @@ use kreisel_dynamics::{Body, BodyId, DynamicsError, Friction, Inputs, TableConta
 use kreisel_inertia::MassProperties;
 use kreisel_kinematics::try_normalize_quat;
 
-use crate::body_key::{BodyKey, BodyKeyError, BodyKeyProblem};
-use crate::contact_keys::Contacts;
+use crate::body_key::{BodyKey, BodyKeyError, BodyKeyProblem, Given};
+use crate::contact_list::Contacts;
 use crate::table_start::{sliding_at_start, touching};
 
 /// The inertia as given.
@@ -45,9 +45,6 @@ pub enum Attitude {
     /// A rotation computed already (from Euler angles), taken as it is.
     Rotation(DQuat),
 }
-
-/// A value and where it was given.
-pub type Given<T, A> = Option<(T, A)>;
 
 /// Everything a user gives of one body.
 #[derive(Debug, Clone)]

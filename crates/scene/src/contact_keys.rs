@@ -1,7 +1,9 @@
 //! A body's `[body.contact]` table: the surface that touches the ground
 //! plane z = 0 (a sphere, a disk rim, an ellipsoid with its semi-axes
-//! along the body axes) and the friction law there, checked key by key into the
-//! library's [`ContactShape`] and [`Friction`].
+//! along the body axes) and the friction law there, read with the spans
+//! of its keys into a [`ContactRequest`] each, which the scene layer
+//! checks (`contact_request.rs`, `contact_list.rs`, shared with Python's
+//! `World.add_body`); this file words their problems at their lines.
 //!
 //! ```text
 //! shape = "sphere" | "disk" | "ellipsoid"
@@ -23,12 +25,13 @@
 //! **`friction = "coulomb"`: the body is on the table.** A body whose
 //! contacts use `"coulomb"` moves with every one of them as a unilateral
 //! contact of the table `z = 0` — set-valued Coulomb friction with
-//! Contensou's drilling, Newton's impacts ([`ContactLaw`]) — by the
-//! library's event-driven [`kreisel_dynamics::TableMotion`]
-//! ([`kreisel_dynamics::Support::Table`]): each table gives its own law
-//! (`friction = "coulomb"` on every one of them, up to
-//! [`TableBody::MAX_CONTACTS`]; another friction model on the same body is
-//! an error), and the body may start above the table.
+//! Contensou's drilling, Newton's impacts
+//! ([`kreisel_dynamics::ContactLaw`]) — by the library's event-driven
+//! [`kreisel_dynamics::TableMotion`] ([`kreisel_dynamics::Support::Table`]):
+//! each table gives its own law (`friction = "coulomb"` on every one of
+//! them, up to [`kreisel_dynamics::TableBody::MAX_CONTACTS`]; another
+//! friction model on the same body is an error), and the body may start
+//! above the table.
 //!
 //! `[[body.contact]]`, an array of such tables: the first is the surface
 //! the body stands on; the others (at most [`MAX_OTHER_CONTACTS`]) are
@@ -40,25 +43,30 @@
 //! modelled).
 //!
 //! `slip_velocity` defaults to the library's
-//! [`Friction::DEFAULT_SLIP_VELOCITY`] (1 mm/s, Leine & Glocker's ε).
+//! [`kreisel_dynamics::Friction::DEFAULT_SLIP_VELOCITY`] (1 mm/s, Leine &
+//! Glocker's ε).
 
 #![forbid(unsafe_code)]
 
 use std::fmt;
-use std::str::FromStr;
 
 use glam::DVec3;
-use kreisel_dynamics::{
-    AirLayer, ContactLaw, ContactShape, DiskContact, DynamicsError, EllipsoidContact, Friction,
-    FrictionModel, MAX_OTHER_CONTACTS, SphereContact, TableBody, TableContact,
-};
+use kreisel_dynamics::{DynamicsError, FrictionModel, MAX_OTHER_CONTACTS};
 use serde::Deserialize;
 use serde::de::{self, Deserializer, MapAccess, SeqAccess, Visitor};
 use toml::Spanned;
 
+use crate::contact_key::{
+    ContactKey, ContactKeyError, ContactKeyProblem, FrictionName, Needs, NotFor, ShapeName, Surface,
+};
+use crate::contact_list::{self, Contacts};
+use crate::contact_request::ContactRequest;
 use crate::error::SceneError;
 use crate::numbers::Shortest;
 use crate::scene_keys::Keys;
+
+/// A span of the scene's text.
+type Span = std::ops::Range<usize>;
 
 /// A `[body.contact]` table as written.
 #[derive(Debug, Deserialize)]
@@ -82,7 +90,7 @@ pub struct RawContact {
 
 impl RawContact {
     /// Where the `mu` key is, if given.
-    pub fn mu_span(&self) -> Option<std::ops::Range<usize>> {
+    pub fn mu_span(&self) -> Option<Span> {
         self.mu.as_ref().map(Spanned::span)
     }
 }
@@ -100,9 +108,6 @@ pub fn painleve_message(index: usize, mu: f64, error: &DynamicsError) -> String 
         index + 1
     )
 }
-
-/// The friction name of the nonsmooth contacts of a body on the table.
-pub const COULOMB: &str = "coulomb";
 
 /// `[body.contact]` (one table) or `[[body.contact]]` (an array of them).
 #[derive(Debug)]
@@ -137,77 +142,9 @@ impl<'de> Deserialize<'de> for RawContacts {
     }
 }
 
-/// The names of the contact shapes (`shape = ...`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ShapeName {
-    /// A body-fixed sphere.
-    Sphere,
-    /// A body-fixed circular rim.
-    Disk,
-    /// A body-fixed ellipsoid.
-    Ellipsoid,
-}
-
-impl ShapeName {
-    /// Every shape, in the order listed in errors.
-    pub const ALL: [ShapeName; 3] = [Self::Sphere, Self::Disk, Self::Ellipsoid];
-
-    /// The name in a scene.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Sphere => "sphere",
-            Self::Disk => "disk",
-            Self::Ellipsoid => "ellipsoid",
-        }
-    }
-}
-
-impl FromStr for ShapeName {
-    type Err = String;
-
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Self::ALL
-            .into_iter()
-            .find(|m| m.name() == s)
-            .ok_or_else(|| {
-                let known = Self::ALL.map(Self::name).join(", ");
-                format!("unknown contact shape `{s}` (known: {known})")
-            })
-    }
-}
-
-/// A checked contact: the shape and the friction.
-#[derive(Debug, Clone, Copy)]
-pub struct CheckedContact {
-    /// The touching surface.
-    pub shape: ContactShape,
-    /// The friction law at the contact.
-    pub friction: Friction,
-}
-
-/// A body's checked contacts: on the ground (one touching, others
-/// watched) or on the table (every one a contact with its law).
-#[derive(Debug, Clone)]
-pub enum Contacts {
-    /// Regularised or rolling friction at the first table.
-    Ground(CheckedContacts),
-    /// `friction = "coulomb"`: every table, in order.
-    Table(Vec<TableContact>),
-}
-
-/// A body's checked contacts: the one it stands on, and the further
-/// shapes watched for touchdown (the tables after the first).
-#[derive(Debug, Clone)]
-pub struct CheckedContacts {
-    /// The first table: the surface touching the plane and its friction.
-    pub first: CheckedContact,
-    /// The shapes of the other tables, in order.
-    pub others: Vec<ContactShape>,
-}
-
 /// The `[[body.contact]]` tables of `contacts` with their spans (one
 /// `[body.contact]` table: that one, at the key's span).
-pub fn tables(contacts: &Spanned<RawContacts>) -> Vec<(&RawContact, std::ops::Range<usize>)> {
+pub fn tables(contacts: &Spanned<RawContacts>) -> Vec<(&RawContact, Span)> {
     match contacts.get_ref() {
         RawContacts::One(one) => vec![(one.as_ref(), contacts.span())],
         RawContacts::Many(many) => many.iter().map(|c| (c.get_ref(), c.span())).collect(),
@@ -216,355 +153,192 @@ pub fn tables(contacts: &Spanned<RawContacts>) -> Vec<(&RawContact, std::ops::Ra
 
 /// Checks the `contact` key of a body: one table, or an array of them
 /// (the first touching, the others watched; with `friction = "coulomb"`
-/// all of them on the table; module docs).
+/// all of them on the table; module docs), by [`contact_list::contacts`].
 ///
 /// # Errors
 /// [`SceneError::Scene`] naming the line and key of the first problem.
 pub fn check(keys: &Keys<'_>, contacts: &Spanned<RawContacts>) -> Result<Contacts, SceneError> {
     let tables = tables(contacts);
-    let Some(((first, _), others)) = tables.split_first() else {
-        return Err(keys.fail(contacts, "`contact` is an empty array: give one table"));
+    let requests: Vec<ContactRequest<Span>> = tables
+        .iter()
+        .map(|(raw, span)| request(raw, span.clone()))
+        .collect();
+    contact_list::contacts(&requests, contacts.span()).map_err(|e| contact_error(keys, &tables, e))
+}
+
+/// The request of one table given at `span`, each value at its span.
+fn request(raw: &RawContact, span: Span) -> ContactRequest<Span> {
+    let number = |v: &Option<Spanned<f64>>| v.as_ref().map(|v| (*v.get_ref(), v.span()));
+    let vector = |v: &Option<Spanned<[f64; 3]>>| {
+        v.as_ref()
+            .map(|v| (DVec3::from_array(*v.get_ref()), v.span()))
     };
-    let coulomb = tables.iter().find_map(|(raw, _)| {
-        raw.friction
-            .as_ref()
-            .filter(|f| f.get_ref().as_str() == COULOMB)
-    });
-    match coulomb {
-        Some(at) => on_table(keys, &tables, at).map(Contacts::Table),
-        None => on_ground(keys, first, others).map(Contacts::Ground),
+    let name = |v: &Spanned<String>| (v.get_ref().clone(), v.span());
+    ContactRequest {
+        contact: span,
+        shape: Some(name(&raw.shape)),
+        radius: number(&raw.radius),
+        center: vector(&raw.center),
+        normal: vector(&raw.normal),
+        semi_axes: vector(&raw.semi_axes),
+        friction: raw.friction.as_ref().map(name),
+        mu: number(&raw.mu),
+        slip_velocity: number(&raw.slip_velocity),
+        restitution: number(&raw.restitution),
+        tangential_restitution: number(&raw.tangential_restitution),
+        contensou_radius: number(&raw.contensou_radius),
+        rolling_resistance: number(&raw.rolling_resistance),
+        air_viscosity: number(&raw.air_viscosity),
+        air_gap: number(&raw.air_gap),
     }
 }
 
-/// The contacts of a body on the table: every table with
-/// `friction = "coulomb"` (`at`, the first such key, names the body's
-/// kind in the errors).
-fn on_table(
+/// The one line of a problem with the contact `tables` of a body, at its
+/// line.
+fn contact_error(
     keys: &Keys<'_>,
-    tables: &[(&RawContact, std::ops::Range<usize>)],
-    at: &Spanned<String>,
-) -> Result<Vec<TableContact>, SceneError> {
-    if let Some((_, span)) = tables.get(TableBody::MAX_CONTACTS) {
-        let message = format!(
-            "{} [[body.contact]] tables: a body on the table has at most {}",
-            tables.len(),
-            TableBody::MAX_CONTACTS
-        );
-        return Err(keys.fail_at(span.clone(), &message));
-    }
-    let mut checked = Vec::with_capacity(tables.len());
-    for (n, (raw, _)) in tables.iter().enumerate() {
-        let shape = shape(keys, raw)?;
-        let Some(given) = &raw.friction else {
-            let message = format!(
-                "`contact.friction` is missing: the body is on the table (friction \"coulomb\" \
-                 at line {}), and every [[body.contact]] gives its own law: friction = \"coulomb\" \
-                 with its mu (table #{})",
-                keys.line_of(at),
-                n + 1
-            );
-            return Err(keys.fail(&raw.shape, &message));
-        };
-        if given.get_ref() != COULOMB {
-            let message = format!(
-                "`contact.friction` = \"{}\" cannot be mixed with \"coulomb\" on one body (line \
-                 {}): a body on the table has friction \"coulomb\" at every contact",
-                given.get_ref(),
-                keys.line_of(at)
-            );
-            return Err(keys.fail(given, &message));
-        }
-        let law = law(keys, raw, given)?;
-        checked.push(TableContact { shape, law });
-    }
-    Ok(checked)
-}
-
-/// The law of a `friction = "coulomb"` table from `mu`, `restitution`,
-/// `tangential_restitution`, `contensou_radius` and `rolling_resistance`.
-fn law(
-    keys: &Keys<'_>,
-    raw: &RawContact,
-    given: &Spanned<String>,
-) -> Result<ContactLaw, SceneError> {
-    let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²)); \
-               \"coulomb\" is exact Coulomb friction";
-    not_with(keys, "slip_velocity", &raw.slip_velocity, why)?;
-    let what = "friction \"coulomb\" needs the coefficient μ (dimensionless)";
-    let mu = required(keys, "mu", &raw.mu, given, what)?;
-    // Each key's value, checked by the law itself; its error at the key.
-    let keyed = |value: &Spanned<f64>, made: Result<ContactLaw, DynamicsError>| {
-        made.map_err(|e| match e {
-            DynamicsError::InvalidContact {
-                parameter, reason, ..
-            } => keys.fail(
-                value,
-                &format!(
-                    "`contact.{parameter}` {reason}, got {}",
-                    Shortest(*value.get_ref())
-                ),
-            ),
-            other => keys.fail(value, &format!("`contact`: {other}")),
-        })
+    tables: &[(&RawContact, Span)],
+    e: ContactKeyError<Span>,
+) -> SceneError {
+    // The table's number (1-based), and the line of contact c's "coulomb".
+    let table = e.contact.map_or(0, |n| n + 1);
+    let named = |key: ContactKey| format!("`contact.{}`", key.name());
+    let coulomb_line = |c: usize| {
+        let friction = tables.get(c).and_then(|(raw, _)| raw.friction.as_ref());
+        friction.map_or(0, |f| keys.line_of(f))
     };
-    let mut law = keyed(mu, ContactLaw::try_new(*mu.get_ref()))?;
-    if let Some(e) = &raw.restitution {
-        law = keyed(e, law.try_with_restitution(*e.get_ref()))?;
-    }
-    if let Some(e) = &raw.tangential_restitution {
-        law = keyed(e, law.try_with_tangential_restitution(*e.get_ref()))?;
-    }
-    if let Some(r) = &raw.contensou_radius {
-        law = keyed(r, law.try_with_contensou_radius(*r.get_ref()))?;
-    }
-    if let Some(d) = &raw.rolling_resistance {
-        law = keyed(d, law.try_with_rolling_resistance(*d.get_ref()))?;
-    }
-    if let Some(viscosity) = &raw.air_viscosity {
-        if raw.shape.get_ref() != "disk" {
-            return Err(keys.fail(
-                viscosity,
-                "`contact.air_viscosity` is Moffatt's air layer under a disk rim: only for \
-                 shape = \"disk\"",
-            ));
-        }
-        let floor = raw
-            .air_gap
-            .as_ref()
-            .map_or(DEFAULT_AIR_GAP, |g| *g.get_ref());
-        let layer = AirLayer::try_new(*viscosity.get_ref(), floor);
-        let at = match &layer {
-            Err(DynamicsError::InvalidContact {
-                parameter: "air_gap",
-                ..
-            }) => raw.air_gap.as_ref().unwrap_or(viscosity),
-            _ => viscosity,
-        };
-        law = keyed(at, layer.map(|l| law.with_air_layer(l)))?;
-    } else {
-        let why = "needs `air_viscosity` (the air layer's viscosity)";
-        not_with(keys, "air_gap", &raw.air_gap, why)?;
-    }
-    Ok(law)
-}
-
-/// The contacts of a body on the ground: the first table touching, the
-/// others watched (module docs).
-fn on_ground(
-    keys: &Keys<'_>,
-    first: &RawContact,
-    others: &[(&RawContact, std::ops::Range<usize>)],
-) -> Result<CheckedContacts, SceneError> {
-    if let Some((_, span)) = others.get(MAX_OTHER_CONTACTS) {
-        let message = format!(
-            "{} [[body.contact]] tables: at most {} (the first touching the plane, up to \
-             {MAX_OTHER_CONTACTS} more watched for touchdown)",
-            1 + others.len(),
-            1 + MAX_OTHER_CONTACTS
-        );
-        return Err(keys.fail_at(span.clone(), &message));
-    }
-    let checked = CheckedContact {
-        shape: shape(keys, first)?,
-        friction: friction(keys, first)?,
-    };
-    let mut watched = Vec::with_capacity(others.len());
-    for (n, (raw, _)) in others.iter().enumerate() {
-        let why = format!(
-            "is only for the first contact (the one touching): [[body.contact]] #{} is \
-             watched for touchdown and exerts no force",
-            n + 2
-        );
-        watched.push(shape(keys, raw)?);
-        not_with(keys, "friction", &raw.friction, &why)?;
-        not_with(keys, "mu", &raw.mu, &why)?;
-        not_with(keys, "slip_velocity", &raw.slip_velocity, &why)?;
-        not_coulomb_keys(keys, raw, &why)?;
-    }
-    Ok(CheckedContacts {
-        first: checked,
-        others: watched,
-    })
-}
-
-/// The keys of friction "coulomb" given where they have no meaning
-/// (`why`): an error at the first one's line.
-fn not_coulomb_keys(keys: &Keys<'_>, raw: &RawContact, why: &str) -> Result<(), SceneError> {
-    not_with(keys, "restitution", &raw.restitution, why)?;
-    not_with(
-        keys,
-        "tangential_restitution",
-        &raw.tangential_restitution,
-        why,
-    )?;
-    not_with(keys, "contensou_radius", &raw.contensou_radius, why)?;
-    not_with(keys, "rolling_resistance", &raw.rolling_resistance, why)?;
-    not_with(keys, "air_viscosity", &raw.air_viscosity, why)?;
-    not_with(keys, "air_gap", &raw.air_gap, why)
-}
-
-/// The air layer's floor `h₀` when `air_gap` is not given, m.
-const DEFAULT_AIR_GAP: f64 = 1e-6;
-
-/// `key` given where it has no meaning: an error at its line.
-fn not_with<T>(
-    keys: &Keys<'_>,
-    key: &str,
-    value: &Option<Spanned<T>>,
-    why: &str,
-) -> Result<(), SceneError> {
-    match value {
-        Some(v) => Err(keys.fail(v, &format!("`contact.{key}` {why}"))),
-        None => Ok(()),
-    }
-}
-
-/// A required key, or an error at `shape`'s line.
-fn required<'v, T>(
-    keys: &Keys<'_>,
-    key: &str,
-    value: &'v Option<Spanned<T>>,
-    at: &Spanned<String>,
-    what: &str,
-) -> Result<&'v Spanned<T>, SceneError> {
-    value.as_ref().ok_or_else(|| {
-        let message = format!("`contact.{key}` is missing: {what}");
-        keys.fail(at, &message)
-    })
-}
-
-/// The surface from `shape`, `radius`, `center`, `normal`, `semi_axes`.
-fn shape(keys: &Keys<'_>, raw: &RawContact) -> Result<ContactShape, SceneError> {
-    let name: ShapeName = raw
-        .shape
-        .get_ref()
-        .parse()
-        .map_err(|e: String| keys.fail(&raw.shape, &format!("`contact.shape`: {e}")))?;
-    let center = match &raw.center {
-        Some(c) => keys.vector("contact.center", c)?,
-        None => DVec3::ZERO,
-    };
-    let radius_of = |keys: &Keys<'_>| -> Result<f64, SceneError> {
-        let r = required(
-            keys,
-            "radius",
-            &raw.radius,
-            &raw.shape,
-            "the radius in metres",
-        )?;
-        keys.positive("contact.radius", r)
-    };
-    if name != ShapeName::Ellipsoid {
-        let why = "is only for an ellipsoid";
-        not_with(keys, "semi_axes", &raw.semi_axes, why)?;
-    }
-    match name {
-        ShapeName::Sphere => {
-            not_with(keys, "normal", &raw.normal, "is only for a disk (its axis)")?;
-            let radius = radius_of(keys)?;
-            let sphere = SphereContact::try_new(radius, center)
-                .map_err(|e| keys.fail(&raw.shape, &format!("`contact`: {e}")))?;
-            Ok(ContactShape::Sphere(sphere))
-        }
-        ShapeName::Disk => {
-            let radius = radius_of(keys)?;
-            let normal = required(
-                keys,
-                "normal",
-                &raw.normal,
-                &raw.shape,
-                "a disk needs its axis in body coordinates",
-            )?;
-            let axis = keys.vector("contact.normal", normal)?;
-            let disk = DiskContact::try_new(radius, center, axis)
-                .map_err(|e| keys.fail(normal, &format!("`contact.normal`: {e}")))?;
-            Ok(ContactShape::Disk(disk))
-        }
-        ShapeName::Ellipsoid => {
-            not_with(
-                keys,
-                "radius",
-                &raw.radius,
-                "is not used by an ellipsoid (give `semi_axes`)",
-            )?;
-            not_with(keys, "normal", &raw.normal, "is only for a disk (its axis)")?;
-            let axes = required(
-                keys,
-                "semi_axes",
-                &raw.semi_axes,
-                &raw.shape,
-                "an ellipsoid needs its semi-axes a, b, c in metres",
-            )?;
-            let [a, b, c] = keys.finite("contact.semi_axes", axes)?;
-            if ![a, b, c].iter().all(|&x| x > 0.0) {
-                return Err(keys.fail(axes, "`contact.semi_axes` must be positive"));
-            }
-            let ellipsoid = EllipsoidContact::try_new(DVec3::new(a, b, c), center)
-                .map_err(|e| keys.fail(axes, &format!("`contact.semi_axes`: {e}")))?;
-            Ok(ContactShape::Ellipsoid(ellipsoid))
-        }
-    }
-}
-
-/// The friction law from `friction`, `mu` and `slip_velocity`.
-fn friction(keys: &Keys<'_>, raw: &RawContact) -> Result<Friction, SceneError> {
-    let given = required(
-        keys,
-        "friction",
-        &raw.friction,
-        &raw.shape,
-        "\"none\", \"viscous\", \"sliding\", \"rolling\" or \"coulomb\" at the contact the body \
-         stands on",
-    )?;
-    let model: FrictionModel = given.get_ref().parse().map_err(|e| match e {
-        DynamicsError::UnknownFriction { name, known } => keys.fail(
+    let message = match e.problem {
+        ContactKeyProblem::NoContacts => "`contact` is an empty array: give one table".to_owned(),
+        ContactKeyProblem::TooMany {
             given,
-            &format!(
-                "`contact.friction`: unknown friction model `{name}` (known: {known}, {COULOMB})"
-            ),
+            surface: Surface::Table,
+        } => format!(
+            "{given} [[body.contact]] tables: a body on the table has at most {}",
+            Surface::Table.most()
         ),
-        other => keys.fail(given, &format!("`contact.friction`: {other}")),
-    })?;
-    let unused = format!("is not used with friction \"{model}\"");
-    let only_coulomb = "is only for friction \"coulomb\" (a body on the table)";
-    not_coulomb_keys(keys, raw, only_coulomb)?;
-    if model != FrictionModel::Sliding {
-        let why = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²))";
-        not_with(keys, "slip_velocity", &raw.slip_velocity, why)?;
-    }
-    let mu = |keys: &Keys<'_>, unit: &str| -> Result<f64, SceneError> {
-        let what = format!("friction \"{model}\" needs the coefficient μ ({unit})");
-        let mu = required(keys, "mu", &raw.mu, given, &what)?;
-        let value = *mu.get_ref();
-        if value.is_finite() && value >= 0.0 {
-            Ok(value)
-        } else {
-            let message = format!(
-                "`contact.mu` must be zero or positive and finite, got {}",
-                Shortest(value)
-            );
-            Err(keys.fail(mu, &message))
-        }
-    };
-    match model {
-        FrictionModel::None => {
-            not_with(keys, "mu", &raw.mu, &unused)?;
-            Ok(Friction::None)
-        }
-        FrictionModel::Rolling => {
-            not_with(keys, "mu", &raw.mu, &unused)?;
-            Ok(Friction::Rolling)
-        }
-        FrictionModel::Viscous => Ok(Friction::Viscous {
-            mu: mu(keys, "s/m")?,
-        }),
-        FrictionModel::Sliding => {
-            let mu = mu(keys, "Coulomb's, dimensionless")?;
-            let slip_velocity = match &raw.slip_velocity {
-                Some(v) => keys.positive("contact.slip_velocity", v)?,
-                None => Friction::DEFAULT_SLIP_VELOCITY,
+        ContactKeyProblem::TooMany {
+            given,
+            surface: Surface::Ground,
+        } => format!(
+            "{given} [[body.contact]] tables: at most {} (the first touching the plane, up to \
+             {MAX_OTHER_CONTACTS} more watched for touchdown)",
+            Surface::Ground.most()
+        ),
+        ContactKeyProblem::UnknownShape { name } => format!(
+            "`contact.shape`: unknown contact shape `{name}` (known: {})",
+            ShapeName::known()
+        ),
+        ContactKeyProblem::UnknownFriction { name } => format!(
+            "`contact.friction`: unknown friction model `{name}` (known: {})",
+            FrictionName::known()
+        ),
+        ContactKeyProblem::Missing { key, needs } => {
+            let what = match needs {
+                Needs::TableLaw { coulomb } => format!(
+                    "the body is on the table (friction \"coulomb\" at line {}), and every \
+                     [[body.contact]] gives its own law: friction = \"coulomb\" with its mu \
+                     (table #{table})",
+                    coulomb_line(coulomb)
+                ),
+                other => needed_for(key, other),
             };
-            Ok(Friction::Sliding { mu, slip_velocity })
+            format!("{} is missing: {what}", named(key))
         }
+        ContactKeyProblem::NotFor { key, why } => format!("{} {}", named(key), unused(why, table)),
+        ContactKeyProblem::NotFinite { key } => format!("{} must be finite numbers", named(key)),
+        ContactKeyProblem::NotPositive {
+            key: ContactKey::SemiAxes,
+            ..
+        } => "`contact.semi_axes` must be positive".to_owned(),
+        ContactKeyProblem::NotPositive { key, value } => format!(
+            "{} must be positive and finite, got {}",
+            named(key),
+            Shortest(value)
+        ),
+        ContactKeyProblem::Negative { key, value } => format!(
+            "{} must be zero or positive and finite, got {}",
+            named(key),
+            Shortest(value)
+        ),
+        ContactKeyProblem::NotCoulomb { friction, coulomb } => format!(
+            "`contact.friction` = \"{friction}\" cannot be mixed with \"coulomb\" on one body \
+             (line {}): a body on the table has friction \"coulomb\" at every contact",
+            coulomb.map_or(0, coulomb_line)
+        ),
+        ContactKeyProblem::Library { key, error } => refused(key, &error),
+    };
+    keys.fail_at(e.at, &message)
+}
+
+/// What a missing `key` is needed for (`needs`; a body on the table's
+/// law is worded with its line by [`contact_error`]).
+fn needed_for(key: ContactKey, needs: Needs) -> String {
+    match (needs, key) {
+        (Needs::Coefficient { friction }, _) => {
+            let unit = match friction {
+                FrictionName::Ground(FrictionModel::Viscous) => "s/m",
+                FrictionName::Ground(FrictionModel::Sliding) => "Coulomb's, dimensionless",
+                _ => "dimensionless",
+            };
+            format!(
+                "friction \"{}\" needs the coefficient μ ({unit})",
+                friction.name()
+            )
+        }
+        (Needs::Standing | Needs::TableLaw { .. }, _) => "\"none\", \"viscous\", \"sliding\", \
+             \"rolling\" or \"coulomb\" at the contact the body stands on"
+            .to_owned(),
+        (Needs::Shape, ContactKey::Radius) => "the radius in metres".to_owned(),
+        (Needs::Shape, ContactKey::Normal) => {
+            "a disk needs its axis in body coordinates".to_owned()
+        }
+        (Needs::Shape, ContactKey::SemiAxes) => {
+            "an ellipsoid needs its semi-axes a, b, c in metres".to_owned()
+        }
+        (Needs::Shape, _) => format!("one of {}", ShapeName::known()),
+    }
+}
+
+/// Why a key has no meaning where it is given (on table number `table`).
+fn unused(why: NotFor, table: usize) -> String {
+    const SLIDING: &str = "is only for friction \"sliding\" (the ε of F = −μ N v/√(|v|² + ε²))";
+    match why {
+        NotFor::OnlyDisk => "is only for a disk (its axis)".to_owned(),
+        NotFor::OnlyEllipsoid => "is only for an ellipsoid".to_owned(),
+        NotFor::Ellipsoid => "is not used by an ellipsoid (give `semi_axes`)".to_owned(),
+        NotFor::OnlySliding {
+            friction: FrictionName::Coulomb,
+        } => format!("{SLIDING}; \"coulomb\" is exact Coulomb friction"),
+        NotFor::OnlySliding { .. } => SLIDING.to_owned(),
+        NotFor::NoCoefficient { friction } => {
+            format!("is not used with friction \"{}\"", friction.name())
+        }
+        NotFor::OnlyCoulomb => "is only for friction \"coulomb\" (a body on the table)".to_owned(),
+        NotFor::Watched => format!(
+            "is only for the first contact (the one touching): [[body.contact]] #{table} is \
+             watched for touchdown and exerts no force"
+        ),
+        NotFor::AirOnlyDisk => {
+            "is Moffatt's air layer under a disk rim: only for shape = \"disk\"".to_owned()
+        }
+        NotFor::NoAirViscosity => "needs `air_viscosity` (the air layer's viscosity)".to_owned(),
+    }
+}
+
+/// The library's refusal of the value of `key`: the law's parameters
+/// with their value, a shape's error as the library words it.
+fn refused(key: ContactKey, error: &DynamicsError) -> String {
+    match (key, error) {
+        (ContactKey::Shape, e) => format!("`contact`: {e}"),
+        (ContactKey::Normal | ContactKey::SemiAxes, e) => format!("`contact.{}`: {e}", key.name()),
+        (
+            _,
+            DynamicsError::InvalidContact {
+                parameter,
+                value,
+                reason,
+            },
+        ) => format!("`contact.{parameter}` {reason}, got {}", Shortest(*value)),
+        (_, e) => format!("`contact`: {e}"),
     }
 }
