@@ -12,7 +12,7 @@ use std::io::Write;
 use std::path::Path;
 
 use glam::DVec3;
-use kreisel_dynamics::{BodyId, DynamicsError, Plan, World};
+use kreisel_dynamics::{BodyId, Plan, World};
 use kreisel_inertia::io::{SolidOptions, SolidWarning, load_solid};
 use kreisel_inertia::{MassProperties, Material};
 use kreisel_kinematics::EulerSequence;
@@ -23,7 +23,7 @@ use crate::body_key::{BodyKey, BodyKeyError, BodyKeyProblem, Given};
 use crate::body_request::{Attitude, BodyRequest, Inertia};
 use crate::contact_keys::{self as contact, RawContacts};
 use crate::contact_list::Contacts;
-use crate::error::SceneError;
+use crate::error::{KeyProblem, SceneError};
 use crate::numbers::Shortest;
 use crate::scene_keys::{Keys, SceneFile};
 
@@ -102,7 +102,9 @@ impl RawBody {
 /// checked, and the body built and added, by [`BodyRequest::add_to`].
 ///
 /// # Errors
-/// [`SceneError::Scene`] naming the line and key of the first problem.
+/// [`SceneError::Key`] (typed: the body's or a contact's problem) or
+/// [`SceneError::Scene`] (a value's type, the mesh, Euler angles) naming the
+/// line and key of the first problem.
 pub fn add_body(
     file: SceneFile<'_>,
     raw: &Spanned<RawBody>,
@@ -115,7 +117,7 @@ pub fn add_body(
         Some(name) => checked_name(file, name)?,
         None => format!("body{number}"),
     };
-    let keys = Keys::new(file, format!("body `{name}`: "));
+    let keys = Keys::of_body(file, &name);
     let fail = |e: BodyKeyError<Span>| body_error(&keys, b, e);
     let given: Vec<(BodyKey, Span)> = [
         (BodyKey::Moments, b.inertia.as_ref().map(Spanned::span)),
@@ -198,8 +200,8 @@ fn key_name(key: BodyKey) -> &'static str {
 /// The one line of a problem with body `b`'s keys, at its line.
 fn body_error(keys: &Keys<'_>, b: &RawBody, e: BodyKeyError<Span>) -> SceneError {
     const ONE_OF: &str = "use exactly one of `inertia`, `inertia_tensor` and `mesh`";
-    let at = e.at;
-    let message = match e.problem {
+    let (at, problem) = (e.at, e.problem);
+    let message = match problem.clone() {
         BodyKeyProblem::NoInertia => format!("no inertia given: {ONE_OF}"),
         BodyKeyProblem::TwoInertias { first, second } => format!(
             "both `{}` and `{}` given: {ONE_OF}",
@@ -239,31 +241,39 @@ fn body_error(keys: &Keys<'_>, b: &RawBody, e: BodyKeyError<Span>) -> SceneError
             Shortest(value)
         ),
         BodyKeyProblem::InsideTable { contact, gap, .. } => {
-            return inside_table(keys, b.position.as_ref(), b.contact.as_ref(), contact, gap);
+            let (span, message) =
+                inside_table(b.position.as_ref(), b.contact.as_ref(), contact, gap);
+            return keys.fail_key(span, KeyProblem::Body(problem), &message);
         }
         BodyKeyProblem::WatchedTouching { index, gap } => {
-            return watched_touching(keys, b.contact.as_ref(), index, gap);
+            let (span, message) = watched_touching(b.contact.as_ref(), index, gap);
+            return keys.fail_key(span, KeyProblem::Body(problem), &message);
         }
-        BodyKeyProblem::Painleve { contact, mu, error } => {
-            return painleve_at_start(keys, b.contact.as_ref(), contact, mu, &error);
+        BodyKeyProblem::Painleve {
+            contact,
+            mu,
+            ref error,
+        } => {
+            let span = table_span(b.contact.as_ref(), contact, true);
+            let message = contact::painleve_message(contact, mu, error);
+            return keys.fail_key(span, KeyProblem::Body(problem), &message);
         }
         BodyKeyProblem::Library { key, error } => match key {
             BodyKey::Body | BodyKey::Omega => error.to_string(),
             other => format!("`{}`: {error}", key_name(other)),
         },
     };
-    keys.fail_at(at, &message)
+    keys.fail_key(at, KeyProblem::Body(problem), &message)
 }
 
 /// The error for further contact `index` (0-based among the watched
 /// ones, the table after the first) at or below the plane at the start,
 /// at its table's line.
 fn watched_touching(
-    keys: &Keys<'_>,
     contacts: Option<&Spanned<RawContacts>>,
     index: usize,
     gap: f64,
-) -> SceneError {
+) -> (Span, String) {
     let span = table_span(contacts, index + 1, false);
     let message = format!(
         "[[body.contact]] #{} is at or below the plane at the start (its lowest point at \
@@ -272,20 +282,7 @@ fn watched_touching(
         index + 2,
         Shortest(gap)
     );
-    keys.fail_at(span, &message)
-}
-
-/// The error for Painlevé's case when a body on the table is added: at
-/// the `mu` key of its contact `index` (else that table), with its `mu`.
-fn painleve_at_start(
-    keys: &Keys<'_>,
-    contacts: Option<&Spanned<RawContacts>>,
-    index: usize,
-    mu: f64,
-    error: &DynamicsError,
-) -> SceneError {
-    let span = table_span(contacts, index, true);
-    keys.fail_at(span, &contact::painleve_message(index, mu, error))
+    (span, message)
 }
 
 /// Where contact table `index` (0-based) of `contacts` is — its `mu` key
@@ -304,12 +301,11 @@ fn table_span(contacts: Option<&Spanned<RawContacts>>, index: usize, mu: bool) -
 /// it at the start, at the `position` key if given, else at the table's
 /// line.
 fn inside_table(
-    keys: &Keys<'_>,
     position: Option<&Spanned<[f64; 3]>>,
     contacts: Option<&Spanned<RawContacts>>,
     index: usize,
     gap: f64,
-) -> SceneError {
+) -> (Span, String) {
     let message = format!(
         "[[body.contact]] #{} is below the table at the start (its lowest point at z = {} m): \
          a body on the table starts above it or touching it",
@@ -317,8 +313,8 @@ fn inside_table(
         Shortest(gap)
     );
     match position {
-        Some(p) => keys.fail(p, &format!("`position`: {message}")),
-        None => keys.fail_at(table_span(contacts, index, false), &message),
+        Some(p) => (p.span(), format!("`position`: {message}")),
+        None => (table_span(contacts, index, false), message),
     }
 }
 

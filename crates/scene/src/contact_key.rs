@@ -91,20 +91,33 @@ impl ShapeName {
         }
     }
 
-    /// The shape called `name`, if there is one.
-    ///
-    /// ```
-    /// use kreisel_scene::contact_key::ShapeName;
-    /// assert_eq!(ShapeName::named("disk"), Some(ShapeName::Disk));
-    /// assert_eq!(ShapeName::named("cube"), None);
-    /// ```
-    pub fn named(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|s| s.name() == name)
-    }
-
     /// The names of every shape, comma-separated (for errors).
     pub fn known() -> String {
         Self::ALL.map(Self::name).join(", ")
+    }
+}
+
+impl std::str::FromStr for ShapeName {
+    type Err = ContactKeyProblem;
+
+    /// The shape called `name`.
+    ///
+    /// # Errors
+    /// [`ContactKeyProblem::UnknownShape`] for a name not in [`ShapeName::ALL`].
+    ///
+    /// ```
+    /// use kreisel_scene::contact_key::{ContactKeyProblem, ShapeName};
+    /// assert_eq!("disk".parse(), Ok(ShapeName::Disk));
+    /// let e = "cube".parse::<ShapeName>().unwrap_err();
+    /// assert_eq!(e, ContactKeyProblem::UnknownShape { name: "cube".to_owned() });
+    /// ```
+    fn from_str(name: &str) -> Result<Self, Self::Err> {
+        Self::ALL
+            .into_iter()
+            .find(|s| s.name() == name)
+            .ok_or_else(|| ContactKeyProblem::UnknownShape {
+                name: name.to_owned(),
+            })
     }
 }
 

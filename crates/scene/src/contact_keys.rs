@@ -61,7 +61,7 @@ use crate::contact_key::{
 };
 use crate::contact_list::{self, Contacts};
 use crate::contact_request::ContactRequest;
-use crate::error::SceneError;
+use crate::error::{KeyProblem, SceneError};
 use crate::numbers::Shortest;
 use crate::scene_keys::Keys;
 
@@ -156,7 +156,8 @@ pub fn tables(contacts: &Spanned<RawContacts>) -> Vec<(&RawContact, Span)> {
 /// all of them on the table; module docs), by [`contact_list::contacts`].
 ///
 /// # Errors
-/// [`SceneError::Scene`] naming the line and key of the first problem.
+/// [`SceneError::Key`] naming the line and key of the first problem, typed
+/// ([`crate::error::KeyProblem::Contact`]).
 pub fn check(keys: &Keys<'_>, contacts: &Spanned<RawContacts>) -> Result<Contacts, SceneError> {
     let tables = tables(contacts);
     let requests: Vec<ContactRequest<Span>> = tables
@@ -207,7 +208,7 @@ fn contact_error(
         let friction = tables.get(c).and_then(|(raw, _)| raw.friction.as_ref());
         friction.map_or(0, |f| keys.line_of(f))
     };
-    let message = match e.problem {
+    let message = match e.problem.clone() {
         ContactKeyProblem::NoContacts => "`contact` is an empty array: give one table".to_owned(),
         ContactKeyProblem::TooMany {
             given,
@@ -267,7 +268,11 @@ fn contact_error(
         ),
         ContactKeyProblem::Library { key, error } => refused(key, &error),
     };
-    keys.fail_at(e.at, &message)
+    let problem = KeyProblem::Contact {
+        contact: e.contact,
+        problem: e.problem,
+    };
+    keys.fail_key(e.at, problem, &message)
 }
 
 /// What a missing `key` is needed for (`needs`; a body on the table's

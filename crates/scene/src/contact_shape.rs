@@ -27,10 +27,7 @@ impl<A: Clone> ContactRequest<A> {
     /// The surface from `shape`, `radius`, `center`, `normal`, `semi_axes`.
     pub(crate) fn shape(&self) -> Result<(ShapeName, ContactShape), Fault<A>> {
         let (given, at) = needed(&self.shape, ContactKey::Shape, Needs::Shape, &self.contact)?;
-        let name = ShapeName::named(given).ok_or_else(|| {
-            let name = given.clone();
-            (at.clone(), ContactKeyProblem::UnknownShape { name })
-        })?;
+        let name: ShapeName = given.parse().map_err(|p| (at.clone(), p))?;
         let center = match &self.center {
             Some((c, at)) => finite(*c, ContactKey::Center, at)?,
             None => DVec3::ZERO,

@@ -10,6 +10,8 @@ use std::path::PathBuf;
 use kreisel_dynamics::{DynamicsError, FreeBodyMethod, HeavyTopMethod};
 use kreisel_inertia::InertiaError;
 
+use crate::body_key::BodyKeyProblem;
+use crate::contact_key::ContactKeyProblem;
 use crate::numbers::Shortest;
 
 /// Everything that makes a scene, mesh or heavy-top request fail.
@@ -72,6 +74,22 @@ pub enum SceneError {
         /// What is wrong, naming the key (one line).
         message: String,
     },
+    /// A body's keys that do not fit together, or that the library
+    /// refuses: `SCENE:LINE: body `name`: message`, with the problem typed
+    /// (which key, which value, which contact) for programs.
+    #[error("{}:{line}: {message}", path.display())]
+    Key {
+        /// The scene file as given.
+        path: PathBuf,
+        /// The 1-based line of the offending key or table.
+        line: u64,
+        /// The body's name.
+        body: String,
+        /// What is wrong, typed (boxed: the error stays small).
+        problem: Box<KeyProblem>,
+        /// The same in words, naming the body and the key (one line).
+        message: String,
+    },
     /// A parameter of a request with a value that cannot be used, named as
     /// the CLI's option (`--i1`; Python names its keyword instead).
     #[error("{argument}: {message}")]
@@ -92,6 +110,21 @@ pub enum SceneError {
     Method {
         /// What is wrong with it.
         problem: MethodProblem,
+    },
+}
+
+/// A typed problem with a body's keys ([`SceneError::Key`]): the body's
+/// own, or one of its contacts'.
+#[derive(Debug, Clone, PartialEq)]
+pub enum KeyProblem {
+    /// The body's keys ([`BodyKeyProblem`]).
+    Body(BodyKeyProblem),
+    /// Its contacts' keys ([`ContactKeyProblem`]).
+    Contact {
+        /// The contact, 0-based (none: the list as a whole).
+        contact: Option<usize>,
+        /// What is wrong.
+        problem: ContactKeyProblem,
     },
 }
 

@@ -301,6 +301,56 @@ mod tests {
     }
 
     #[test]
+    fn key_problems_are_typed() {
+        use crate::body_key::BodyKeyProblem;
+        use crate::contact_key::{ContactKey, ContactKeyProblem, Needs};
+        use crate::error::KeyProblem;
+        let typed = |text: &str| match parse(Path::new("s.toml"), text) {
+            Err(SceneError::Key {
+                line,
+                body,
+                problem,
+                message,
+                ..
+            }) => (line, body, *problem, message),
+            other => panic!("not a key problem: {other:?}"),
+        };
+        let body = "[[body]]\nname = \"top\"\nmass = 1\ninertia = [1, 1, 1]\nangular_velocity = [0, 0, 1]\n";
+        let (line, name, problem, message) = typed(&format!("{SIM}{body}angular_damping = -2\n"));
+        assert_eq!((line, name.as_str()), (9, "top"));
+        assert_eq!(
+            problem,
+            KeyProblem::Body(BodyKeyProblem::Damping { value: -2.0 })
+        );
+        assert!(
+            message.starts_with("body `top`: `angular_damping`"),
+            "{message}"
+        );
+        let contact =
+            "[[body.contact]]\nshape = \"sphere\"\nradius = 0.1\nfriction = \"sliding\"\n";
+        let (line, _, problem, _) =
+            typed(&format!("{SIM}gravity = [0, 0, -9.81]\n{body}{contact}"));
+        let missing = ContactKeyProblem::Missing {
+            key: ContactKey::Mu,
+            needs: Needs::Coefficient {
+                friction: crate::contact_key::FrictionName::Ground(
+                    kreisel_dynamics::FrictionModel::Sliding,
+                ),
+            },
+        };
+        assert_eq!(line, 13, "at the friction key");
+        let contact = KeyProblem::Contact {
+            contact: Some(0),
+            problem: missing,
+        };
+        assert_eq!(problem, contact);
+        let (_, _, problem, _) = typed(&format!(
+            "{SIM}{body}pivot = [0, 0, 0]\nvelocity = [1, 0, 0]\n"
+        ));
+        assert_eq!(problem, KeyProblem::Body(BodyKeyProblem::VelocityWithPivot));
+    }
+
+    #[test]
     fn body_names_must_differ() {
         let body =
             "[[body]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 1]\nangular_velocity = [0, 0, 1]\n";

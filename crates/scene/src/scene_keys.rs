@@ -8,7 +8,7 @@ use std::path::Path;
 use glam::DVec3;
 use toml::Spanned;
 
-use crate::error::{SceneError, one_line};
+use crate::error::{KeyProblem, SceneError, one_line};
 use crate::numbers::Shortest;
 
 /// The scene's path and text: turns spans into line numbers for errors.
@@ -46,18 +46,45 @@ impl SceneFile<'_> {
 pub struct Keys<'a> {
     file: SceneFile<'a>,
     prefix: String,
+    body: String,
 }
 
 impl<'a> Keys<'a> {
     /// Checks whose errors start with `prefix`.
     pub fn new(file: SceneFile<'a>, prefix: String) -> Self {
-        Self { file, prefix }
+        Self {
+            file,
+            prefix,
+            body: String::new(),
+        }
+    }
+
+    /// Checks of the keys of the body called `name` (errors start with
+    /// ``body `name`: ``).
+    pub fn of_body(file: SceneFile<'a>, name: &str) -> Self {
+        Self {
+            file,
+            prefix: format!("body `{name}`: "),
+            body: name.to_owned(),
+        }
     }
 
     /// An error at the line of `span`.
     pub fn fail_at(&self, span: Range<usize>, message: &str) -> SceneError {
         self.file
             .error(Some(span), &format!("{}{message}", self.prefix))
+    }
+
+    /// A typed problem with the body's keys ([`SceneError::Key`]) at the
+    /// line of `span`, in words `message`.
+    pub fn fail_key(&self, span: Range<usize>, problem: KeyProblem, message: &str) -> SceneError {
+        SceneError::Key {
+            path: self.file.path.to_owned(),
+            line: self.file.line_of(span.start),
+            body: self.body.clone(),
+            problem: Box::new(problem),
+            message: one_line(&format!("{}{message}", self.prefix)),
+        }
     }
 
     /// An error at the line of `value`.
