@@ -70,6 +70,8 @@ fn request(name: &str, dict: &Bound<'_, PyDict>) -> PyResult<ContactRequest<()>>
             ContactKey::Center => r.center = vector()?,
             ContactKey::Normal => r.normal = vector()?,
             ContactKey::SemiAxes => r.semi_axes = vector()?,
+            // The names and vectors are read above: every other key of
+            // KEYS is a number, which has its slot.
             number => {
                 if let Some(slot) = r.number_mut(number) {
                     *slot = Some((finite(&full, &value)?, ()));

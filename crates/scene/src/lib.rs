@@ -29,7 +29,7 @@ pub mod contact_key;
 pub mod contact_keys;
 pub mod contact_list;
 pub mod contact_request;
-pub mod contact_shape;
+mod contact_shape;
 pub mod error;
 pub mod escape;
 pub mod events;
