@@ -68,6 +68,12 @@ pub enum AnalysisError {
         /// Why not, with the numbers.
         why: String,
     },
+    /// The QR iteration for the eigenvalues did not converge.
+    #[error("the eigenvalues of the reduced {dim}×{dim} Jacobian did not converge")]
+    EigenvaluesDidNotConverge {
+        /// The reduced dimension.
+        dim: usize,
+    },
     /// A body that the engine refuses.
     #[error(transparent)]
     Body(#[from] DynamicsError),

@@ -34,8 +34,11 @@
 mod eigen;
 mod error;
 mod free_body;
+mod heavy_top_pivot;
+mod hessenberg_qr;
 mod linearisation;
 mod mode;
+mod precessing_top;
 mod steady_search;
 mod vector_field;
 mod verdict;
@@ -43,8 +46,10 @@ mod zero_mode;
 
 pub use error::AnalysisError;
 pub use free_body::FreeBodyRotation;
+pub use heavy_top_pivot::HeavyTopPivot;
 pub use linearisation::{GROWTH_TOLERANCE, Linearisation, STEADY_RESIDUAL};
 pub use mode::{Eigenvalue, Frame, Mode};
+pub use precessing_top::{PrecessingTop, Precession};
 pub use steady_search::{SteadyMotion, find_steady_motion};
 pub use vector_field::{Scalar, VectorField};
 pub use verdict::Verdict;

@@ -79,7 +79,9 @@ impl Linearisation {
     /// [`AnalysisError::StateLength`] if `x` has the wrong length,
     /// [`AnalysisError::NotFinite`] if it is not finite,
     /// [`AnalysisError::NotSteady`] if its relative residual exceeds
-    /// [`STEADY_RESIDUAL`] (search first: [`crate::find_steady_motion`]).
+    /// [`STEADY_RESIDUAL`] (search first: [`crate::find_steady_motion`]);
+    /// [`AnalysisError::EigenvaluesDidNotConverge`] if the QR iteration
+    /// fails (never seen).
     pub fn try_new<F: VectorField>(field: &F, x: &[f64]) -> Result<Self, AnalysisError> {
         check_state(field, x)?;
         let n = field.dim();
@@ -127,7 +129,8 @@ impl Linearisation {
         }
         let v = DMatrix::from_columns(&taken[kept..]);
         let b = v.transpose() * &a * &v;
-        let modes_and_verdict = spectrum(field, x, &a, &b, &v);
+        let modes_and_verdict = spectrum(field, x, &a, &b, &v)
+            .ok_or(AnalysisError::EigenvaluesDidNotConverge { dim: b.nrows() })?;
         Ok(Self {
             state: x.to_vec(),
             state_names: field.state_names(),
@@ -220,18 +223,18 @@ fn spectrum<F: VectorField>(
     a: &DMatrix<f64>,
     b: &DMatrix<f64>,
     v: &DMatrix<f64>,
-) -> (Vec<Mode>, Verdict) {
+) -> Option<(Vec<Mode>, Verdict)> {
     if b.nrows() == 0 {
         let reason = "every eigenvalue is a zero accounted for: nothing is left to decide".into();
-        return (Vec::new(), Verdict::Neutral { reason });
+        return Some((Vec::new(), Verdict::Neutral { reason }));
     }
     let size = b.norm().max(a.norm());
-    let pairs = eigen_pairs(b, size);
+    let pairs = eigen_pairs(b, size)?;
     let largest = pairs.iter().map(|p| p.value.norm()).fold(0.0, f64::max);
     if largest <= f64::EPSILON * size || largest == 0.0 {
         let reason = "every eigenvalue is zero: no spin and no restoring force".into();
         let modes = pairs.iter().map(|p| mode_of(field, x, p, v)).collect();
-        return (modes, Verdict::Neutral { reason });
+        return Some((modes, Verdict::Neutral { reason }));
     }
     let tolerance = GROWTH_TOLERANCE * largest;
     let modes: Vec<Mode> = pairs.iter().map(|p| mode_of(field, x, p, v)).collect();
@@ -265,7 +268,7 @@ fn spectrum<F: VectorField>(
             asymptotic: pairs.iter().all(|p| p.value.re < -tolerance),
         }
     };
-    (modes, verdict)
+    Some((modes, verdict))
 }
 
 /// One eigenpair of `B` as a [`Mode`] of the reduced state.
