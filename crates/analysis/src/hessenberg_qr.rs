@@ -26,7 +26,7 @@ fn sign(a: f64, b: f64) -> f64 {
 /// iteration does not converge (never seen; the caller reports it).
 ///
 /// ```text
-/// H = Qᵀ M Q (Householder),  then H ← double-shift QR steps until H is
+/// M ← D⁻¹ M D (balancing),  H = Qᵀ M Q (Householder),  then H ← double-shift QR steps until H is
 /// quasi-triangular; each 1×1 block is a real eigenvalue, each 2×2 a pair
 /// ```
 pub(crate) fn eigenvalues(m: &DMatrix<f64>) -> Option<Vec<Complex<f64>>> {
@@ -34,7 +34,11 @@ pub(crate) fn eigenvalues(m: &DMatrix<f64>) -> Option<Vec<Complex<f64>>> {
     if n == 0 {
         return Some(Vec::new());
     }
-    let mut a = nalgebra::Hessenberg::new(m.clone()).h();
+    // Balanced first (Parlett & Reinsch): rows and columns of mixed units
+    // (γ and ω) scaled to comparable norms, by powers of two (exact).
+    let mut balanced = m.clone();
+    nalgebra::linalg::balancing::balance_parlett_reinsch(&mut balanced);
+    let mut a = nalgebra::Hessenberg::new(balanced).h();
     let anorm: f64 = (0..n)
         .flat_map(|i| (i.saturating_sub(1)..n).map(move |j| (i, j)))
         .map(|(i, j)| a[(i, j)].abs())
