@@ -68,6 +68,14 @@ pub enum AnalysisError {
         /// Why not, with the numbers.
         why: String,
     },
+    /// A sweep that cannot be mapped.
+    #[error("sweep {name}: {why}")]
+    Sweep {
+        /// The parameter's name.
+        name: String,
+        /// What is wrong, with the numbers.
+        why: String,
+    },
     /// The QR iteration for the eigenvalues did not converge.
     #[error("the eigenvalues of the reduced {dim}×{dim} Jacobian did not converge")]
     EigenvaluesDidNotConverge {
