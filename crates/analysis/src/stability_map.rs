@@ -227,16 +227,14 @@ impl StabilityMap {
             ] {
                 let Some(next) = next else { continue };
                 let (a, b) = (&points[index], &points[next]);
-                if matches!(a, GridPoint::Missing { .. }) || matches!(b, GridPoint::Missing { .. })
-                {
-                    continue;
-                }
-                if a.is_unstable() != b.is_unstable() {
-                    if let Some(found) =
+                let both = !matches!(a, GridPoint::Missing { .. })
+                    && !matches!(b, GridPoint::Missing { .. });
+                if both
+                    && a.is_unstable() != b.is_unstable()
+                    && let Some(found) =
                         bisect(&at(index), &at(next), axis, a.is_unstable(), &unstable)
-                    {
-                        boundaries.push(found);
-                    }
+                {
+                    boundaries.push(found);
                 }
             }
         }
