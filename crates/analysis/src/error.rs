@@ -22,9 +22,11 @@ pub enum AnalysisError {
         /// [`crate::STEADY_RESIDUAL`].
         limit: f64,
     },
-    /// The search from a state found no steady motion near it.
+    /// The search from a state found no steady motion near it: Newton did
+    /// not converge, or converged farther than [`crate::NEARBY`] of the
+    /// state's size.
     #[error(
-        "no steady motion near this state: relative residual {start:.3e} at the start, {best:.3e} at best after {iterations} Newton steps"
+        "no steady motion near this state: relative residual {start:.3e} at the start; after {iterations} Newton steps {best:.3e}, {relative_distance:.3} of the state's size away (a steady motion is near within {limit})"
     )]
     NoSteadyMotionNearby {
         /// The start's relative residual.
@@ -33,6 +35,10 @@ pub enum AnalysisError {
         best: f64,
         /// Newton steps taken.
         iterations: usize,
+        /// `|x* − x₀|/|x₀|` of the best state reached.
+        relative_distance: f64,
+        /// [`crate::NEARBY`].
+        limit: f64,
     },
     /// A state vector of the wrong length.
     #[error("a state of {got} numbers where {expected} are needed")]

@@ -82,7 +82,8 @@ impl PrecessingTop {
     }
 
     /// The engine's heavy top, if it is symmetric with its centre of mass
-    /// on the axis.
+    /// on the axis (which then points from the pivot to the centre of mass:
+    /// `M g l ≥ 0`, `ω₃` about that direction).
     ///
     /// # Errors
     /// [`AnalysisError::NoSuchMotion`] for a top without a symmetry axis

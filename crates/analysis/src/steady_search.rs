@@ -11,6 +11,10 @@ use crate::{AnalysisError, STEADY_RESIDUAL, VectorField, ZeroMode, ZeroModeKind}
 /// Newton steps before giving up.
 const MAX_ITERATIONS: usize = 40;
 
+/// A steady motion is near a state if it differs from it by at most this
+/// fraction of the state's size `|x₀|`.
+pub const NEARBY: f64 = 0.05;
+
 /// A steady motion found from a start.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SteadyMotion {
@@ -38,7 +42,8 @@ pub struct SteadyMotion {
 ///
 /// # Errors
 /// [`AnalysisError::NoSteadyMotionNearby`] (with the residuals) if the
-/// relative residual does not reach [`STEADY_RESIDUAL`]; the state's own
+/// relative residual does not reach [`STEADY_RESIDUAL`] within
+/// [`NEARBY`] of the start; the state's own
 /// errors as [`crate::Linearisation::try_new`].
 ///
 /// ```
@@ -101,15 +106,24 @@ pub fn find_steady_motion<F: VectorField>(
             break;
         }
     }
-    if best > STEADY_RESIDUAL || best.is_nan() {
+    let size = DVector::from_column_slice(start).norm();
+    let distance = (&best_x - DVector::from_column_slice(start)).norm();
+    let relative_distance = if size > 0.0 {
+        distance / size
+    } else {
+        distance
+    };
+    if best > STEADY_RESIDUAL || best.is_nan() || relative_distance > NEARBY {
         return Err(AnalysisError::NoSteadyMotionNearby {
             start: start_residual,
             best,
             iterations,
+            relative_distance,
+            limit: NEARBY,
         });
     }
     Ok(SteadyMotion {
-        distance: (&best_x - DVector::from_column_slice(start)).norm(),
+        distance,
         state: best_x.as_slice().to_vec(),
         start_residual,
         residual: best,
