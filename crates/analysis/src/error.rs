@@ -26,7 +26,7 @@ pub enum AnalysisError {
     /// not converge, or converged farther than [`crate::NEARBY`] of the
     /// state's size.
     #[error(
-        "no steady motion near this state: relative residual {start:.3e} at the start; after {iterations} Newton steps {best:.3e}, {relative_distance:.3} of the state's size away (a steady motion is near within {limit})"
+        "no steady motion near this state: relative residual {start:.3e} at the start; the closest Newton came in {iterations} steps has residual {best:.3e}, {relative_distance:.3} of a component's size away (near: residual at most 1e-10, within {limit})"
     )]
     NoSteadyMotionNearby {
         /// The start's relative residual.
@@ -35,7 +35,8 @@ pub enum AnalysisError {
         best: f64,
         /// Newton steps taken.
         iterations: usize,
-        /// `|x* − x₀|/|x₀|` of the best state reached.
+        /// The largest change of a component of the best state reached, in
+        /// units of its size.
         relative_distance: f64,
         /// [`crate::NEARBY`].
         limit: f64,

@@ -222,6 +222,12 @@ impl VectorField for HeavyTopPivot {
         true
     }
 
+    /// `γ` is a unit vector (size 1), `ω` in units of its size.
+    fn state_scales(&self, x: &[f64]) -> Vec<f64> {
+        let rate = x[3..].iter().map(|v| v * v).sum::<f64>().sqrt();
+        vec![1.0, 1.0, 1.0, rate, rate, rate]
+    }
+
     /// At a permanent rotation `ω = Ω γ` about principal axis `k`, a mode
     /// whose transverse `γ` turns circularly at the signed rate `ν` about
     /// `γ` turns in space at `ν + Ω` (the body turns at `Ω` about the

@@ -251,6 +251,12 @@ impl VectorField for PrecessingTop {
         true
     }
 
+    /// The tilt in radians (size 1), the momenta in units of their size.
+    fn state_scales(&self, x: &[f64]) -> Vec<f64> {
+        let momenta = x[1..].iter().map(|v| v * v).sum::<f64>().sqrt();
+        vec![1.0, momenta, momenta, momenta]
+    }
+
     /// The tilt `θ` oscillates the same in any frame turning about the
     /// vertical: its frequencies are those seen in space.
     fn frame(&self) -> Frame {

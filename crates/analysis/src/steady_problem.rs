@@ -109,6 +109,17 @@ impl SteadyProblem {
         }
     }
 
+    /// The frame and order of its linearisation's coordinates, in words.
+    pub fn coordinates(&self) -> &'static str {
+        match self {
+            Self::FreeRotation { .. } => "principal axes, moments ascending",
+            Self::SleepingTop { .. } => {
+                "γ the up vertical; principal axes about the pivot, moments ascending"
+            }
+            Self::Precession { .. } => "Euler angles ZXZ, θ from the up vertical",
+        }
+    }
+
     /// The parameters it can be swept in, with their values.
     pub fn parameters(&self) -> Vec<(Parameter, f64)> {
         match self {

@@ -11,8 +11,9 @@ use crate::{AnalysisError, STEADY_RESIDUAL, VectorField, ZeroMode, ZeroModeKind}
 /// Newton steps before giving up.
 const MAX_ITERATIONS: usize = 40;
 
-/// A steady motion is near a state if it differs from it by at most this
-/// fraction of the state's size `|x₀|`.
+/// A steady motion is near a state if no component differs from the
+/// state's by more than this fraction of its size
+/// ([`crate::VectorField::state_scales`]: `|x₀|` unless the family says).
 pub const NEARBY: f64 = 0.05;
 
 /// A steady motion found from a start.
@@ -106,13 +107,17 @@ pub fn find_steady_motion<F: VectorField>(
             break;
         }
     }
-    let size = DVector::from_column_slice(start).norm();
     let distance = (&best_x - DVector::from_column_slice(start)).norm();
-    let relative_distance = if size > 0.0 {
-        distance / size
-    } else {
-        distance
-    };
+    // The largest change of a component in units of its size.
+    let relative_distance = field
+        .state_scales(start)
+        .iter()
+        .zip(best_x.iter().zip(start))
+        .map(|(scale, (a, b))| {
+            let change = (a - b).abs();
+            if *scale > 0.0 { change / scale } else { change }
+        })
+        .fold(0.0, f64::max);
     if best > STEADY_RESIDUAL || best.is_nan() || relative_distance > NEARBY {
         return Err(AnalysisError::NoSteadyMotionNearby {
             start: start_residual,

@@ -60,6 +60,14 @@ pub trait VectorField {
     /// eigenvalues on the imaginary axis).
     fn is_conservative(&self) -> bool;
 
+    /// The size of each component near `x`, in its unit: how far counts as
+    /// near ([`crate::NEARBY`] of it). By default `|x|` for every one; a
+    /// family mixing units (an angle and momenta) says more.
+    fn state_scales(&self, x: &[f64]) -> Vec<f64> {
+        let size = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+        vec![size; x.len()]
+    }
+
     /// The frame the coordinates are in ([`Frame::Body`] by default).
     fn frame(&self) -> Frame {
         Frame::Body

@@ -113,6 +113,16 @@ pub enum CliError {
     /// A scene, mesh or heavy-top request the scene layer rejects.
     #[error(transparent)]
     Library(#[from] SceneError),
+    /// A body of a scene whose stability cannot be decided as asked.
+    #[error("{}: body {body:?}: {error}", path.display())]
+    Analysis {
+        /// The scene.
+        path: PathBuf,
+        /// The body's name.
+        body: String,
+        /// What the analysis says.
+        error: kreisel_analysis::AnalysisError,
+    },
     /// The robot description of `inertia --urdf` cannot be read.
     #[error("cannot read URDF file {}: {source}", path.display())]
     ReadUrdf {

@@ -11,7 +11,7 @@
 
 mod frame_change;
 mod inertial_form;
-mod json;
+pub(crate) mod json;
 mod rounding;
 mod shown;
 mod text;

@@ -14,6 +14,7 @@ pub mod error;
 pub mod inertia;
 pub mod output;
 pub mod simulate;
+pub mod stability;
 pub mod top;
 
 use std::io::Write;
@@ -30,7 +31,8 @@ Examples:
   kreisel inertia part.stl --units mm --density 2700
   kreisel inertia assets/t_handle.obj --format urdf
   kreisel simulate scene.toml --output run.csv
-  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --plot top.svg";
+  kreisel top --i1 0.3 --i3 0.1 --mgl 2 --theta0 0.5 --psi-dot0 60 --plot top.svg
+  kreisel stability examples/scenes/sleeping_top.toml --sweep spin=0:80:200";
 
 /// Rigid-body rotations from the command line.
 #[derive(Debug, Parser)]
@@ -62,6 +64,9 @@ enum Command {
     /// The heavy symmetric top: constants of the motion, roots of f(u), nutation
     /// limits and period, precession, type of motion; --plot draws it, --csv samples it
     Top(top::TopCommand),
+    /// Is it stable? Each body's steady motion near the scene's initial state,
+    /// the eigenvalues and modes of its linearisation, the verdict; --sweep maps it
+    Stability(stability::StabilityArgs),
 }
 
 /// Runs the chosen subcommand.
@@ -71,6 +76,7 @@ fn dispatch(command: &Command) -> Result<(), CliError> {
         Command::Inertia(args) => inertia::run(args),
         Command::Simulate(args) => simulate::run(args),
         Command::Top(args) => top::run(args),
+        Command::Stability(args) => stability::run(args),
     }
 }
 

@@ -148,7 +148,7 @@ impl<'a> Object<'a> {
 }
 
 /// A JSON number, or `null` for NaN and infinities.
-pub(super) fn number(out: &mut String, value: f64) {
+pub(crate) fn number(out: &mut String, value: f64) {
     if value.is_finite() {
         let _ = write!(out, "{}", Shortest(value));
     } else {
@@ -186,7 +186,7 @@ pub(super) fn matrix_rows(out: &mut String, m: DMat3) {
 }
 
 /// A JSON string: quotes, backslashes and control characters escaped.
-pub(super) fn string(out: &mut String, text: &str) {
+pub(crate) fn string(out: &mut String, text: &str) {
     out.push('"');
     for c in text.chars() {
         match c {
