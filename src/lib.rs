@@ -12,6 +12,8 @@
 //! - `scene` (feature `scene`): scene files to a World and its
 //!   run along the output grid, mesh and heavy-top requests, rotations as
 //!   lines of numbers — what the CLI and the Python package are made of.
+//! - `analysis` (feature `analysis`): steady motions, their linear
+//!   stability with exact derivatives, and stability maps.
 //!
 //! ```
 //! use kreisel::kinematics::{EulerSequence, glam::DVec3};
@@ -23,6 +25,8 @@
 #![deny(missing_docs)]
 #![forbid(unsafe_code)]
 
+#[cfg(feature = "analysis")]
+pub use kreisel_analysis as analysis;
 pub use kreisel_dynamics as dynamics;
 pub use kreisel_inertia as inertia;
 pub use kreisel_kinematics as kinematics;

@@ -19,7 +19,7 @@ const HEIGHT: u32 = 640;
 const STABLE: Color = Color::rgb(214, 228, 245);
 const UNSTABLE: Color = Color::rgb(200, 55, 40);
 const CURVE: Color = Color::rgb(31, 90, 180);
-const CLOSED_FORM: Color = Color::rgb(20, 20, 20);
+const CLOSED_FORM: Color = Color::rgb(255, 200, 0);
 
 /// Draws `report`'s map into `path`.
 ///
@@ -58,8 +58,8 @@ pub fn figure(title: &str, m: &MapReport) -> Figure {
     let x = &m.map.axes[0];
     let x_label = format!("{} ({})", m.parameters[0], m.parameters[0].unit());
     let values = m.map.max_real_parts();
-    let dashed = Stroke::dashed(CLOSED_FORM, 1.5, 7.0, 5.0);
-    let legend = "dots: boundary by bisection; dashed: closed form";
+    let dashed = Stroke::dashed(CLOSED_FORM, 2.0, 7.0, 5.0);
+    let legend = "red: unstable (shade: largest Re λ), blue: stable; dots: boundary by bisection, dashed: closed form";
     if m.parameters.len() == 1 {
         let finite: Vec<f64> = values.iter().copied().filter(|v| v.is_finite()).collect();
         let top = finite.iter().copied().fold(0.0, f64::max);
@@ -162,12 +162,12 @@ pub fn figure(title: &str, m: &MapReport) -> Figure {
             y: &y_label,
         },
     );
+    for b in &m.map.boundaries {
+        axes.marker(&mut fig, b.at[0], b.at[1], 2.5, Color::BLACK);
+    }
     if let Some(points) = &m.closed_form {
         let curve: Vec<(f64, f64)> = points.iter().map(|p| (p[0], p[1])).collect();
         axes.curve(&mut fig, &curve, &dashed);
-    }
-    for b in &m.map.boundaries {
-        axes.marker(&mut fig, b.at[0], b.at[1], 2.0, Color::BLACK);
     }
     fig
 }

@@ -2,7 +2,7 @@
 
 use std::fmt::Write as _;
 
-use kreisel_analysis::{Eigenvalue, Frame, Linearisation, Mode};
+use kreisel_analysis::{Eigenvalue, Frame, Linearisation, Mode, Verdict};
 use kreisel_scene::numbers::Shortest;
 
 use super::{BodyReport, MapReport};
@@ -61,7 +61,13 @@ fn body(out: &mut String, r: &BodyReport) {
     for mode in shown(lin) {
         eigenvalue_line(out, mode, lin);
     }
-    let _ = writeln!(out, "  verdict: {}", lin.verdict);
+    let verdict = match &lin.verdict {
+        Verdict::Unstable { growth_rate } => {
+            format!("unstable (growth rate {} 1/s)", sig(*growth_rate))
+        }
+        other => other.to_string(),
+    };
+    let _ = writeln!(out, "  verdict: {verdict}");
     if let Some(map) = &r.map {
         map_lines(out, map);
     }
