@@ -34,6 +34,7 @@
 mod eigen;
 mod error;
 mod free_body;
+mod ground;
 mod linearisation;
 mod mode;
 mod steady_search;
@@ -43,6 +44,7 @@ mod zero_mode;
 
 pub use error::AnalysisError;
 pub use free_body::FreeBodyRotation;
+pub use ground::{BodyOnGround, LEINE_GLOCKER, RollingDisk, TippeTop, TippeTopParameters};
 pub use linearisation::{GROWTH_TOLERANCE, Linearisation, STEADY_RESIDUAL};
 pub use mode::{Eigenvalue, Frame, Mode};
 pub use steady_search::{SteadyMotion, find_steady_motion};

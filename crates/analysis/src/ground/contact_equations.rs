@@ -1,0 +1,204 @@
+//! [`ContactBody`]: a rigid body touching the ground, its equations of
+//! motion in body-fixed (or axially turned) axes for any [`Scalar`] —
+//! rolling without slipping (the contact force a reaction) and the
+//! friction laws (the normal force solved from the contact staying on
+//! the plane) — as `kreisel_dynamics::GroundTop` has them in world axes.
+
+use glam::{DMat3, DVec3};
+use kreisel_dynamics::{Friction, GroundTop};
+
+use super::algebra::{V3, add, cross, dot, mat_vec, norm, scale, solve3, sub};
+use super::surface::Surface;
+use crate::{AnalysisError, Scalar};
+
+/// Mass, inertia, gravity, contact surface and friction of a body on the
+/// plane `z = 0` (gravity `−g ẑ`), body axes.
+///
+/// ```text
+/// rolling (frame turning at Ω; body axes: Ω = ω):
+///   γ̇ = γ × Ω,   v_G = ω × r,   ṙ = (∂r/∂γ) γ̇
+///   [I + m(|r|² 𝟙 − r rᵀ)] ω̇ = −Ω × Iω − m r × (ω × ṙ + Ω × (ω × r) + g γ)
+/// friction law (body axes, v = v_G):
+///   v_P = v − ω × r,   e = γ/|γ| + f(v_P − (γ̂·v_P) γ̂)     (f: F/N of the law)
+///   I ω̇ = −ω × Iω − N r × e,    m (v̇ + ω × v) = N e − m g γ
+///   N (|γ|/m + (r×γ)·I⁻¹(r×e)) = g|γ|² − (r×γ)·I⁻¹(ω×Iω) + ω·(ṙ×γ) + ω·(r×γ̇)
+/// ```
+///
+/// `N` is what keeps `γ · v_P` (the contact point's vertical velocity)
+/// constant, for every state: `d(γ·v_P)/dt = 0` exactly, so `γ · v_P` is
+/// conserved (zero on the plane). Newton and Euler about the centre of
+/// mass with the contact force `F` at `−r` (`I ω̇ + ω × Iω = −r × F`,
+/// `F = m a_G + m g γ`), as in the derivation of `kreisel_dynamics`'s
+/// contact module; the rolling form is Borisov & Mamaev's (and the
+/// rattleback generator's, `tests/data/gen/rattleback.py`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ContactBody {
+    pub(crate) mass: f64,
+    /// Rows of `I` about the centre of mass, body axes.
+    pub(crate) inertia: [[f64; 3]; 3],
+    /// Rows of `I⁻¹`.
+    pub(crate) inverse_inertia: [[f64; 3]; 3],
+    pub(crate) gravity: f64,
+    pub(crate) surface: Surface,
+    pub(crate) friction: Friction,
+}
+
+/// `M` as rows.
+fn rows(m: DMat3) -> [[f64; 3]; 3] {
+    let t = m.transpose();
+    [
+        t.x_axis.to_array(),
+        t.y_axis.to_array(),
+        t.z_axis.to_array(),
+    ]
+}
+
+impl ContactBody {
+    /// The engine's body on the ground.
+    ///
+    /// # Errors
+    /// [`AnalysisError::Parameter`] if the top has applied loads (the
+    /// steady motions here are those of gravity and the contact alone).
+    pub(crate) fn of(top: &GroundTop) -> Result<Self, AnalysisError> {
+        if top.inputs().is_some() {
+            return Err(AnalysisError::Parameter {
+                name: "inputs",
+                value: 1.0,
+                must: "absent: the steady motions are those of gravity and the contact alone",
+            });
+        }
+        let i = top.inertia_body();
+        Ok(Self {
+            mass: top.mass(),
+            inertia: rows(i),
+            inverse_inertia: rows(i.inverse()),
+            gravity: top.gravity(),
+            surface: Surface::of(top.shape()),
+            friction: top.friction(),
+        })
+    }
+
+    /// `I` (body axes).
+    pub(crate) fn inertia_matrix(&self) -> DMat3 {
+        DMat3::from_cols_array_2d(&self.inertia).transpose()
+    }
+
+    /// `ω̇` rolling without slipping, in axes turning at `frame_rate` `Ω`
+    /// (the body's own axes: `Ω = ω`), with `γ` and `ω` in those axes.
+    pub(crate) fn rolling_omega_rate<D: Scalar>(
+        &self,
+        gamma: V3<D>,
+        omega: V3<D>,
+        frame_rate: V3<D>,
+    ) -> V3<D> {
+        let m = self.mass;
+        let gamma_rate = cross(gamma, frame_rate);
+        let (r, r_rate) = self.surface.com_from_contact(gamma, gamma_rate);
+        let l = mat_vec(&self.inertia, omega);
+        let inner = add(
+            add(cross(omega, r_rate), cross(frame_rate, cross(omega, r))),
+            scale(gamma, D::from(self.gravity)),
+        );
+        let rhs = sub(
+            scale(cross(frame_rate, l), D::from(-1.0)),
+            scale(cross(r, inner), D::from(m)),
+        );
+        let r2 = dot(r, r);
+        let matrix: [V3<D>; 3] = [0, 1, 2].map(|i| {
+            [0, 1, 2].map(|k| {
+                let delta = if i == k { r2 } else { D::from(0.0) };
+                D::from(self.inertia[i][k]) + (delta - r[i] * r[k]) * m
+            })
+        });
+        solve3(matrix, rhs)
+    }
+
+    /// The friction law's force per newton of normal force for the
+    /// horizontal slip `slip` (body axes).
+    fn friction_per_newton<D: Scalar>(&self, slip: V3<D>) -> V3<D> {
+        match self.friction {
+            Friction::None | Friction::Rolling => [D::from(0.0); 3],
+            Friction::Viscous { mu } => scale(slip, D::from(-mu)),
+            Friction::Sliding { mu, slip_velocity } => {
+                let size = (dot(slip, slip) + slip_velocity * slip_velocity).sqrt();
+                scale(slip, D::from(-mu) / size)
+            }
+        }
+    }
+
+    /// `(ω̇, v̇, N)` under a friction law, body axes (`v` the centre of
+    /// mass's velocity).
+    pub(crate) fn sliding_rates<D: Scalar>(
+        &self,
+        gamma: V3<D>,
+        omega: V3<D>,
+        v: V3<D>,
+    ) -> (V3<D>, V3<D>, D) {
+        let m = self.mass;
+        let g = self.gravity;
+        let gamma_rate = cross(gamma, omega);
+        let (r, r_rate) = self.surface.com_from_contact(gamma, gamma_rate);
+        let size = norm(gamma);
+        let up = scale(gamma, size.recip());
+        let slip = sub(v, cross(omega, r));
+        let horizontal = sub(slip, scale(up, dot(up, slip)));
+        let e = add(up, self.friction_per_newton(horizontal));
+        let l = mat_vec(&self.inertia, omega);
+        let free = scale(
+            mat_vec(&self.inverse_inertia, cross(omega, l)),
+            D::from(-1.0),
+        );
+        let per_newton = scale(mat_vec(&self.inverse_inertia, cross(r, e)), D::from(-1.0));
+        let lever = cross(r, gamma);
+        let compliance = size / m - dot(per_newton, lever);
+        let drive = size * size * g
+            + dot(free, lever)
+            + dot(omega, cross(r_rate, gamma))
+            + dot(omega, cross(r, gamma_rate));
+        let normal = drive / compliance;
+        let omega_rate = add(free, scale(per_newton, normal));
+        let v_rate = sub(
+            sub(scale(e, normal / m), cross(omega, v)),
+            scale(gamma, D::from(g)),
+        );
+        (omega_rate, v_rate, normal)
+    }
+
+    /// The energy with the centre of mass's velocity `v` (body axes), zero
+    /// potential with the centre of mass on the plane.
+    ///
+    /// ```text
+    /// E = ½ m |v|² + ½ ω·Iω + m g γ·r(γ)
+    /// ```
+    pub(crate) fn energy<D: Scalar>(&self, gamma: V3<D>, omega: V3<D>, v: V3<D>) -> D {
+        let (r, _) = self.surface.com_from_contact(gamma, [D::from(0.0); 3]);
+        let l = mat_vec(&self.inertia, omega);
+        (dot(v, v) * self.mass + dot(omega, l)) * 0.5 + dot(gamma, r) * (self.mass * self.gravity)
+    }
+
+    /// Jellett's integral `λ = Iω · r` (conserved for a sphere whose
+    /// centre lies on an axis of symmetry of `I`).
+    pub(crate) fn jellett<D: Scalar>(&self, gamma: V3<D>, omega: V3<D>) -> D {
+        let (r, _) = self.surface.com_from_contact(gamma, [D::from(0.0); 3]);
+        dot(mat_vec(&self.inertia, omega), r)
+    }
+
+    /// Whether `I` is symmetric about the unit body axis `axis` (it is an
+    /// eigenvector, and the two moments across it are equal), to `1e-12`
+    /// relative.
+    pub(crate) fn symmetric_about(&self, axis: DVec3) -> bool {
+        let i = self.inertia_matrix();
+        let scale = i
+            .x_axis
+            .length()
+            .max(i.y_axis.length())
+            .max(i.z_axis.length());
+        let along = axis.dot(i * axis);
+        let across = axis.any_orthonormal_vector();
+        let other = axis.cross(across);
+        let m1 = across.dot(i * across);
+        (i * axis - along * axis).length() <= 1e-12 * scale
+            && (m1 - other.dot(i * other)).abs() <= 1e-12 * scale
+            && across.dot(i * other).abs() <= 1e-12 * scale
+    }
+}
