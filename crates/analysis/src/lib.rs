@@ -44,7 +44,9 @@ mod zero_mode;
 
 pub use error::AnalysisError;
 pub use free_body::FreeBodyRotation;
-pub use ground::{BodyOnGround, LEINE_GLOCKER, RollingDisk, TippeTop, TippeTopParameters};
+pub use ground::{
+    BodyOnGround, LEINE_GLOCKER, Rattleback, RollingDisk, TippeTop, TippeTopParameters,
+};
 pub use linearisation::{GROWTH_TOLERANCE, Linearisation, STEADY_RESIDUAL};
 pub use mode::{Eigenvalue, Frame, Mode};
 pub use steady_search::{SteadyMotion, find_steady_motion};

@@ -39,11 +39,13 @@
 mod algebra;
 mod body_on_ground;
 mod contact_equations;
+mod rattleback;
 mod rolling_disk;
 mod surface;
 mod tippe_top;
 
 pub use body_on_ground::BodyOnGround;
+pub use rattleback::Rattleback;
 pub use rolling_disk::RollingDisk;
 pub use tippe_top::{LEINE_GLOCKER, TippeTop, TippeTopParameters};
 
