@@ -1,0 +1,435 @@
+//! The tippe top spinning upright and inverted on its ball, with each
+//! friction law: the thresholds of the literature (bisection on the
+//! library's spectrum against the closed forms), the inversion window,
+//! every conserved quantity's rate zero to rounding, every zero
+//! eigenvalue named, and the growth and the wobble measured from the
+//! engine's nonlinear runs.
+
+use glam::{DQuat, DVec2, DVec3};
+use kreisel_analysis::{
+    LEINE_GLOCKER, Linearisation, Scalar, TippeTop, TippeTopParameters, VectorField, Verdict,
+    ZeroMode,
+};
+use kreisel_dynamics::{Friction, GroundTop, GroundTopState, SphereContact};
+use num_dual::Dual64;
+
+fn viscous() -> Friction {
+    Friction::try_viscous(0.3).unwrap()
+}
+
+fn sliding() -> Friction {
+    Friction::try_sliding(0.3, 1e-3).unwrap()
+}
+
+/// A family in turned coordinates `x' = Q x` (`Q` a fixed Householder
+/// reflection): the same motion, eigenvalues and zeros. The frictionless
+/// top's reduced matrix `B` below its threshold (inverted at 17 rad/s) has
+/// the exact zeros of its decoupled blocks, on which nalgebra's
+/// `Schur::new` (no iteration limit) never returns — a hang of the core's
+/// `eigen_pairs`, reported with the matrix; turned, `B` has none.
+struct Turned<'a, F: VectorField>(&'a F);
+
+impl<F: VectorField> Turned<'_, F> {
+    /// `Q = 𝟙 − 2 u uᵀ/|u|²` with `u_k = 1 + k/7`.
+    fn apply<D: Scalar>(x: &[D]) -> Vec<D> {
+        let n = x.len();
+        let u: Vec<f64> = (0..n).map(|k| 1.0 + k as f64 / 7.0).collect();
+        let uu: f64 = u.iter().map(|v| v * v).sum();
+        let ux = x
+            .iter()
+            .zip(&u)
+            .fold(D::from(0.0), |a, (xi, ui)| a + *xi * *ui);
+        x.iter()
+            .zip(&u)
+            .map(|(xi, ui)| *xi - ux * (2.0 * ui / uu))
+            .collect()
+    }
+}
+
+impl<F: VectorField> VectorField for Turned<'_, F> {
+    fn dim(&self) -> usize {
+        self.0.dim()
+    }
+    fn state_names(&self) -> Vec<String> {
+        (0..self.dim()).map(|k| format!("x'_{k}")).collect()
+    }
+    fn rates<D: Scalar>(&self, x: &[D], dx: &mut [D]) {
+        let mut f = vec![D::from(0.0); x.len()];
+        self.0.rates(&Self::apply(x), &mut f);
+        dx.copy_from_slice(&Self::apply(&f));
+    }
+    /// Without `|v_h|²` and without the symmetry direction (rotation
+    /// about the axis): at the upright and inverted spins both vanish
+    /// exactly (`v = 0`, `γ ∥ ω ∥ axis`), which the turn's rounding makes
+    /// 1e-17 in some direction, and the core's independence test (relative
+    /// to the vector's own length) would count them.
+    fn conserved<D: Scalar>(&self, x: &[D]) -> Vec<(ZeroMode, D)> {
+        let mut out = self.0.conserved(&Self::apply(x));
+        out.retain(|(m, _)| !m.name.starts_with("|v_h|²"));
+        out
+    }
+    fn reduced_by(&self) -> Vec<String> {
+        self.0.reduced_by()
+    }
+    fn is_conservative(&self) -> bool {
+        self.0.is_conservative()
+    }
+}
+
+/// The spin where `unstable(spin)` flips between `low` and `high`, by 50
+/// halvings.
+fn boundary(mut low: f64, mut high: f64, unstable: impl Fn(f64) -> bool) -> f64 {
+    let low_unstable = unstable(low);
+    assert_ne!(low_unstable, unstable(high), "no flip in [{low}, {high}]");
+    for _ in 0..50 {
+        let mid = 0.5 * (low + high);
+        if unstable(mid) == low_unstable {
+            low = mid;
+        } else {
+            high = mid;
+        }
+    }
+    0.5 * (low + high)
+}
+
+/// Without friction spinning upright is stable at every spin (the centre
+/// of mass hangs below the sphere's centre), and inverted it needs
+/// `I₃² Ω² > 4 I₁ m g a` — the sleeping top's condition about the centre
+/// of mass, which the frictionless plane lets move only vertically.
+/// Bisection on the verdict finds it to 1e-12 relative (measured −2.8e-14
+/// for Leine & Glocker's top): the two wobbles collide there and the
+/// growth rises like a square root. Every zero is named: `|γ|²`, `γ·v_P`
+/// and Jellett's λ (the energy, `L·γ` and `|v_h|²` depend on them here).
+#[test]
+fn frictionless_inverted_needs_the_sleeping_tops_spin() {
+    let top = TippeTop::try_new(LEINE_GLOCKER, Friction::None).unwrap();
+    let closed = top.frictionless_inverted_threshold();
+    let turned = Turned(&top);
+    let unstable = |spin: f64| {
+        let x = Turned::<TippeTop>::apply(&top.spinning_inverted(spin).unwrap());
+        let lin = Linearisation::try_new(&turned, &x).unwrap();
+        matches!(lin.verdict, Verdict::Unstable { .. })
+    };
+    let found = boundary(0.5 * closed, 2.0 * closed, unstable);
+    let error = found / closed - 1.0;
+    eprintln!("frictionless inverted: Ω_c = {closed:.12} rad/s, bisected {error:.1e}");
+    assert!(error.abs() <= 1e-12, "{error:e}");
+    for spin in [0.0, 10.0, 180.0, 1000.0] {
+        let x = Turned::<TippeTop>::apply(&top.spinning_upright(spin).unwrap());
+        let lin = Linearisation::try_new(&turned, &x).unwrap();
+        assert!(
+            !matches!(lin.verdict, Verdict::Unstable { .. }),
+            "{spin}: {}",
+            lin.verdict
+        );
+    }
+    let lin = Linearisation::try_new(&top, &top.spinning_inverted(180.0).unwrap()).unwrap();
+    assert_eq!(lin.zero_modes.len() + lin.modes.len(), top.dim());
+    assert_eq!(lin.zero_modes.len(), 3, "{:?}", lin.zero_modes);
+    assert!(matches!(lin.verdict, Verdict::Stable { asymptotic: false }));
+}
+
+/// With a dissipative law the spectrum decides where `E` stops being a
+/// minimum on Jellett's level: upright becomes unstable above
+/// `Ω_c² = m g a (R − a)²/(R² (I₁ − (1 − α) I₃))`, inverted stable above
+/// `Ω_c² = m g a (R + a)²/(R² ((1 + α) I₃ − I₁))` — for viscous friction
+/// and for regularised Coulomb friction, whatever their coefficients.
+/// At the boundary a real eigenvalue crosses zero (linearly in Ω), so the
+/// bisection is on the sign of the largest real part (the verdict's
+/// tolerance, 1e-7 of `|λ|`, would shift it). Measured relative
+/// differences from the closed forms are printed; all ≤ 1e-9.
+#[test]
+fn dissipative_thresholds_are_the_energy_momentum_ones() {
+    for friction in [viscous(), Friction::try_viscous(3.0).unwrap(), sliding()] {
+        let top = TippeTop::try_new(LEINE_GLOCKER, friction).unwrap();
+        let up = top.dissipative_threshold_upright().unwrap();
+        let grows = |x: Vec<f64>| Linearisation::try_new(&top, &x).unwrap().max_real_part() > 0.0;
+        let found_up = boundary(0.5 * up, 2.0 * up, |s| {
+            grows(top.spinning_upright(s).unwrap())
+        });
+        let down = top.dissipative_threshold_inverted().unwrap();
+        let found_down = boundary(0.5 * down, 2.0 * down, |s| {
+            grows(top.spinning_inverted(s).unwrap())
+        });
+        let (e_up, e_down) = (found_up / up - 1.0, found_down / down - 1.0);
+        eprintln!(
+            "{friction:?}: upright Ω_c = {up:.10} ({e_up:.1e}), inverted Ω_c = {down:.10} ({e_down:.1e})"
+        );
+        assert!(
+            e_up.abs() <= 1e-9 && e_down.abs() <= 1e-9,
+            "{e_up:e} {e_down:e}"
+        );
+    }
+}
+
+/// The window `1 − α < I₁/I₃ < 1 + α` (`α = a/R = 0.2`): outside it
+/// friction never destabilises upright spinning (below) or never
+/// stabilises inverted spinning (above), at any spin; inside, both happen
+/// at high spin.
+#[test]
+fn the_inversion_window() {
+    let with_ratio = |ratio: f64| {
+        let p = TippeTopParameters {
+            transverse_moment: ratio * LEINE_GLOCKER.axial_moment,
+            ..LEINE_GLOCKER
+        };
+        TippeTop::try_new(p, viscous()).unwrap()
+    };
+    let top = with_ratio(1.0);
+    assert_eq!(top.inversion_window(), (0.8, 1.2));
+    let growth =
+        |top: &TippeTop, x: Vec<f64>| Linearisation::try_new(top, &x).unwrap().max_real_part();
+    for spin in [50.0, 200.0, 1000.0, 5000.0] {
+        // Below the window: upright stays stable.
+        let below = with_ratio(0.79);
+        assert!(below.dissipative_threshold_upright().is_none());
+        assert!(
+            growth(&below, below.spinning_upright(spin).unwrap()) < 0.0,
+            "{spin}"
+        );
+        // Above it: inverted stays unstable.
+        let above = with_ratio(1.21);
+        assert!(above.dissipative_threshold_inverted().is_none());
+        assert!(
+            growth(&above, above.spinning_inverted(spin).unwrap()) > 0.0,
+            "{spin}"
+        );
+    }
+    // Inside, at 5000 rad/s: upright grows, inverted decays.
+    for ratio in [0.81, 1.0, 1.19] {
+        let top = with_ratio(ratio);
+        assert!(
+            growth(&top, top.spinning_upright(5000.0).unwrap()) > 0.0,
+            "{ratio}"
+        );
+        assert!(
+            growth(&top, top.spinning_inverted(5000.0).unwrap()) < 0.0,
+            "{ratio}"
+        );
+    }
+}
+
+/// Each conserved quantity's rate `∇C · f` vanishes to rounding at 20
+/// random states on the constraint `γ·v_P = 0` (exact gradients: dual
+/// numbers), for every friction law; Jellett's λ with every law, the
+/// energy only without friction and rolling.
+#[test]
+fn conserved_quantities_are_conserved() {
+    let mut seed = 12345u64;
+    let mut uniform = || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let mut worst: f64 = 0.0;
+    for friction in [Friction::None, viscous(), sliding(), Friction::Rolling] {
+        let top = TippeTop::try_new(LEINE_GLOCKER, friction).unwrap();
+        let n = top.dim();
+        for _ in 0..20 {
+            let gamma =
+                DVec3::new(uniform(), uniform(), uniform()).normalize() * (1.0 + 0.1 * uniform());
+            let omega = DVec3::new(uniform(), uniform(), uniform()) * 100.0;
+            let mut x: Vec<f64> = gamma
+                .to_array()
+                .into_iter()
+                .chain(omega.to_array())
+                .collect();
+            if n == 9 {
+                // v on the constraint: γ·(v − ω × r) = 0.
+                let up = gamma.normalize();
+                let r = LEINE_GLOCKER.radius * up - DVec3::new(0.0, 0.0, LEINE_GLOCKER.offset);
+                let v = DVec3::new(uniform(), uniform(), uniform()) * 0.3;
+                let v = v - up * up.dot(v - omega.cross(r));
+                x.extend(v.to_array());
+            }
+            let mut f = vec![0.0; n];
+            top.rates(&x, &mut f);
+            let scale = f.iter().map(|v| v * v).sum::<f64>().sqrt();
+            for (j, (mode, _)) in top.conserved(&x).into_iter().enumerate() {
+                // ∇C · f as the derivative of C along f.
+                let along: Vec<Dual64> =
+                    x.iter().zip(&f).map(|(a, b)| Dual64::new(*a, *b)).collect();
+                let (_, c) = &top.conserved(&along)[j];
+                let grad: Vec<Dual64> = (0..n)
+                    .map(|k| {
+                        let e: Vec<Dual64> = x
+                            .iter()
+                            .enumerate()
+                            .map(|(i, a)| Dual64::new(*a, f64::from(i == k)))
+                            .collect();
+                        top.conserved(&e)[j].1
+                    })
+                    .collect();
+                let size = grad.iter().map(|g| g.eps * g.eps).sum::<f64>().sqrt() * scale;
+                let relative = c.eps.abs() / size;
+                worst = worst.max(relative);
+                assert!(relative <= 1e-13, "{friction:?} {mode}: {relative:e}");
+            }
+        }
+    }
+    eprintln!("largest |∇C·f|/(|∇C| |f|): {worst:.1e}");
+}
+
+/// The engine's tippe top with `friction`.
+fn engine(friction: Friction) -> GroundTop {
+    let p = LEINE_GLOCKER;
+    let sphere = SphereContact::try_new(p.radius, DVec3::new(0.0, 0.0, p.offset)).unwrap();
+    let i = glam::DMat3::from_diagonal(DVec3::new(
+        p.transverse_moment,
+        p.transverse_moment,
+        p.axial_moment,
+    ));
+    GroundTop::try_new(p.mass, i, sphere, friction, p.gravity).unwrap()
+}
+
+/// The engine's state for the body-axes state `x` (`γ, ω` and, with a
+/// friction law, `v`; any heading).
+fn start(top: &GroundTop, x: &[f64]) -> GroundTopState {
+    // The turn taking `up` to `ẑ` about `up × ẑ` (glam's
+    // `from_rotation_arc` returns the identity for angles below ~1e-8).
+    let up = DVec3::new(x[0], x[1], x[2]).normalize();
+    let axis = up.cross(DVec3::Z);
+    let q = if axis.length() > 0.0 {
+        DQuat::from_axis_angle(axis.normalize(), axis.length().atan2(up.z))
+    } else if up.z > 0.0 {
+        DQuat::IDENTITY
+    } else {
+        DQuat::from_rotation_x(std::f64::consts::PI)
+    };
+    let omega = q * DVec3::new(x[3], x[4], x[5]);
+    if x.len() == 6 {
+        top.try_rolling_state_on_ground(q, omega).unwrap()
+    } else {
+        let v = q * DVec3::new(x[6], x[7], x[8]);
+        top.try_state_on_ground(q, omega, DVec2::new(v.x, v.y))
+            .unwrap()
+    }
+}
+
+/// The growth rate and frequency (body axes) of `γ_x` from the engine
+/// started at `amplitude` along the real part of the library's mode `k`
+/// (the rattleback test's method: zeros `π/ω` apart, extrema on
+/// `ln|y| = const + σ t`), RK4 at `ω h = 2e-3`.
+fn measured(
+    top: &GroundTop,
+    lin: &Linearisation,
+    k: usize,
+    amplitude: f64,
+    duration: f64,
+) -> (f64, f64) {
+    let mode = &lin.modes[k];
+    let x: Vec<f64> = lin
+        .state
+        .iter()
+        .zip(&mode.shape)
+        .map(|(v, c)| v + amplitude * c.re)
+        .collect();
+    let mut s = start(top, &x);
+    let observe = |s: &GroundTopState| (s.world_from_body.normalize().conjugate() * DVec3::Z).x;
+    let fastest = lin.state[3..6]
+        .iter()
+        .fold(mode.eigenvalue.im.abs(), |a, b| a.max(b.abs()));
+    let h = 2e-3 / fastest;
+    let mut samples = vec![observe(&s)];
+    top.try_advance(&mut s, 0.0, h, (duration / h).round() as usize, |_, s| {
+        samples.push(observe(s))
+    })
+    .unwrap();
+    let (mut zeros, mut extrema) = (Vec::new(), Vec::new());
+    for k in 1..samples.len() - 1 {
+        let (a, b, c) = (samples[k - 1], samples[k], samples[k + 1]);
+        if a * b < 0.0 {
+            zeros.push(h * ((k - 1) as f64 + a / (a - b)));
+        }
+        if b.abs() > a.abs() && b.abs() >= c.abs() {
+            let shift = 0.5 * (a - c) / (a - 2.0 * b + c);
+            extrema.push((
+                h * (k as f64 + shift),
+                (b - 0.25 * (a - c) * shift).abs().ln(),
+            ));
+        }
+    }
+    let n = zeros.len();
+    let spans = (n - 1) & !1;
+    let omega = std::f64::consts::PI * spans as f64 / (zeros[spans] - zeros[0]);
+    let m = extrema.len() as f64;
+    let (t_mean, y_mean) = extrema
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (t, y)| (a + t / m, b + y / m));
+    let (num, den) = extrema.iter().fold((0.0, 0.0), |(a, b), (t, y)| {
+        (a + (t - t_mean) * (y - y_mean), b + (t - t_mean).powi(2))
+    });
+    (num / den, omega)
+}
+
+/// Viscous and regularised Coulomb friction, upright at 180 rad/s: the
+/// engine started `1e-7` along the library's growing wobble grows at its
+/// rate and turns at its frequency (body axes). Rolling, inverted at 180
+/// rad/s: the engine's slow wobble turns at the library's frequency and
+/// neither grows nor decays. Measured (debug build, RK4 at `h = 2e-3/180`
+/// s, 1.2 s of CPU in all):
+///
+/// ```text
+/// law      state     σ library (1/s)  ω library (rad/s)  σ rel. error  ω rel. error
+/// viscous  upright   1.3077015080     21.0500235677      1.0e-11       5.2e-12
+/// sliding  upright   1.0820731404     13.0573178201      −1.7e-11      1.7e-12
+/// rolling  inverted  0 (|σ| 6.0e-13)  28.2374373394      —             −4.5e-13
+/// ```
+#[test]
+fn the_engine_grows_and_wobbles_at_the_librarys_rates() {
+    // Viscous and regularised Coulomb friction, upright: unstable.
+    for friction in [viscous(), sliding()] {
+        let top = TippeTop::try_new(LEINE_GLOCKER, friction).unwrap();
+        let lin = Linearisation::try_new(&top, &top.spinning_upright(180.0).unwrap()).unwrap();
+        let Verdict::Unstable { growth_rate } = lin.verdict else {
+            panic!("{}", lin.verdict)
+        };
+        let k = lin
+            .modes
+            .iter()
+            .position(|m| m.eigenvalue.re == growth_rate)
+            .unwrap();
+        let omega = lin.modes[k].eigenvalue.im.abs();
+        let (sigma, w) = measured(&engine(friction), &lin, k, 1e-7, 4.0 / growth_rate);
+        let (e_sigma, e_omega) = (sigma / growth_rate - 1.0, w / omega - 1.0);
+        eprintln!(
+            "{friction:?} upright: library σ = {growth_rate:.10}, ω = {omega:.10}; engine σ = {sigma:.10} ({e_sigma:.1e}), ω = {w:.10} ({e_omega:.1e})"
+        );
+        assert!(
+            e_sigma.abs() <= 1e-9 && e_omega.abs() <= 1e-10,
+            "{e_sigma:e} {e_omega:e}"
+        );
+    }
+
+    // Rolling, inverted: neutral wobbles.
+    let top = TippeTop::try_new(LEINE_GLOCKER, Friction::Rolling).unwrap();
+    let lin = Linearisation::try_new(&top, &top.spinning_inverted(180.0).unwrap()).unwrap();
+    assert!(
+        matches!(lin.verdict, Verdict::Stable { .. }),
+        "{}",
+        lin.verdict
+    );
+    let k = lin
+        .modes
+        .iter()
+        .enumerate()
+        .filter(|(_, m)| m.eigenvalue.im > 0.0)
+        .min_by(|a, b| a.1.eigenvalue.im.total_cmp(&b.1.eigenvalue.im))
+        .unwrap()
+        .0;
+    let omega = lin.modes[k].eigenvalue.im;
+    let (sigma, w) = measured(
+        &engine(Friction::Rolling),
+        &lin,
+        k,
+        1e-6,
+        20.0 * std::f64::consts::TAU / omega,
+    );
+    let e_omega = w / omega - 1.0;
+    eprintln!(
+        "rolling inverted: library ω = {omega:.10}; engine ω = {w:.10} ({e_omega:.1e}), σ = {sigma:.1e}"
+    );
+    assert!(e_omega.abs() <= 1e-10, "{e_omega:e}");
+    assert!(sigma.abs() <= 1e-9, "{sigma:e}");
+}
