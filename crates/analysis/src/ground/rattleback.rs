@@ -130,3 +130,33 @@ impl Rattleback {
 }
 
 super::delegate_vector_field!(Rattleback, field);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use kreisel_dynamics::SphereContact;
+
+    #[test]
+    fn only_a_rolling_ellipsoid_is_a_rattleback() {
+        let body = Rattleback::kane_levinson().unwrap();
+        assert_eq!(body.dim(), 6);
+        let i = DMat3::from_diagonal(DVec3::new(2e-4, 16e-4, 17e-4));
+        let ball = SphereContact::try_new(0.02, DVec3::ZERO).unwrap();
+        let top = GroundTop::try_new(1.0, i, ball, Friction::Rolling, 9.81).unwrap();
+        assert!(matches!(
+            Rattleback::try_from_ground_top(&top),
+            Err(AnalysisError::Parameter { name: "shape", .. })
+        ));
+        let hull = EllipsoidContact::try_new(DVec3::new(0.2, 0.03, 0.02), DVec3::ZERO).unwrap();
+        let sliding =
+            GroundTop::try_with_shape(1.0, i, ContactShape::Ellipsoid(hull), Friction::None, 9.81)
+                .unwrap();
+        assert!(matches!(
+            Rattleback::try_from_ground_top(&sliding),
+            Err(AnalysisError::Parameter {
+                name: "friction",
+                ..
+            })
+        ));
+    }
+}

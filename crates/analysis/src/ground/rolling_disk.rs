@@ -352,3 +352,52 @@ impl VectorField for RollingDisk {
         true
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Linearisation;
+
+    /// A scene's coin is the same family; a sliding coin, a ball, or an
+    /// off-centre rim are refused; a circle's state is steady.
+    #[test]
+    fn a_scenes_coin_and_what_is_refused() {
+        let (m, a) = (0.005, 0.01);
+        let rim = DiskContact::try_new(a, DVec3::ZERO, DVec3::Z).unwrap();
+        let body = Body::from_principal_moments(m, DVec3::new(0.25, 0.25, 0.5) * m * a * a)
+            .world_from_body(glam::DQuat::from_rotation_x(std::f64::consts::FRAC_PI_2))
+            .on_ground(ContactShape::Disk(rim), Friction::Rolling)
+            .try_build()
+            .unwrap();
+        let coin = RollingDisk::try_from_body(&body, DVec3::new(0.0, 0.0, -9.81)).unwrap();
+        let thin = RollingDisk::thin(m, a, 9.81).unwrap();
+        assert_eq!(coin, thin);
+        let i = DMat3::from_diagonal(DVec3::new(0.25, 0.25, 0.5) * m * a * a);
+        let sliding =
+            GroundTop::try_with_shape(m, i, ContactShape::Disk(rim), Friction::None, 9.81).unwrap();
+        assert!(matches!(
+            RollingDisk::try_from_ground_top(&sliding),
+            Err(AnalysisError::Parameter {
+                name: "friction",
+                ..
+            })
+        ));
+        let off = DiskContact::try_new(a, DVec3::new(0.0, 0.0, 0.002), DVec3::Z).unwrap();
+        let off = GroundTop::try_with_shape(m, i, ContactShape::Disk(off), Friction::Rolling, 9.81)
+            .unwrap();
+        assert!(matches!(
+            RollingDisk::try_from_ground_top(&off),
+            Err(AnalysisError::Parameter { name: "shape", .. })
+        ));
+        assert!(matches!(
+            thin.rolling_in_circle(2.0, 1.0),
+            Err(AnalysisError::Parameter { name: "tilt", .. })
+        ));
+        assert!(matches!(
+            thin.rolling_straight(f64::INFINITY),
+            Err(AnalysisError::Parameter { name: "speed", .. })
+        ));
+        let x = thin.rolling_in_circle(0.4, -7.0).unwrap();
+        assert!(Linearisation::try_new(&thin, &x).is_ok());
+    }
+}

@@ -241,3 +241,89 @@ impl TippeTop {
 }
 
 super::delegate_vector_field!(TippeTop, field);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Linearisation, Verdict};
+    use kreisel_dynamics::{ContactShape, EllipsoidContact};
+
+    /// A scene's body gives the same family as the parameters; other
+    /// bodies are refused with the reason.
+    #[test]
+    fn a_scenes_body_is_the_same_top_and_others_are_refused() {
+        let p = LEINE_GLOCKER;
+        let ball = ContactShape::Sphere(
+            SphereContact::try_new(p.radius, DVec3::new(0.0, 0.0, p.offset)).unwrap(),
+        );
+        let body = Body::from_principal_moments(p.mass, DVec3::new(8e-7, 8e-7, 7e-7))
+            .on_ground(ball, Friction::None)
+            .try_build()
+            .unwrap();
+        let from_body = TippeTop::try_from_body(&body, DVec3::new(0.0, 0.0, -9.81)).unwrap();
+        let direct = TippeTop::try_new(p, Friction::None).unwrap();
+        assert_eq!(from_body.parameters(), direct.parameters());
+        let x = from_body.spinning_inverted(180.0).unwrap();
+        assert_eq!(
+            Linearisation::try_new(&from_body, &x).unwrap(),
+            Linearisation::try_new(&direct, &x).unwrap()
+        );
+        // Gravity sideways, a body in flight, an offset beyond the radius.
+        assert!(matches!(
+            TippeTop::try_from_body(&body, DVec3::new(1.0, 0.0, -9.81)),
+            Err(AnalysisError::Parameter {
+                name: "gravity",
+                ..
+            })
+        ));
+        let flying = Body::from_principal_moments(p.mass, DVec3::new(8e-7, 8e-7, 7e-7))
+            .try_build()
+            .unwrap();
+        assert!(matches!(
+            TippeTop::try_from_body(&flying, DVec3::new(0.0, 0.0, -9.81)),
+            Err(AnalysisError::Parameter {
+                name: "support",
+                ..
+            })
+        ));
+        let far = TippeTopParameters {
+            offset: 0.02,
+            ..LEINE_GLOCKER
+        };
+        assert!(matches!(
+            TippeTop::try_new(far, Friction::None),
+            Err(AnalysisError::Parameter { name: "offset", .. })
+        ));
+        // An ellipsoid, or a sphere off the axis of symmetry, is no tippe top.
+        let hull = ContactShape::Ellipsoid(
+            EllipsoidContact::try_new(DVec3::new(0.2, 0.03, 0.02), DVec3::ZERO).unwrap(),
+        );
+        let i = DMat3::from_diagonal(DVec3::new(8e-7, 8e-7, 7e-7));
+        let egg = GroundTop::try_with_shape(p.mass, i, hull, Friction::None, 9.81).unwrap();
+        assert!(matches!(
+            TippeTop::try_from_ground_top(&egg),
+            Err(AnalysisError::Parameter { name: "shape", .. })
+        ));
+        let side = SphereContact::try_new(p.radius, DVec3::new(p.offset, 0.0, 0.0)).unwrap();
+        let lopsided = GroundTop::try_new(p.mass, i, side, Friction::None, 9.81).unwrap();
+        assert!(matches!(
+            TippeTop::try_from_ground_top(&lopsided),
+            Err(AnalysisError::Parameter { name: "shape", .. })
+        ));
+    }
+
+    /// The thresholds exist where the window says, and a tippe top with
+    /// `I₁ = I₃` inverts above both.
+    #[test]
+    fn thresholds_exist_inside_the_window() {
+        let top = TippeTop::try_new(LEINE_GLOCKER, Friction::None).unwrap();
+        assert_eq!(top.inversion_window(), (0.8, 1.2));
+        let up = top.dissipative_threshold_upright().unwrap();
+        let down = top.dissipative_threshold_inverted().unwrap();
+        assert!(up < down && down < 180.0, "{up} {down}");
+        // Frictionless the top is conservative: upright stable at any spin.
+        let lin = Linearisation::try_new(&top, &top.spinning_upright(5.0).unwrap()).unwrap();
+        assert!(matches!(lin.verdict, Verdict::Stable { asymptotic: false }));
+        assert!(top.is_conservative());
+    }
+}
