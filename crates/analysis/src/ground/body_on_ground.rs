@@ -4,10 +4,10 @@
 //! translations and the rotations about the vertical reduced away.
 
 use glam::DVec3;
-use kreisel_dynamics::{Body, Friction, GroundTop, Support};
+use kreisel_dynamics::{Body, Friction, GroundTop};
 
 use super::algebra::{V3, cross, dot, mat_vec, norm, scale, sub};
-use super::contact_equations::ContactBody;
+use super::contact_equations::{ContactBody, ground_top_of};
 use super::surface::Surface;
 use crate::linearisation::relative_residual;
 use crate::vector_field::jacobian;
@@ -177,36 +177,6 @@ impl BodyOnGround {
     pub(crate) fn contact_body(&self) -> &ContactBody {
         &self.body
     }
-}
-
-/// The engine's `GroundTop` for a body with [`Support::Ground`] in a world
-/// of gravity `gravity`.
-pub(crate) fn ground_top_of(body: &Body, gravity: DVec3) -> Result<GroundTop, AnalysisError> {
-    let Support::Ground {
-        shape, friction, ..
-    } = body.support()
-    else {
-        return Err(AnalysisError::Parameter {
-            name: "support",
-            value: f64::NAN,
-            must: "the ground (Support::Ground)",
-        });
-    };
-    if !(gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0 && gravity.z.is_finite()) {
-        return Err(AnalysisError::Parameter {
-            name: "gravity",
-            value: gravity.length(),
-            must: "along −z (0, 0, −g), g > 0",
-        });
-    }
-    let props = body.mass_properties();
-    Ok(GroundTop::try_with_shape(
-        props.mass,
-        props.inertia,
-        shape,
-        friction,
-        -gravity.z,
-    )?)
 }
 
 /// `(γ, ω, v)` of a state (`v = 0` when rolling: not used).

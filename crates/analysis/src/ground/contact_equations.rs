@@ -5,7 +5,7 @@
 //! the plane) — as `kreisel_dynamics::GroundTop` has them in world axes.
 
 use glam::{DMat3, DVec3};
-use kreisel_dynamics::{Friction, GroundTop};
+use kreisel_dynamics::{Body, Friction, GroundTop, Support};
 
 use super::algebra::{V3, add, cross, dot, mat_vec, norm, scale, solve3, sub};
 use super::surface::Surface;
@@ -201,6 +201,36 @@ impl ContactBody {
             && (m1 - other.dot(i * other)).abs() <= 1e-12 * scale
             && across.dot(i * other).abs() <= 1e-12 * scale
     }
+}
+
+/// The engine's `GroundTop` for a body with [`Support::Ground`] in a world
+/// of gravity `gravity`.
+pub(crate) fn ground_top_of(body: &Body, gravity: DVec3) -> Result<GroundTop, AnalysisError> {
+    let Support::Ground {
+        shape, friction, ..
+    } = body.support()
+    else {
+        return Err(AnalysisError::Parameter {
+            name: "support",
+            value: f64::NAN,
+            must: "the ground (Support::Ground)",
+        });
+    };
+    if !(gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0 && gravity.z.is_finite()) {
+        return Err(AnalysisError::Parameter {
+            name: "gravity",
+            value: gravity.length(),
+            must: "along −z (0, 0, −g), g > 0",
+        });
+    }
+    let props = body.mass_properties();
+    Ok(GroundTop::try_with_shape(
+        props.mass,
+        props.inertia,
+        shape,
+        friction,
+        -gravity.z,
+    )?)
 }
 
 #[cfg(test)]

@@ -5,7 +5,8 @@
 use glam::{DMat3, DVec3};
 use kreisel_dynamics::{Body, ContactShape, EllipsoidContact, Friction, GroundTop};
 
-use super::body_on_ground::{BodyOnGround, ground_top_of};
+use super::body_on_ground::BodyOnGround;
+use super::contact_equations::ground_top_of;
 use super::surface::Surface;
 use crate::{AnalysisError, Eigenvalue, Scalar, VectorField, ZeroMode};
 

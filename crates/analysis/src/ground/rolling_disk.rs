@@ -7,8 +7,8 @@ use kreisel_dynamics::{Body, ContactShape, DiskContact, Friction, GroundTop};
 use nalgebra::DMatrix;
 
 use super::algebra::{V3, cross};
-use super::body_on_ground::ground_top_of;
 use super::contact_equations::ContactBody;
+use super::contact_equations::ground_top_of;
 use super::surface::Surface;
 use crate::vector_field::{conserved_gradients, jacobian};
 use crate::{AnalysisError, Scalar, VectorField, ZeroMode, ZeroModeKind};

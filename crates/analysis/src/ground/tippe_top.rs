@@ -6,7 +6,8 @@
 use glam::{DMat3, DVec3};
 use kreisel_dynamics::{Body, Friction, GroundTop, SphereContact};
 
-use super::body_on_ground::{BodyOnGround, ground_top_of};
+use super::body_on_ground::BodyOnGround;
+use super::contact_equations::ground_top_of;
 use super::surface::Surface;
 use crate::{AnalysisError, Eigenvalue, Scalar, VectorField, ZeroMode};
 
@@ -45,8 +46,8 @@ pub struct TippeTopParameters {
 /// on the axis of symmetry, with its steady spins and thresholds.
 ///
 /// ```text
-/// upright:   γ = ĉ,  ω = Ω ĉ   (centre of mass at R − a)
-/// inverted:  γ = −ĉ, ω = Ω ĉ... = −Ω γ... written ω = Ω γ (spin about the vertical)
+/// upright:   γ = ĉ,  ω = Ω γ   (centre of mass at R − a; Ω the spin about the vertical)
+/// inverted:  γ = −ĉ, ω = Ω γ   (centre of mass at R + a)
 /// window:    1 − α < I₁/I₃ < 1 + α,  α = a/R            (inversion possible)
 /// frictionless, inverted:   stable iff I₃² Ω² > 4 I₁ m g a
 /// dissipative friction:     upright unstable iff Ω² > m g a (R − a)² / (R² (I₁ − (1 − α) I₃))
