@@ -84,7 +84,7 @@ impl BodyOnGround {
         })
     }
 
-    /// A scene's body on the ground ([`Support::Ground`]) in a world of
+    /// A scene's body on the ground ([`kreisel_dynamics::Support::Ground`]) in a world of
     /// gravity `gravity` (which must point along −z): its mass properties,
     /// shape and friction, as the world builds its `GroundTop`.
     ///

@@ -5,6 +5,7 @@
 use glam::{DMat3, DVec3};
 use kreisel_dynamics::{Body, ContactShape, DiskContact, Friction, GroundTop};
 use nalgebra::DMatrix;
+use num_dual::Dual64;
 
 use super::algebra::{V3, cross};
 use super::contact_equations::ContactBody;
@@ -216,13 +217,19 @@ impl RollingDisk {
     }
 
     /// Rolling in a steady circle tilted by `tilt` rad from the vertical
-    /// (the axis `tilt` below the horizontal, `γ = (cos θ, 0, sin θ)`),
-    /// the frame turning about the vertical at `precession` rad/s: the spin
-    /// `ω₃` that makes it steady.
+    /// (`γ = (cos θ, 0, sin θ)`), the frame turning about the vertical at
+    /// `precession` rad/s: the spin `ω₃` that makes it steady, solved from
+    /// `ω̇₂ = A + B ω₃ = 0` (affine in `ω₃`). By hand, the moments about
+    /// `e₂` at `r = a e₁`, `Ω_F = ψ̇ γ`:
     ///
     /// ```text
-    /// ω = (ψ̇ cos θ, 0, ω₃),   ω̇₂(ω₃) = A + B ω₃ = 0   (ω̇₂ is affine in ω₃)
+    /// ω = (ψ̇ cos θ, 0, ω₃),   ω₃ = sin θ (I₁ ψ̇² cos θ − m g a) / ((I₃ + m a²) ψ̇ cos θ)
     /// ```
+    ///
+    /// so a circle exists for every tilt `|θ| < π/2` and precession
+    /// `ψ̇ ≠ 0`, one spin each (`ψ̇ = 0`: only upright, `θ = 0`, at any
+    /// spin — rolling straight); the centre of mass runs at `a |ω₃|` on a
+    /// circle of radius `a |ω₃/ψ̇|`.
     ///
     /// # Errors
     /// [`AnalysisError::Parameter`] for a tilt outside `(−π/2, π/2)` or
@@ -244,13 +251,13 @@ impl RollingDisk {
             });
         }
         let (c, s) = (tilt.cos(), tilt.sin());
-        let at = |spin: f64| {
-            let mut dx = [0.0; 5];
-            self.rates(&[c, s, precession * c, 0.0, spin], &mut dx);
-            dx[3]
-        };
-        let a0 = at(0.0);
-        let b = at(1.0) - a0;
+        // A and B at once: ω̇₂ and its exact derivative in ω₃ at ω₃ = 0.
+        let x = [c, s, precession * c, 0.0, 0.0].map(Dual64::from);
+        let mut x = x;
+        x[4] = Dual64::new(0.0, 1.0);
+        let mut dx = [Dual64::from(0.0); 5];
+        self.rates(&x, &mut dx);
+        let (a0, b) = (dx[3].re, dx[3].eps);
         let spin = -a0 / b;
         if !spin.is_finite() || b.abs() <= 1e-12 * a0.abs() {
             return Err(AnalysisError::NoSuchMotion {
@@ -399,5 +406,17 @@ mod tests {
         ));
         let x = thin.rolling_in_circle(0.4, -7.0).unwrap();
         assert!(Linearisation::try_new(&thin, &x).is_ok());
+        // The spin of the hand formula, and no circle without precession.
+        let (i1, i3, g) = (0.25 * m * a * a, 0.5 * m * a * a, 9.81);
+        for (tilt, rate) in [(0.3f64, 5.0f64), (-0.7, 12.0), (1.2, -3.0)] {
+            let (s, c) = tilt.sin_cos();
+            let spin = s * (i1 * rate * rate * c - m * g * a) / ((i3 + m * a * a) * rate * c);
+            let x = thin.rolling_in_circle(tilt, rate).unwrap();
+            assert!((x[4] / spin - 1.0).abs() < 1e-14, "{} vs {spin}", x[4]);
+        }
+        assert!(matches!(
+            thin.rolling_in_circle(0.3, 0.0),
+            Err(AnalysisError::NoSuchMotion { .. })
+        ));
     }
 }
