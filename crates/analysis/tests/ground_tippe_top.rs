@@ -130,7 +130,8 @@ fn frictionless_inverted_needs_the_sleeping_tops_spin() {
     // The frequencies: the sleeping top's `ω_s = (I₃Ω ± √(I₃²Ω² − 4 I₁ m g l))/(2 I₁)`
     // in space (`l = −a` upright, `+a` inverted), seen in the body axes
     // turning at `Ω` as `|ω_s − Ω|`, and the horizontal velocity (a fixed
-    // vector in space) at `Ω`. Measured: ≤ 1.8e-15 relative.
+    // vector in space) at `Ω`. Measured: ≤ 1.8e-15 relative; the space
+    // frequencies the modes report are `|ω_s|` (and 0 for the velocity).
     let p = LEINE_GLOCKER;
     let spin = 180.0;
     for (x, l) in [
@@ -161,6 +162,24 @@ fn frictionless_inverted_needs_the_sleeping_tops_spin() {
             assert!((f / e - 1.0).abs() <= 1e-13, "{found:?} vs {expected:?}");
         }
         assert_eq!(found.len(), 3);
+        // In space: the nutation and the precession `|ω_s|`, and the
+        // velocity standing still (0).
+        let mut space: Vec<f64> = lin
+            .modes
+            .iter()
+            .filter(|m| m.eigenvalue.im > 0.0)
+            .map(|m| m.space_frequency.expect("circular"))
+            .collect();
+        space.sort_by(f64::total_cmp);
+        let mut closed: Vec<f64> = [i3 * spin + root, i3 * spin - root]
+            .iter()
+            .map(|w| (w / (2.0 * i1)).abs())
+            .chain([0.0])
+            .collect();
+        closed.sort_by(f64::total_cmp);
+        for (f, e) in space.iter().zip(&closed) {
+            assert!((f - e).abs() <= 1e-12 * spin, "{space:?} vs {closed:?}");
+        }
     }
 }
 

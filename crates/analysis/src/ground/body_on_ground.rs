@@ -11,7 +11,9 @@ use super::contact_equations::{ContactBody, ground_top_of};
 use super::surface::Surface;
 use crate::linearisation::relative_residual;
 use crate::vector_field::jacobian;
-use crate::{AnalysisError, STEADY_RESIDUAL, Scalar, VectorField, ZeroMode, ZeroModeKind};
+use crate::{
+    AnalysisError, Eigenvalue, STEADY_RESIDUAL, Scalar, VectorField, ZeroMode, ZeroModeKind,
+};
 
 /// A body touching the plane `z = 0` under gravity `−g ẑ`, in body axes:
 /// the up vector `γ = Aᵀẑ`, the angular velocity `ω` and — unless it
@@ -313,6 +315,43 @@ impl VectorField for BodyOnGround {
             ));
         }
         out
+    }
+
+    /// At a spin about the vertical (`γ ∥ ω`) the body axes turn at
+    /// `Ω = ω·γ̂` about it; a circular mode (its transverse `δγ`, or `δv`
+    /// where `δγ = 0`, turns about `γ̂` at the signed rate `ω_b`) is seen in
+    /// space at `|ω_b + Ω|`.
+    ///
+    /// ```text
+    /// ω_b = Im λ · (−Im(v̄ × v)·γ̂)/|v_⊥|²,   circular iff |Im(v̄ × v)·γ̂| = |v_⊥|² (to 1e-6)
+    /// ```
+    fn space_frequency(
+        &self,
+        x: &[f64],
+        eigenvalue: Eigenvalue,
+        shape: &[Eigenvalue],
+    ) -> Option<f64> {
+        let up = DVec3::new(x[0], x[1], x[2]).normalize();
+        let omega = DVec3::new(x[3], x[4], x[5]);
+        if up.cross(omega).length() > 1e-12 * omega.length().max(f64::MIN_POSITIVE) {
+            return None;
+        }
+        let part = |k: usize| {
+            let re = DVec3::new(shape[k].re, shape[k + 1].re, shape[k + 2].re);
+            let im = DVec3::new(shape[k].im, shape[k + 1].im, shape[k + 2].im);
+            (re - up * up.dot(re), im - up * up.dot(im))
+        };
+        let (mut re, mut im) = part(0);
+        if re.length_squared() + im.length_squared() < 1e-20 && shape.len() == 9 {
+            (re, im) = part(6);
+        }
+        let size = re.length_squared() + im.length_squared();
+        // Im(v̄ × v) = 2 re × im.
+        let turn = -2.0 * re.cross(im).dot(up);
+        if size == 0.0 || (turn.abs() / size - 1.0).abs() > 1e-6 {
+            return None;
+        }
+        Some((eigenvalue.im * turn / size + omega.dot(up)).abs())
     }
 
     fn reduced_by(&self) -> Vec<String> {
