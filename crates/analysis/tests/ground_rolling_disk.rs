@@ -4,8 +4,10 @@
 //! and the fall's growth rate measured from the engine's nonlinear runs.
 
 use glam::{DMat3, DQuat, DVec3};
-use kreisel_analysis::{Linearisation, RollingDisk, VectorField, Verdict, ZeroModeKind};
-use kreisel_dynamics::{ContactShape, DiskContact, Friction, GroundTop, GroundTopState};
+use kreisel_analysis::{
+    AnalysisError, Linearisation, RollingDisk, VectorField, Verdict, ZeroModeKind,
+};
+use kreisel_dynamics::{Body, ContactShape, DiskContact, Friction, GroundTop, GroundTopState};
 
 const MASS: f64 = 0.005;
 const RADIUS: f64 = 0.01;
@@ -304,4 +306,59 @@ fn the_engine_leaves_an_unstable_circle_at_the_librarys_rate() {
         num / den
     );
     assert!(e_sigma.abs() <= 1e-6, "{e_sigma:e}");
+}
+
+/// A scene's coin is the same family; a sliding coin, a ball, or an
+/// off-centre rim are refused; a circle's state is steady.
+#[test]
+fn a_scenes_coin_and_what_is_refused() {
+    let (m, a) = (0.005, 0.01);
+    let rim = DiskContact::try_new(a, DVec3::ZERO, DVec3::Z).unwrap();
+    let body = Body::from_principal_moments(m, DVec3::new(0.25, 0.25, 0.5) * m * a * a)
+        .world_from_body(glam::DQuat::from_rotation_x(std::f64::consts::FRAC_PI_2))
+        .on_ground(ContactShape::Disk(rim), Friction::Rolling)
+        .try_build()
+        .unwrap();
+    let coin = RollingDisk::try_from_body(&body, DVec3::new(0.0, 0.0, -9.81)).unwrap();
+    let thin = RollingDisk::thin(m, a, 9.81).unwrap();
+    assert_eq!(coin, thin);
+    let i = DMat3::from_diagonal(DVec3::new(0.25, 0.25, 0.5) * m * a * a);
+    let sliding =
+        GroundTop::try_with_shape(m, i, ContactShape::Disk(rim), Friction::None, 9.81).unwrap();
+    assert!(matches!(
+        RollingDisk::try_from_ground_top(&sliding),
+        Err(AnalysisError::Parameter {
+            name: "friction",
+            ..
+        })
+    ));
+    let off = DiskContact::try_new(a, DVec3::new(0.0, 0.0, 0.002), DVec3::Z).unwrap();
+    let off =
+        GroundTop::try_with_shape(m, i, ContactShape::Disk(off), Friction::Rolling, 9.81).unwrap();
+    assert!(matches!(
+        RollingDisk::try_from_ground_top(&off),
+        Err(AnalysisError::Parameter { name: "shape", .. })
+    ));
+    assert!(matches!(
+        thin.rolling_in_circle(2.0, 1.0),
+        Err(AnalysisError::Parameter { name: "tilt", .. })
+    ));
+    assert!(matches!(
+        thin.rolling_straight(f64::INFINITY),
+        Err(AnalysisError::Parameter { name: "speed", .. })
+    ));
+    let x = thin.rolling_in_circle(0.4, -7.0).unwrap();
+    assert!(Linearisation::try_new(&thin, &x).is_ok());
+    // The spin of the hand formula, and no circle without precession.
+    let (i1, i3, g) = (0.25 * m * a * a, 0.5 * m * a * a, 9.81);
+    for (tilt, rate) in [(0.3f64, 5.0f64), (-0.7, 12.0), (1.2, -3.0)] {
+        let (s, c) = tilt.sin_cos();
+        let spin = s * (i1 * rate * rate * c - m * g * a) / ((i3 + m * a * a) * rate * c);
+        let x = thin.rolling_in_circle(tilt, rate).unwrap();
+        assert!((x[4] / spin - 1.0).abs() < 1e-14, "{} vs {spin}", x[4]);
+    }
+    assert!(matches!(
+        thin.rolling_in_circle(0.3, 0.0),
+        Err(AnalysisError::NoSuchMotion { .. })
+    ));
 }
