@@ -29,8 +29,9 @@ use crate::{AnalysisError, Scalar};
 /// conserved (zero on the plane). Newton and Euler about the centre of
 /// mass with the contact force `F` at `−r` (`I ω̇ + ω × Iω = −r × F`,
 /// `F = m a_G + m g γ`), as in the derivation of `kreisel_dynamics`'s
-/// contact module; the rolling form is Borisov & Mamaev's (and the
-/// rattleback generator's, `tests/data/gen/rattleback.py`).
+/// contact module; the rolling form is the rattleback generator's
+/// (`tests/data/gen/rattleback.py`, body axes, Poisson's variables) with
+/// the frame's rate `Ω` in place of `ω` where the axes turn.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct ContactBody {
     pub(crate) mass: f64,

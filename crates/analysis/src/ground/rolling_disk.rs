@@ -33,8 +33,8 @@ use crate::{AnalysisError, Scalar, VectorField, ZeroMode, ZeroModeKind};
 ///            wobble ω_w² = ((I₃ + m a²) I₃ V²/(a² I₁) − m g a) / (I₁ + m a²)
 /// ```
 ///
-/// (thin disk `I₁ = m a²/4`, `I₃ = m a²/2`: `V² > g a/3`, O'Reilly,
-/// Nonlinear Dynamics 10:287 (1996)). The linearised tilt and yaw,
+/// (thin disk `I₁ = m a²/4`, `I₃ = m a²/2`: `V² > g a/3`, the bound of
+/// O'Reilly on rolling and sliding disks, Nonlinear Dynamics (1996)). The linearised tilt and yaw,
 /// `(I₁ + m a²) θ̈ = m g a θ − (I₃ + m a²)(V/a) ψ̇`, `I₁ ψ̈ = I₃ (V/a) θ̇`,
 /// give the threshold and the wobble. The steady motions near one form a
 /// two-parameter family (tilt and precession rate); at a fixed energy one

@@ -61,15 +61,17 @@ pub struct TippeTopParameters {
 /// set `λ = const` (λ survives every force at the contact, `E` falls under
 /// any dissipative law): the amended potential
 /// `V_λ(θ) = λ²/(2 rᵀIr) + m g (R − a cos θ)` of the tilt `θ`, whose
-/// curvature changes sign there (the energy–momentum argument of Bou-Rabee,
-/// Marsden & Romero, SIAM J. Appl. Dyn. Syst. 3:352 (2004); the same
-/// window and thresholds as Ueda, Sasaki & Watanabe, SIAM J. Appl. Dyn.
-/// Syst. 4:1159 (2005), for their sliding law, which like the regularised
-/// Coulomb law vanishes at zero slip). They do not depend on the law's
-/// coefficient — only the growth rates do — and hold for viscous and for
-/// regularised Coulomb friction; rolling without slipping conserves the
-/// energy and has no such threshold (its spectrum is neutral or not:
-/// Krein collisions).
+/// curvature changes sign there — the energy–momentum argument of
+/// Bou-Rabee, Marsden & Romero, SIAM J. Appl. Dyn. Syst. 3:352 (2004),
+/// worked out here for the sphere (derived in this file's terms, not
+/// copied; Ueda, Sasaki & Watanabe, arXiv:physics/0507198 (2005), give
+/// spin thresholds for a sliding law that vanishes at zero slip, not
+/// compared digit by digit). So they do not depend on the law or its
+/// coefficient — only the growth rates do: the tests find them, by
+/// bisection on the spectrum, for viscous friction at two coefficients and
+/// for regularised Coulomb friction, to 2e-10. Their large-spin limits
+/// are the window. Rolling without slipping conserves the energy and has
+/// no such threshold (its spectrum is neutral or not: Krein collisions).
 ///
 /// ```
 /// use kreisel_analysis::{Linearisation, TippeTop, Verdict, LEINE_GLOCKER};
