@@ -374,3 +374,73 @@ fn a_found_steady_spin_is_accounted_for() {
         }
     }
 }
+
+/// Rolling without slipping: inverted spinning is stable above
+/// `Ω_c = √(4 (I₁ + m h²) m g a)/(I₃ + m h R)`, `h = R + a` (bisection on
+/// the verdict, measured relative difference printed, ≤ 1e-12), upright at
+/// every spin; the space frequencies of the wobbles are the closed form's
+/// `|ν|` (`TippeTop::rolling_inverted_threshold`), ≤ 1e-12 relative.
+#[test]
+fn rolling_inverted_needs_the_rolling_tops_spin() {
+    let top = TippeTop::try_new(LEINE_GLOCKER, Friction::Rolling).unwrap();
+    let closed = top.rolling_inverted_threshold();
+    let turned = Turned(&top);
+    let unstable = |spin: f64| {
+        let x = Turned::<TippeTop>::apply(&top.spinning_inverted(spin).unwrap());
+        let lin = Linearisation::try_new(&turned, &x).unwrap();
+        matches!(lin.verdict, Verdict::Unstable { .. })
+    };
+    let found = boundary(0.5 * closed, 2.0 * closed, unstable);
+    let error = found / closed - 1.0;
+    eprintln!("rolling inverted: Ω_c = {closed:.12} rad/s, bisected {error:.1e}");
+    assert!(error.abs() <= 1e-12, "{error:e}");
+    let p = LEINE_GLOCKER;
+    let (i1, i3, m, g, r, a) = (
+        p.transverse_moment,
+        p.axial_moment,
+        p.mass,
+        p.gravity,
+        p.radius,
+        p.offset,
+    );
+    for spin in [5.0, 60.0, 180.0] {
+        for sigma in [1.0, -1.0] {
+            let x = if sigma > 0.0 {
+                top.spinning_upright(spin).unwrap()
+            } else {
+                top.spinning_inverted(spin).unwrap()
+            };
+            let h = r - sigma * a;
+            let (big, small) = (i1 + m * h * h, i3 + m * h * r);
+            let disc = (spin * small).powi(2) + 4.0 * sigma * big * m * g * a;
+            if disc < 0.0 {
+                continue;
+            }
+            let mut closed: Vec<f64> = [spin * small + disc.sqrt(), spin * small - disc.sqrt()]
+                .iter()
+                .map(|n| (n / (2.0 * big)).abs())
+                .collect();
+            closed.sort_by(f64::total_cmp);
+            let lin = Linearisation::try_new(&top, &x).unwrap();
+            assert!(
+                !matches!(lin.verdict, Verdict::Unstable { .. }),
+                "{}",
+                lin.verdict
+            );
+            let mut space: Vec<f64> = lin
+                .modes
+                .iter()
+                .filter(|m| m.eigenvalue.im > 0.0)
+                .map(|m| m.space_frequency.expect("circular"))
+                .collect();
+            space.sort_by(f64::total_cmp);
+            for (f, e) in space.iter().zip(&closed) {
+                eprintln!("σ = {sigma}, Ω = {spin}: ν = {f:.12} rad/s, closed form {e:.12}");
+                assert!(
+                    (f - e).abs() <= 1e-12 * e.max(spin),
+                    "{space:?} vs {closed:?}"
+                );
+            }
+        }
+    }
+}

@@ -50,6 +50,7 @@ pub struct TippeTopParameters {
 /// inverted:  γ = −ĉ, ω = Ω γ   (centre of mass at R + a)
 /// window:    1 − α < I₁/I₃ < 1 + α,  α = a/R            (inversion possible)
 /// frictionless, inverted:   stable iff I₃² Ω² > 4 I₁ m g a
+/// rolling, inverted:        stable iff (I₃ + m h R)² Ω² > 4 (I₁ + m h²) m g a,  h = R + a
 /// dissipative friction:     upright unstable iff Ω² > m g a (R − a)² / (R² (I₁ − (1 − α) I₃))
 ///                           inverted stable  iff Ω² > m g a (R + a)² / (R² ((1 + α) I₃ − I₁))
 /// ```
@@ -70,8 +71,10 @@ pub struct TippeTopParameters {
 /// coefficient — only the growth rates do: the tests find them, by
 /// bisection on the spectrum, for viscous friction at two coefficients and
 /// for regularised Coulomb friction, to 2e-10. Their large-spin limits
-/// are the window. Rolling without slipping conserves the energy and has
-/// no such threshold (its spectrum is neutral or not: Krein collisions).
+/// are the window. Rolling without slipping conserves the energy: its
+/// inverted spin is stable above the rolling top's threshold
+/// ([`TippeTop::rolling_inverted_threshold`], derived there), its upright
+/// spin always, and friction is not what turns it over.
 ///
 /// ```
 /// use kreisel_analysis::{Linearisation, TippeTop, Verdict, LEINE_GLOCKER};
@@ -213,6 +216,28 @@ impl TippeTop {
     pub fn frictionless_inverted_threshold(&self) -> f64 {
         let p = self.parameters;
         (4.0 * p.transverse_moment * p.mass * p.gravity * p.offset).sqrt() / p.axial_moment
+    }
+
+    /// Rolling without slipping, the spin (rad/s) above which spinning
+    /// inverted is stable (spinning upright always is).
+    ///
+    /// ```text
+    /// Ω_c = √(4 (I₁ + m h²) m g a) / (I₃ + m h R),   h = R + a
+    /// ```
+    ///
+    /// Linearised about the spin, the axis's horizontal excursion `U`
+    /// (complex) obeys `(I₁ + m h²) Ü − iΩ (I₃ + m h R) U̇ + σ m g a U = 0`
+    /// (`σ = +1` upright, `−1` inverted, `h = R − σ a` the centre of mass's
+    /// height): the sleeping top's equation about the contact, with
+    /// `I₃ + m h R` for `I₃`; at `R = 0` the sleeping top itself (derived
+    /// here: Euler about the centre of mass with `v_G = ω × (R ẑ − a k)`;
+    /// the space frequencies are `ν = (Ω(I₃ + m h R) ± √(Ω²(I₃ + m h R)² +
+    /// 4σ(I₁ + m h²) m g a))/(2(I₁ + m h²))`).
+    pub fn rolling_inverted_threshold(&self) -> f64 {
+        let p = self.parameters;
+        let h = p.radius + p.offset;
+        (4.0 * (p.transverse_moment + p.mass * h * h) * p.mass * p.gravity * p.offset).sqrt()
+            / (p.axial_moment + p.mass * h * p.radius)
     }
 
     /// With a dissipative law (viscous, regularised Coulomb), the spin
