@@ -34,6 +34,7 @@
 mod eigen;
 mod error;
 mod free_body;
+mod ground;
 mod heavy_top_pivot;
 mod hessenberg_qr;
 mod linearisation;
@@ -49,6 +50,9 @@ mod zero_mode;
 
 pub use error::AnalysisError;
 pub use free_body::FreeBodyRotation;
+pub use ground::{
+    BodyOnGround, LEINE_GLOCKER, Rattleback, RollingDisk, TippeTop, TippeTopParameters,
+};
 pub use heavy_top_pivot::HeavyTopPivot;
 pub use linearisation::{GROWTH_TOLERANCE, Linearisation, STEADY_RESIDUAL};
 pub use mode::{Eigenvalue, Frame, Mode};
