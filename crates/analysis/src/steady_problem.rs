@@ -8,8 +8,8 @@ use kreisel_dynamics::{Body, HeavyTop, Support};
 use kreisel_inertia::MassProperties;
 
 use crate::{
-    AnalysisError, FreeBodyRotation, HeavyTopPivot, Linearisation, Parameter, PrecessingTop,
-    Precession, find_steady_motion,
+    AnalysisError, BodyOnGround, FreeBodyRotation, HeavyTopPivot, Linearisation, Parameter,
+    PrecessingTop, Precession, find_steady_motion,
 };
 
 /// A top on a pivot, as the engine builds it: mass properties about the
@@ -57,7 +57,7 @@ impl PivotBody {
 /// assert!(spin.set(Parameter::Tilt, 0.3).is_err()); // a free rotation has no tilt
 /// # Ok::<(), kreisel_analysis::AnalysisError>(())
 /// ```
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub enum SteadyProblem {
     /// A free body spinning about a principal axis.
     FreeRotation {
@@ -77,6 +77,20 @@ pub enum SteadyProblem {
         spin: f64,
         /// Centre of mass below the pivot.
         hanging: bool,
+    },
+    /// A body on the ground spinning about the vertical (the tippe top
+    /// upright or inverted, the rattleback, a ball), with its contact
+    /// shape and friction law.
+    GroundSpin {
+        /// The body as the scene built it (support on the ground; boxed:
+        /// it holds its contact shapes and inputs).
+        body: Box<Body>,
+        /// Gravity, world axes, m/s² (along −z).
+        gravity_world: DVec3,
+        /// The body axis that points up.
+        up_body: DVec3,
+        /// The spin about the up vertical, rad/s.
+        spin: f64,
     },
     /// A symmetric top on a pivot in steady precession.
     Precession {
@@ -98,6 +112,7 @@ impl SteadyProblem {
             Self::FreeRotation { .. } => "free rotation about a principal axis",
             Self::SleepingTop { hanging: false, .. } => "sleeping top",
             Self::SleepingTop { hanging: true, .. } => "hanging top",
+            Self::GroundSpin { .. } => "spin about the vertical on the ground",
             Self::Precession {
                 which: Precession::Slow,
                 ..
@@ -117,13 +132,18 @@ impl SteadyProblem {
                 "γ the up vertical; principal axes about the pivot, moments ascending"
             }
             Self::Precession { .. } => "Euler angles ZXZ, θ from the up vertical",
+            Self::GroundSpin { .. } => {
+                "γ the up vertical, body axes; v the centre of mass's velocity"
+            }
         }
     }
 
     /// The parameters it can be swept in, with their values.
     pub fn parameters(&self) -> Vec<(Parameter, f64)> {
         match self {
-            Self::FreeRotation { spin, .. } => vec![(Parameter::Spin, *spin)],
+            Self::FreeRotation { spin, .. } | Self::GroundSpin { spin, .. } => {
+                vec![(Parameter::Spin, *spin)]
+            }
             Self::SleepingTop { top, spin, .. } => vec![
                 (Parameter::Spin, *spin),
                 (Parameter::ComOffset, top.com_offset()),
@@ -164,6 +184,7 @@ impl SteadyProblem {
             (
                 Self::FreeRotation { spin, .. }
                 | Self::SleepingTop { spin, .. }
+                | Self::GroundSpin { spin, .. }
                 | Self::Precession { spin, .. },
                 Parameter::Spin,
             ) => *spin = value,
@@ -218,6 +239,15 @@ impl SteadyProblem {
                 };
                 Linearisation::try_new(&family, &x)
             }
+            Self::GroundSpin {
+                body,
+                gravity_world,
+                up_body,
+                spin,
+            } => {
+                let family = BodyOnGround::try_from_body(body, *gravity_world)?;
+                Linearisation::try_new(&family, &family.spinning_about_vertical(*up_body, *spin)?)
+            }
             Self::Precession {
                 top,
                 tilt,
@@ -242,6 +272,7 @@ impl SteadyProblem {
     pub fn closed_form_boundary(&self, parameter: Parameter) -> Option<Vec<f64>> {
         match self {
             Self::FreeRotation { .. } | Self::Precession { .. } => Some(Vec::new()),
+            Self::GroundSpin { .. } => None,
             Self::SleepingTop { hanging: true, .. } => Some(Vec::new()),
             Self::SleepingTop { top, spin, .. } => {
                 let family = HeavyTopPivot::of(&top.heavy_top().ok()?);
@@ -306,9 +337,33 @@ impl SteadyProblem {
                 };
                 near_pivot(top, body.world_from_body(), body.omega_body())
             }
-            Support::Ground { .. } | Support::Table { .. } => Err(AnalysisError::NoSuchMotion {
+            Support::Ground { velocity_xy, .. } => {
+                let family = BodyOnGround::try_from_body(body, gravity_world)?;
+                let body_from_world = body.world_from_body().normalize().conjugate();
+                let up = body_from_world * DVec3::Z;
+                let mut start: Vec<f64> = up
+                    .to_array()
+                    .into_iter()
+                    .chain(body.omega_body().to_array())
+                    .collect();
+                if !family.rolls() {
+                    start.extend((body_from_world * velocity_xy.extend(0.0)).to_array());
+                }
+                let found = find_steady_motion(&family, &start)?;
+                let up_body = DVec3::from_slice(&found.state[..3]);
+                let omega = DVec3::from_slice(&found.state[3..6]);
+                Ok(Self::GroundSpin {
+                    body: Box::new(body.clone()),
+                    gravity_world,
+                    spin: omega.dot(up_body) / up_body.length_squared(),
+                    up_body,
+                })
+            }
+            Support::Table { .. } => Err(AnalysisError::NoSuchMotion {
                 kind: "steady motion",
-                why: "bodies on the ground or the table are not analysed from a scene yet".into(),
+                why: "bodies on the table (several contacts, impacts) are not analysed yet; \
+                      a body on the ground is"
+                    .into(),
             }),
         }
     }

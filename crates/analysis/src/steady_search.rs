@@ -11,6 +11,10 @@ use crate::{AnalysisError, STEADY_RESIDUAL, VectorField, ZeroMode, ZeroModeKind}
 /// Newton steps before giving up.
 const MAX_ITERATIONS: usize = 40;
 
+/// Singular values of the scaled Jacobian below this fraction of the
+/// largest are dropped from a step (a family of steady motions).
+const CUT: f64 = 1e-7;
+
 /// A steady motion is near a state if no component differs from the
 /// state's by more than this fraction of its size
 /// ([`crate::VectorField::state_scales`]: `|x₀|` unless the family says).
@@ -38,7 +42,8 @@ pub struct SteadyMotion {
 ///
 /// ```text
 /// g(x) = [f(x); C_k(x) − C_k(x₀)],   x_{j+1} = x_j − J⁺ g(x_j),   J = [A; ∇C_k]
-/// J⁺ from the SVD, singular values below 1e-12 σ_max dropped
+/// J's columns scaled by each component's size, J⁺ from the SVD with
+/// singular values below 1e-7 σ_max dropped (directions along a family)
 /// ```
 ///
 /// # Errors
@@ -74,6 +79,13 @@ pub fn find_steady_motion<F: VectorField>(
         .map(|(_, value, _)| value)
         .collect();
     let n = field.dim();
+    let scales = DVector::from_iterator(
+        n,
+        field
+            .state_scales(start)
+            .into_iter()
+            .map(|s| if s > 0.0 { s } else { 1.0 }),
+    );
     while iterations < MAX_ITERATIONS && best > f64::EPSILON {
         let levels_here: Vec<(ZeroMode, f64, Vec<f64>)> = conserved_gradients(field, x.as_slice())
             .into_iter()
@@ -92,10 +104,16 @@ pub fn find_steady_motion<F: VectorField>(
                 j[(n + k, i)] = *d;
             }
         }
+        // Columns in units of each component's size; directions whose
+        // singular value is below 1e-7 of the largest run along a family
+        // of steady motions (to that accuracy) and are not taken.
+        for (k, scale) in scales.iter().enumerate() {
+            j.column_mut(k).scale_mut(*scale);
+        }
         let svd = j.svd(true, true);
-        let cut = 1e-12 * svd.singular_values.max();
+        let cut = CUT * svd.singular_values.max();
         let Ok(step) = svd.solve(&g, cut) else { break };
-        x -= step;
+        x -= step.component_mul(&scales);
         iterations += 1;
         if !x.iter().all(|v| v.is_finite()) {
             break;
