@@ -259,9 +259,7 @@ fn stability<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let problem = near(&world, body)?;
-        let lin = py
-            .detach(|| problem.linearise())
-            .map_err(analysis_error)?;
+        let lin = py.detach(|| problem.linearise()).map_err(analysis_error)?;
         linearisation_dict(py, &problem, &lin)
     })
 }

@@ -7,8 +7,8 @@
 use std::num::NonZeroUsize;
 
 use kreisel_analysis::{
-    AnalysisError, BoundaryPoint, GridPoint, Linearisation, Parameter, StabilityMap,
-    SteadyProblem, Sweep, Verdict,
+    AnalysisError, BoundaryPoint, GridPoint, Linearisation, Parameter, StabilityMap, SteadyProblem,
+    Sweep, Verdict,
 };
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::prelude::*;
@@ -60,7 +60,10 @@ fn sweeps(
     let dict = sweeps.cast::<PyDict>().map_err(|_| {
         pyo3::exceptions::PyTypeError::new_err(format!(
             "sweeps: expected a dict of name -> (from, to, n), got {}",
-            sweeps.get_type().name().map_or_else(|_| "?".into(), |n| n.to_string())
+            sweeps
+                .get_type()
+                .name()
+                .map_or_else(|_| "?".into(), |n| n.to_string())
         ))
     })?;
     let mut parameters = Vec::new();
@@ -223,14 +226,19 @@ fn _stability_map<'py>(
             .transpose()?
             .flatten();
         let map = py
-            .detach(|| {
-                StabilityMap::try_new(&axes, threads, |p| analyse(problem, &parameters, p))
-            })
+            .detach(|| StabilityMap::try_new(&axes, threads, |p| analyse(problem, &parameters, p)))
             .map_err(analysis_error)?;
         let grid = Grid::of(&map.points, 0);
         map_dict(py, problem, &axes, &parameters, grid, &map.boundaries)
     })
 }
+
+/// A chunk of a grid: largest real parts, verdict codes, missing points.
+type Chunk<'py> = (
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<i8>>,
+    Vec<(usize, String)>,
+);
 
 /// The grid points ``start`` to ``stop - 1`` (flat, axis 0 fastest) of the
 /// map: ``(max_real_part, verdict, missing)`` — what an executor's worker
@@ -242,11 +250,7 @@ fn _stability_map_points<'py>(
     sweeps: &Bound<'py, PyAny>,
     start: &Bound<'py, PyAny>,
     stop: &Bound<'py, PyAny>,
-) -> PyResult<(
-    Bound<'py, PyArray1<f64>>,
-    Bound<'py, PyArray1<i8>>,
-    Vec<(usize, String)>,
-)> {
+) -> PyResult<Chunk<'py>> {
     guard(|| {
         let problem = &problem.problem;
         let (parameters, axes) = self::sweeps(problem, sweeps)?;
