@@ -364,3 +364,14 @@ def test_bad_arguments_are_type_errors_or_name_themselves():
         kreisel.stability_map(w, b, {"spin": (0.0, 1.0, 3)}, threads=0)
     with ThreadPoolExecutor(1) as ex, pytest.raises(kreisel.KreiselError, match=r"^chunk: 0: must be a positive"):
         kreisel.stability_map(w, b, {"spin": (0.0, 1.0, 3)}, executor=ex, chunk=0)
+
+
+def test_docstring_examples():
+    import doctest
+
+    for obj in [kreisel.stability, kreisel.stability_map]:
+        assert ">>>" in obj.__doc__, obj
+        runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+        for test in doctest.DocTestFinder(recurse=False).find(obj, obj.__name__, globs={}):
+            runner.run(test)
+        assert runner.failures == 0 and runner.tries > 0, obj

@@ -4,6 +4,7 @@ parameters, on threads (default) or through any concurrent.futures.Executor."""
 from __future__ import annotations
 
 import math
+import numbers
 from collections.abc import Mapping
 from typing import Any, Optional
 
@@ -83,7 +84,7 @@ def stability_map(
     ...                  pivot=(0, 0, -0.1))
     >>> m = kreisel.stability_map(w, top, {"spin": (5.0, 30.0, 11)})
     >>> critical = (4 * (0.02 + 1.0 * 0.1**2) * 1.0 * 9.81 * 0.1) ** 0.5 / 0.04
-    >>> abs(m["boundaries"][0, 0] / critical - 1) < 1e-12
+    >>> bool(abs(m["boundaries"][0, 0] / critical - 1) < 1e-12)
     True
 
     Raises KreiselError (a ValueError) with the library's one line for a
@@ -95,12 +96,19 @@ def stability_map(
         sweeps = dict(sweeps)
     if executor is None:
         return _native._stability_map(problem, sweeps, threads)
+    if not callable(getattr(executor, "submit", None)):
+        raise TypeError(
+            f"executor: expected a concurrent.futures.Executor (with submit), got {type(executor).__name__}"
+        )
     shape = _native._stability_map_size(problem, sweeps)
     total = math.prod(shape)
     if chunk is None:
         chunk = shape[0] if len(shape) == 2 else max(1, -(-shape[0] // 16))
-    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
-        raise _native.KreiselError(f"chunk: {chunk!r}: must be a positive integer (grid points per task)")
+    if isinstance(chunk, bool) or not isinstance(chunk, numbers.Integral):
+        raise TypeError(f"chunk: expected an integer (grid points per task), got {type(chunk).__name__}")
+    chunk = int(chunk)
+    if chunk < 1:
+        raise _native.KreiselError(f"chunk: {chunk}: must be a positive integer (grid points per task)")
     starts = range(0, total, chunk)
     futures = [executor.submit(_map_chunk, problem, sweeps, s, min(s + chunk, total)) for s in starts]
     parts = [f.result() for f in futures]
