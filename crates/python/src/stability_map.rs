@@ -290,9 +290,109 @@ fn point(problem: &SteadyProblem, parameters: &[Parameter], values: &[f64]) -> G
     }
 }
 
-/// The map of gathered grid columns (every point, axis 0 fastest), its
-/// boundaries located here by bisection as [`StabilityMap::try_new`]
-/// locates them.
+/// Grid neighbours to bisect between: `(index, next, axis, whether
+/// index is unstable)`.
+type Edge = (usize, usize, usize, bool);
+
+/// The grid neighbours to bisect between: those whose verdicts differ in
+/// "unstable?" (neither missing), in [`StabilityMap::try_new`]'s order.
+fn edges(axes: &[Sweep], verdict: &[i8]) -> Vec<Edge> {
+    let shape = [axes[0].count, axes.get(1).map_or(1, |a| a.count)];
+    let mut found = Vec::new();
+    for index in 0..(shape[0] * shape[1]).min(verdict.len()) {
+        let (i, j) = (index % shape[0], index / shape[0]);
+        for (axis, next) in [
+            (0, (i + 1 < shape[0]).then_some(index + 1)),
+            (1, (j + 1 < shape[1]).then_some(index + shape[0])),
+        ] {
+            let Some(next) = next else { continue };
+            let (Some(&a), Some(&b)) = (verdict.get(index), verdict.get(next)) else {
+                continue;
+            };
+            if a != MISSING && b != MISSING && (a == UNSTABLE) != (b == UNSTABLE) {
+                found.push((index, next, axis, a == UNSTABLE));
+            }
+        }
+    }
+    found
+}
+
+/// The verdict codes of a whole grid (`n` points), checked.
+fn grid_codes(verdict: &PyReadonlyArray1<'_, i8>, n: usize) -> PyResult<Vec<i8>> {
+    let codes = verdict.as_slice()?.to_vec();
+    if codes.len() != n {
+        return Err(error(format!(
+            "verdict: {} values for a grid of {n} points",
+            codes.len()
+        )));
+    }
+    Ok(codes)
+}
+
+/// The grid neighbours of a gathered grid (its ``verdict`` codes, every
+/// point, axis 0 fastest) to bisect between: ``(index, next, axis,
+/// index_unstable)``.
+#[pyfunction]
+fn _stability_map_edges(
+    problem: PyRef<'_, PySteadyProblem>,
+    sweeps: &Bound<'_, PyAny>,
+    verdict: PyReadonlyArray1<'_, i8>,
+) -> PyResult<Vec<Edge>> {
+    guard(|| {
+        let (_, axes) = self::sweeps(&problem.problem, sweeps)?;
+        let codes = grid_codes(&verdict, total(&axes))?;
+        Ok(edges(&axes, &codes))
+    })
+}
+
+/// A boundary point as plain numbers: `(at₀, at₁, axis, width)` (`at₁`
+/// NaN for one sweep).
+type Boundary = (f64, f64, usize, f64);
+
+/// The boundary points bisected between each of ``edges`` (from
+/// ``_stability_map_edges``), ``None`` where the
+/// bisection met a missing point — what an executor's worker computes
+/// for ``kreisel.stability_map``.
+#[pyfunction]
+fn _stability_map_bisect(
+    py: Python<'_>,
+    problem: PyRef<'_, PySteadyProblem>,
+    sweeps: &Bound<'_, PyAny>,
+    edges: Vec<Edge>,
+) -> PyResult<Vec<Option<Boundary>>> {
+    guard(|| {
+        let problem = &problem.problem;
+        let (parameters, axes) = self::sweeps(problem, sweeps)?;
+        let n = total(&axes);
+        let unstable = |p: &[f64]| {
+            analyse(problem, &parameters, p)
+                .ok()
+                .map(|lin| matches!(lin.verdict, Verdict::Unstable { .. }))
+        };
+        if let Some(&(index, next, axis, _)) = edges
+            .iter()
+            .find(|&&(index, next, axis, _)| index >= n || next >= n || axis >= axes.len())
+        {
+            return Err(error(format!(
+                "edges: ({index}, {next}, {axis}) is not an edge of a grid of {n} points"
+            )));
+        }
+        Ok(py.detach(|| {
+            edges
+                .iter()
+                .map(|&(index, next, axis, lo_unstable)| {
+                    let (lo, hi) = (at(&axes, index), at(&axes, next));
+                    bisect(&lo, &hi, axis, lo_unstable, &unstable)
+                        .map(|b| (b.at[0], b.at[1], b.axis, b.width))
+                })
+                .collect()
+        }))
+    })
+}
+
+/// The map of gathered grid columns (every point, axis 0 fastest) and the
+/// gathered bisections of its edges (``None`` dropped), as
+/// [`StabilityMap::try_new`] makes it.
 #[pyfunction]
 fn _stability_map_assemble<'py>(
     py: Python<'py>,
@@ -301,27 +401,29 @@ fn _stability_map_assemble<'py>(
     max_real_part: PyReadonlyArray1<'py, f64>,
     verdict: PyReadonlyArray1<'py, i8>,
     missing: Vec<(usize, String)>,
+    boundaries: Vec<Option<Boundary>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let problem = &problem.problem;
         let (parameters, axes) = self::sweeps(problem, sweeps)?;
         let n = total(&axes);
+        let verdict = grid_codes(&verdict, n)?;
         let max_real_part = max_real_part.as_slice()?.to_vec();
-        let verdict = verdict.as_slice()?.to_vec();
-        if max_real_part.len() != n || verdict.len() != n {
+        if max_real_part.len() != n {
             return Err(error(format!(
-                "max_real_part, verdict: {} and {} values for a grid of {n} points",
-                max_real_part.len(),
-                verdict.len()
+                "max_real_part: {} values for a grid of {n} points",
+                max_real_part.len()
             )));
         }
-        let boundaries = py.detach(|| {
-            boundaries(&axes, &verdict, |p| {
-                analyse(problem, &parameters, p)
-                    .ok()
-                    .map(|lin| matches!(lin.verdict, Verdict::Unstable { .. }))
+        let boundaries: Vec<BoundaryPoint> = boundaries
+            .into_iter()
+            .flatten()
+            .map(|(a0, a1, axis, width)| BoundaryPoint {
+                at: [a0, a1],
+                axis,
+                width,
             })
-        });
+            .collect();
         let grid = Grid {
             max_real_part,
             verdict,
@@ -333,43 +435,6 @@ fn _stability_map_assemble<'py>(
 
 /// Bisection steps at most (as `kreisel_analysis::stability_map`).
 const MAX_HALVINGS: usize = 200;
-
-/// The boundary points between grid neighbours whose verdicts differ in
-/// "unstable?" (neither missing), in [`StabilityMap::try_new`]'s order
-/// and by its bisection (a copy: the library keeps its own private; see
-/// the report of the Python binding).
-fn boundaries(
-    axes: &[Sweep],
-    verdict: &[i8],
-    unstable: impl Fn(&[f64]) -> Option<bool>,
-) -> Vec<BoundaryPoint> {
-    let shape = [axes[0].count, axes.get(1).map_or(1, |a| a.count)];
-    let mut found = Vec::new();
-    for index in 0..shape[0] * shape[1] {
-        let (i, j) = (index % shape[0], index / shape[0]);
-        for (axis, next) in [
-            (0, (i + 1 < shape[0]).then_some(index + 1)),
-            (1, (j + 1 < shape[1]).then_some(index + shape[0])),
-        ] {
-            let Some(next) = next else { continue };
-            let (a, b) = (verdict[index], verdict[next]);
-            if a != MISSING
-                && b != MISSING
-                && (a == UNSTABLE) != (b == UNSTABLE)
-                && let Some(point) = bisect(
-                    &at(axes, index),
-                    &at(axes, next),
-                    axis,
-                    a == UNSTABLE,
-                    &unstable,
-                )
-            {
-                found.push(point);
-            }
-        }
-    }
-    found
-}
 
 /// Bisects between `lo` (unstable: `lo_unstable`) and `hi` along `axis`
 /// until the bracket is 4 ulp wide (or [`MAX_HALVINGS`] halvings).
@@ -423,6 +488,8 @@ fn _stability_map_size(
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(_stability_map, m)?)?;
     m.add_function(wrap_pyfunction!(_stability_map_points, m)?)?;
+    m.add_function(wrap_pyfunction!(_stability_map_edges, m)?)?;
+    m.add_function(wrap_pyfunction!(_stability_map_bisect, m)?)?;
     m.add_function(wrap_pyfunction!(_stability_map_assemble, m)?)?;
     m.add_function(wrap_pyfunction!(_stability_map_size, m)?)
 }

@@ -354,6 +354,8 @@ def test_a_free_rotation_has_only_spin():
     assert (m["verdict"] == 1).all() and len(m["boundaries"]) == 0
     assert np.allclose(m["max_real_part"], growth, rtol=1e-12, atol=0)
     assert m["boundaries"].shape == (0, 1)
+    with ThreadPoolExecutor(2) as pool:  # no boundary: no bisection task
+        same(m, kreisel.stability_map(w, b, {"spin": (0.5, 3.0, 6)}, executor=pool))
 
 
 def test_bad_arguments_are_type_errors_or_name_themselves():

@@ -29,6 +29,13 @@ def _map_chunk(problem: Any, sweeps: dict, start: int, stop: int) -> tuple:
     return np.asarray(mrp), np.asarray(verdict), list(missing)
 
 
+def _bisect_chunk(problem: Any, sweeps: dict, edges: list) -> list:
+    """The boundary points bisected between grid neighbours ``edges`` of a
+    map, computed in Rust: ``(at0, at1, axis, width)`` or ``None`` each
+    (module-level, as ``_map_chunk``)."""
+    return _native._stability_map_bisect(problem, sweeps, edges)
+
+
 def stability_map(
     world: Any,
     body: int,
@@ -75,8 +82,9 @@ def stability_map(
     grid is cut into chunks of ``chunk`` points (default: one row of a
     two-parameter map, or a sixteenth of a one-parameter one), each submitted
     as ``kreisel._stability._map_chunk`` with the steady motion (picklable:
-    plain numbers); the boundaries are then bisected here. The result is the
-    same, bit for bit, as without an executor.
+    plain numbers); then the bisections of the boundaries, as many tasks
+    (``_bisect_chunk``). The result is the same, bit for bit, as without an
+    executor.
 
     >>> import kreisel
     >>> w = kreisel.World(dt=0.01, gravity=(0, 0, -9.81))
@@ -115,4 +123,13 @@ def stability_map(
     mrp = np.concatenate([p[0] for p in parts]).astype(np.float64, copy=False)
     verdict = np.concatenate([p[1] for p in parts]).astype(np.int8, copy=False)
     missing = [(int(k), str(r)) for p in parts for (k, r) in p[2]]
-    return _native._stability_map_assemble(problem, sweeps, mrp, verdict, missing)
+    # The boundaries: one bisection (~50 linearisations) per pair of grid
+    # neighbours whose verdicts differ, also on the executor.
+    edges = _native._stability_map_edges(problem, sweeps, verdict)
+    per_task = max(1, -(-len(edges) // max(1, len(futures))))
+    futures = [
+        executor.submit(_bisect_chunk, problem, sweeps, edges[k : k + per_task])
+        for k in range(0, len(edges), per_task)
+    ]
+    boundaries = [b for f in futures for b in f.result()]
+    return _native._stability_map_assemble(problem, sweeps, mrp, verdict, missing, boundaries)
