@@ -83,8 +83,8 @@ def stability_map(
     two-parameter map, or a sixteenth of a one-parameter one), each submitted
     as ``kreisel._stability._map_chunk`` with the steady motion (picklable:
     plain numbers); then the bisections of the boundaries, as many tasks
-    (``_bisect_chunk``). The result is the same, bit for bit, as without an
-    executor.
+    (``_bisect_chunk``); ``threads`` is not used then. The result is the
+    same, bit for bit, as without an executor.
 
     >>> import kreisel
     >>> w = kreisel.World(dt=0.01, gravity=(0, 0, -9.81))
