@@ -264,6 +264,14 @@ def test_threads_and_a_thread_pool_give_the_same_map_bit_for_bit():
         same(one, kreisel.stability_map(w, b, sweeps, executor=pool))
 
 
+def test_a_process_pool_gives_the_same_map_bit_for_bit():
+    # The steady motion and the chunk functions travel by pickle.
+    from concurrent.futures import ProcessPoolExecutor
+
+    with ProcessPoolExecutor(max_workers=2) as pool:
+        same(two_parameter_map(), two_parameter_map(executor=pool))
+
+
 def precessing():
     """A symmetric top tilted 0.5 rad in slow steady precession, ω3 = 40 rad/s."""
     mass, i1, i3, l = TOPS[0]
