@@ -17,6 +17,8 @@ mod rotations;
 mod rotations_arrays;
 mod rotations_rates;
 mod simulation;
+mod stability;
+mod stability_map;
 mod top;
 
 /// The native module.
@@ -29,5 +31,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     mass::register(m)?;
     simulation::register(m)?;
     top::register(m)?;
+    stability::register(m)?;
+    stability_map::register(m)?;
     Ok(())
 }

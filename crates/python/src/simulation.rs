@@ -32,6 +32,8 @@ mod table;
 #[path = "simulation_world.rs"]
 mod world;
 
+pub(crate) use world::PyWorld;
+
 /// The name a scene given as text goes by in messages (mesh paths in it
 /// are relative to the working directory).
 const TEXT_SCENE: &str = "<string>";

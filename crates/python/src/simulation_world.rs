@@ -6,7 +6,7 @@
 //! names errors.
 
 use glam::{DQuat, DVec3};
-use kreisel_dynamics::{BodyId, DynamicsError, FreeBodyMethod, Inputs, World};
+use kreisel_dynamics::{Body, BodyId, DynamicsError, FreeBodyMethod, Inputs, World};
 use kreisel_kinematics::try_normalize_quat;
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -187,6 +187,16 @@ fn key_error(problem: BodyKeyProblem) -> PyErr {
 }
 
 impl PyWorld {
+    /// The engine's body Python calls `body` (an int), as it is now, and
+    /// the world's gravity (world axes, m/s²): what the stability analysis
+    /// starts from.
+    pub(crate) fn body_and_gravity(&self, body: &Bound<'_, PyAny>) -> PyResult<(&Body, DVec3)> {
+        let id = self.id(body)?;
+        let found = self.world.body(id);
+        let found = found.ok_or_else(|| error(format!("body: no body {body} in this world")))?;
+        Ok((found, self.world.gravity()))
+    }
+
     /// The engine's id of the body Python calls `body` (an int).
     fn id(&self, body: &Bound<'_, PyAny>) -> PyResult<BodyId> {
         let n = int("body", body)?;

@@ -51,6 +51,12 @@ def world():
     return w
 
 
+def spinning():
+    w = kreisel.World(0.01)
+    w.add_body(1.0, moments=(1.0, 2.0, 3.0), omega_body=(0.0, 0.0, 1.0))
+    return w
+
+
 def lagrange_top():
     return kreisel.LagrangeTop(**TOP, psi_dot0=60.0)
 
@@ -132,6 +138,13 @@ CALLABLES = [
      dict(t=[(INF, KE), ("soon", KE)])),
     ("LagrangeTop.omega_body_at", lambda: lagrange_top().omega_body_at, dict(t=0.5),
      dict(t=[(-INF, KE), ({}, KE)])),
+    ("stability", lambda: kreisel.stability, dict(world=spinning(), body=0),
+     dict(world=[(None, TE), (3, TE)], body=INDEX)),
+    ("stability_map", lambda: kreisel.stability_map, dict(world=spinning(), body=0, sweeps={"spin": (0.5, 1.0, 2)}),
+     dict(world=[(None, TE)], body=INDEX, threads=COUNT + [(0, KE)],
+          sweeps=[([("spin", (0.5, 1.0, 2))], TE), ({"spin": (0.5, 1.0)}, KE), ({"spin": (0.5, NAN, 2)}, KE),
+                  ({"spin": ("a", 1.0, 2)}, TE), ({"spin": (0.5, 1.0, 2.5)}, TE), ({3: (0.5, 1.0, 2)}, TE)],
+          executor=[(3, TE), ("pool", TE)])),
 ]  # fmt: skip
 
 CASES = [

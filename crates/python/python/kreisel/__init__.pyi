@@ -197,6 +197,44 @@ class World:
         """time, and the states of all n bodies stacked: attitude (n, 4), omega_body, l_world,
         position, velocity (n, 3), energy (n,)."""
 
+# --- stability: is this motion stable? (kreisel-analysis) ---------------------
+
+VERDICT_CODES: dict[int, str]
+"""The codes of a stability map's ``verdict`` array: -1 missing (no steady motion), 0 stable, 1 unstable, 2 neutral."""
+
+def stability(world: World, body: int) -> dict[str, Any]:
+    """The linear stability of the steady motion nearest body ``body``'s state (free, or on a pivot).
+
+    kind (str), parameters (name -> value), state (n,), state_names (n), frame ("body"/"space"),
+    eigenvalues (m,) complex128 (1/s), modes (m, n) complex128 (one row per eigenvalue),
+    space_frequencies (m,) rad/s (NaN where none), zero_modes [(kind, name)], dependent,
+    reduced_by, residual, max_real_part, verdict ("stable"/"unstable"/"neutral") with
+    asymptotic (stable), growth_rate (unstable, 1/s) or reason (neutral).
+
+    Sleeping top (J1 about the pivot): stable iff I3^2 w3^2 > 4 J1 M g l; growth rate
+    sqrt(4 J1 M g l - I3^2 w3^2)/(2 J1); precession in space (I3 w3 +- sqrt(I3^2 w3^2 - 4 J1 M g l))/(2 J1).
+    T-handle: growth w sqrt((I2 - I1)(I3 - I2)/(I1 I3)). Raises KreiselError (the library's line).
+    """
+
+def stability_map(
+    world: World,
+    body: int,
+    sweeps: dict[Literal["spin", "tilt", "com_offset", "gravity", "speed"], tuple[float, float, int]],
+    executor: Optional[Any] = None,
+    threads: Optional[int] = None,
+    chunk: Optional[int] = None,
+) -> dict[str, Any]:
+    """The stability of body ``body``'s steady motion over one or two parameters: name -> (from, to, n).
+
+    names, values (one array per axis), max_real_part and verdict (int8, VERDICT_CODES):
+    shape (n0,), or (n1, n0) for two sweeps ([j, i] = (values[0][i], values[1][j])),
+    boundaries (k, number of sweeps) by bisection to 4 ulp, boundary_axis (k,),
+    boundary_width (k,), missing [(flat index, reason)], closed_form (name -> values), kind.
+    On threads by default; with ``executor`` (any concurrent.futures.Executor, e.g.
+    dask.distributed's Client.get_executor()) in chunks of ``chunk`` grid points,
+    the same numbers bit for bit. A bad sweep raises KreiselError (a ValueError).
+    """
+
 # --- the heavy symmetric top: the dict of `kreisel top --format json`
 # i1, i3, mgl, theta0, theta_dot0, phi_dot0, psi_dot0, a, b, alpha, beta,
 # omega3, roots (array), theta_min, theta_max, nutation_period (None when
