@@ -58,7 +58,10 @@ pub use linearisation::{GROWTH_TOLERANCE, Linearisation, STEADY_RESIDUAL};
 pub use mode::{Eigenvalue, Frame, Mode};
 pub use parameter::Parameter;
 pub use precessing_top::{PrecessingTop, Precession};
-pub use stability_map::{BoundaryPoint, GridPoint, StabilityMap, Sweep};
+pub use stability_map::{
+    BoundaryEdge, BoundaryPoint, GridPoint, StabilityMap, Sweep, bisect_boundary, boundary_edges,
+    grid_point,
+};
 pub use steady_problem::{PivotBody, SteadyProblem};
 pub use steady_search::{NEARBY, SteadyMotion, find_steady_motion};
 pub use vector_field::{Scalar, VectorField};

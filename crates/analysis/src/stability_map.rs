@@ -167,6 +167,90 @@ pub struct StabilityMap {
 /// Bisection steps at most (a bracket of any width reaches 4 ulp in fewer).
 const MAX_HALVINGS: usize = 200;
 
+/// Two grid neighbours whose verdicts differ: a boundary lies between.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct BoundaryEdge {
+    /// The first point's index (axis 0 fastest).
+    pub from: usize,
+    /// Its neighbour's, one step along `axis`.
+    pub to: usize,
+    /// The axis between them.
+    pub axis: usize,
+    /// Whether the first point is unstable (the second is not, or the
+    /// other way round).
+    pub from_unstable: bool,
+}
+
+/// The parameters' values at grid point `index` of `axes` (axis 0
+/// fastest).
+///
+/// ```
+/// use kreisel_analysis::{Sweep, grid_point};
+/// let axes = [Sweep::try_new("spin", 0.0, 2.0, 3)?, Sweep::try_new("tilt", 0.0, 1.0, 2)?];
+/// assert_eq!(grid_point(&axes, 4), vec![1.0, 1.0]);
+/// # Ok::<(), kreisel_analysis::AnalysisError>(())
+/// ```
+pub fn grid_point(axes: &[Sweep], index: usize) -> Vec<f64> {
+    let n0 = axes.first().map_or(1, |a| a.count);
+    let (i, j) = (index % n0, index / n0);
+    let mut p = vec![axes[0].value(i)];
+    if let Some(a) = axes.get(1) {
+        p.push(a.value(j));
+    }
+    p
+}
+
+/// Every pair of grid neighbours where "unstable?" changes; `None` (no
+/// steady motion there) takes part in none.
+///
+/// ```text
+/// (k, k + 1) along axis 0,  (k, k + n₀) along axis 1,  unstable[k] ≠ unstable[next]
+/// ```
+pub fn boundary_edges(axes: &[Sweep], unstable: &[Option<bool>]) -> Vec<BoundaryEdge> {
+    let shape = [axes[0].count, axes.get(1).map_or(1, |a| a.count)];
+    let mut found = Vec::new();
+    for index in 0..(shape[0] * shape[1]).min(unstable.len()) {
+        let (i, j) = (index % shape[0], index / shape[0]);
+        for (axis, next) in [
+            (0, (i + 1 < shape[0]).then_some(index + 1)),
+            (1, (j + 1 < shape[1]).then_some(index + shape[0])),
+        ] {
+            let Some(next) = next else { continue };
+            if let (Some(Some(a)), Some(Some(b))) = (unstable.get(index), unstable.get(next))
+                && a != b
+            {
+                found.push(BoundaryEdge {
+                    from: index,
+                    to: next,
+                    axis,
+                    from_unstable: *a,
+                });
+            }
+        }
+    }
+    found
+}
+
+/// The boundary on `edge` by bisection on `unstable` (which returns
+/// `None` where no steady motion exists: then no boundary).
+///
+/// ```text
+/// halve [p_from, p_to] along the edge's axis until 4 ulp wide (or 200 halvings)
+/// ```
+pub fn bisect_boundary(
+    axes: &[Sweep],
+    edge: BoundaryEdge,
+    unstable: impl Fn(&[f64]) -> Option<bool>,
+) -> Option<BoundaryPoint> {
+    bisect(
+        &grid_point(axes, edge.from),
+        &grid_point(axes, edge.to),
+        edge.axis,
+        edge.from_unstable,
+        &unstable,
+    )
+}
+
 impl StabilityMap {
     /// The map of `analyse` (the linearisation at the parameters' values,
     /// in the order of `axes`) over the grid of `axes`, on `threads`
@@ -194,15 +278,7 @@ impl StabilityMap {
             });
         }
         let shape = [axes[0].count, axes.get(1).map_or(1, |a| a.count)];
-        let at = |index: usize| -> Vec<f64> {
-            let (i, j) = (index % shape[0], index / shape[0]);
-            let mut p = vec![axes[0].value(i)];
-            if let Some(a) = axes.get(1) {
-                p.push(a.value(j));
-            }
-            p
-        };
-        let point = |index: usize| match analyse(&at(index)) {
+        let point = |index: usize| match analyse(&grid_point(axes, index)) {
             Ok(lin) => GridPoint::Analysed {
                 max_real_part: lin.max_real_part(),
                 verdict: lin.verdict,
@@ -211,33 +287,26 @@ impl StabilityMap {
                 reason: e.to_string(),
             },
         };
-        let total = shape[0] * shape[1];
-        let points = in_parallel(total, threads, point);
+        let points = in_parallel(shape[0] * shape[1], threads, point);
+        let flags: Vec<Option<bool>> = points
+            .iter()
+            .map(|p| match p {
+                GridPoint::Missing { .. } => None,
+                analysed => Some(analysed.is_unstable()),
+            })
+            .collect();
+        let edges = boundary_edges(axes, &flags);
         let unstable = |p: &[f64]| {
             analyse(p)
                 .ok()
                 .map(|lin| matches!(lin.verdict, Verdict::Unstable { .. }))
         };
-        let mut boundaries = Vec::new();
-        for index in 0..total {
-            let (i, j) = (index % shape[0], index / shape[0]);
-            for (axis, next) in [
-                (0, (i + 1 < shape[0]).then_some(index + 1)),
-                (1, (j + 1 < shape[1]).then_some(index + shape[0])),
-            ] {
-                let Some(next) = next else { continue };
-                let (a, b) = (&points[index], &points[next]);
-                let both = !matches!(a, GridPoint::Missing { .. })
-                    && !matches!(b, GridPoint::Missing { .. });
-                if both
-                    && a.is_unstable() != b.is_unstable()
-                    && let Some(found) =
-                        bisect(&at(index), &at(next), axis, a.is_unstable(), &unstable)
-                {
-                    boundaries.push(found);
-                }
-            }
-        }
+        let boundaries = in_parallel(edges.len(), threads, |k| {
+            bisect_boundary(axes, edges[k], unstable)
+        })
+        .into_iter()
+        .flatten()
+        .collect();
         Ok(Self {
             axes: axes.to_vec(),
             points,

@@ -70,9 +70,11 @@ fn top_from(v: &[f64]) -> PivotBody {
     }
 }
 
-/// The problem as plain numbers (exact: every one is an `f64` of it).
-fn to_numbers(problem: &SteadyProblem) -> Vec<f64> {
-    match problem {
+/// The problem as plain numbers (exact: every one is an `f64` of it);
+/// `None` for a spin on the ground (its body holds contact shapes and
+/// laws, not written as numbers yet).
+fn to_numbers(problem: &SteadyProblem) -> Option<Vec<f64>> {
+    let numbers = match problem {
         SteadyProblem::FreeRotation {
             moments,
             axis,
@@ -101,7 +103,9 @@ fn to_numbers(problem: &SteadyProblem) -> Vec<f64> {
             v.extend([*tilt, *spin, f64::from(u8::from(fast))]);
             v
         }
-    }
+        SteadyProblem::GroundSpin { .. } => return None,
+    };
+    Some(numbers)
 }
 
 /// The problem of [`to_numbers`]; `None` for numbers it never writes.
@@ -166,7 +170,12 @@ impl PySteadyProblem {
     /// Pickling: the class and its numbers.
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
         let py = slf.py();
-        let numbers = to_numbers(&slf.get().problem);
+        let numbers = to_numbers(&slf.get().problem).ok_or_else(|| {
+            error(
+                "a spin on the ground cannot be sent to an executor yet (its contact shapes \
+                 are not written as numbers): map it without one (threads)",
+            )
+        })?;
         let args = PyTuple::new(py, [numbers])?;
         PyTuple::new(py, [slf.get_type().into_any(), args.into_any()])
     }

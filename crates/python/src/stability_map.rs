@@ -7,8 +7,8 @@
 use std::num::NonZeroUsize;
 
 use kreisel_analysis::{
-    AnalysisError, BoundaryPoint, GridPoint, Linearisation, Parameter, StabilityMap, SteadyProblem,
-    Sweep, Verdict,
+    AnalysisError, BoundaryEdge, BoundaryPoint, GridPoint, Linearisation, Parameter, StabilityMap,
+    SteadyProblem, Sweep, Verdict, bisect_boundary, boundary_edges, grid_point,
 };
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
 use pyo3::prelude::*;
@@ -111,17 +111,6 @@ fn sweeps(
         }));
     }
     Ok((parameters, axes))
-}
-
-/// The parameters' values at flat grid index `index` (axis 0 fastest), as
-/// [`StabilityMap`] numbers them.
-fn at(axes: &[Sweep], index: usize) -> Vec<f64> {
-    let (i, j) = (index % axes[0].count, index / axes[0].count);
-    let mut p = vec![axes[0].value(i)];
-    if let Some(a) = axes.get(1) {
-        p.push(a.value(j));
-    }
-    p
 }
 
 /// The number of grid points.
@@ -265,7 +254,7 @@ fn _stability_map_points<'py>(
         let stop = index("stop", stop, start)?;
         let points: Vec<GridPoint> = py.detach(|| {
             (start..stop)
-                .map(|index| point(problem, &parameters, &at(&axes, index)))
+                .map(|index| point(problem, &parameters, &grid_point(&axes, index)))
                 .collect()
         });
         let grid = Grid::of(&points, start);
@@ -294,27 +283,17 @@ fn point(problem: &SteadyProblem, parameters: &[Parameter], values: &[f64]) -> G
 /// index is unstable)`.
 type Edge = (usize, usize, usize, bool);
 
-/// The grid neighbours to bisect between: those whose verdicts differ in
-/// "unstable?" (neither missing), in [`StabilityMap::try_new`]'s order.
+/// The grid neighbours to bisect between ([`boundary_edges`]), as plain
+/// numbers.
 fn edges(axes: &[Sweep], verdict: &[i8]) -> Vec<Edge> {
-    let shape = [axes[0].count, axes.get(1).map_or(1, |a| a.count)];
-    let mut found = Vec::new();
-    for index in 0..(shape[0] * shape[1]).min(verdict.len()) {
-        let (i, j) = (index % shape[0], index / shape[0]);
-        for (axis, next) in [
-            (0, (i + 1 < shape[0]).then_some(index + 1)),
-            (1, (j + 1 < shape[1]).then_some(index + shape[0])),
-        ] {
-            let Some(next) = next else { continue };
-            let (Some(&a), Some(&b)) = (verdict.get(index), verdict.get(next)) else {
-                continue;
-            };
-            if a != MISSING && b != MISSING && (a == UNSTABLE) != (b == UNSTABLE) {
-                found.push((index, next, axis, a == UNSTABLE));
-            }
-        }
-    }
-    found
+    let unstable: Vec<Option<bool>> = verdict
+        .iter()
+        .map(|&code| (code != MISSING).then_some(code == UNSTABLE))
+        .collect();
+    boundary_edges(axes, &unstable)
+        .into_iter()
+        .map(|e| (e.from, e.to, e.axis, e.from_unstable))
+        .collect()
 }
 
 /// The verdict codes of a whole grid (`n` points), checked.
@@ -380,9 +359,14 @@ fn _stability_map_bisect(
         Ok(py.detach(|| {
             edges
                 .iter()
-                .map(|&(index, next, axis, lo_unstable)| {
-                    let (lo, hi) = (at(&axes, index), at(&axes, next));
-                    bisect(&lo, &hi, axis, lo_unstable, &unstable)
+                .map(|&(from, to, axis, from_unstable)| {
+                    let edge = BoundaryEdge {
+                        from,
+                        to,
+                        axis,
+                        from_unstable,
+                    };
+                    bisect_boundary(&axes, edge, unstable)
                         .map(|b| (b.at[0], b.at[1], b.axis, b.width))
                 })
                 .collect()
@@ -430,44 +414,6 @@ fn _stability_map_assemble<'py>(
             missing,
         };
         map_dict(py, problem, &axes, &parameters, grid, &boundaries)
-    })
-}
-
-/// Bisection steps at most (as `kreisel_analysis::stability_map`).
-const MAX_HALVINGS: usize = 200;
-
-/// Bisects between `lo` (unstable: `lo_unstable`) and `hi` along `axis`
-/// until the bracket is 4 ulp wide (or [`MAX_HALVINGS`] halvings).
-fn bisect(
-    lo: &[f64],
-    hi: &[f64],
-    axis: usize,
-    lo_unstable: bool,
-    unstable: &impl Fn(&[f64]) -> Option<bool>,
-) -> Option<BoundaryPoint> {
-    let (mut a, mut b) = (lo[axis], hi[axis]);
-    let mut p = lo.to_vec();
-    for _ in 0..MAX_HALVINGS {
-        let mid = 0.5 * (a + b);
-        if (b - a).abs() <= 4.0 * f64::EPSILON * a.abs().max(b.abs()) || mid == a || mid == b {
-            break;
-        }
-        p[axis] = mid;
-        if unstable(&p)? == lo_unstable {
-            a = mid;
-        } else {
-            b = mid;
-        }
-    }
-    p[axis] = 0.5 * (a + b);
-    let mut at = [p[0], f64::NAN];
-    if p.len() > 1 {
-        at[1] = p[1];
-    }
-    Some(BoundaryPoint {
-        at,
-        axis,
-        width: (b - a).abs(),
     })
 }
 
