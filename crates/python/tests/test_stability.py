@@ -145,7 +145,7 @@ def test_spin_about_the_largest_or_smallest_axis_is_stable(axis):
 def test_errors_are_the_library_s_one_line():
     w = kreisel.World(dt=0.01, gravity=(0, 0, -G))
     ball = w.add_body(1.0, moments=(0.002,) * 3, contacts=[dict(shape="sphere", radius=0.1, mu=0.5)])
-    with pytest.raises(kreisel.KreiselError, match=r"^no steady motion: bodies on the ground or the table"):
+    with pytest.raises(kreisel.KreiselError, match=r"^no steady motion: bodies on the table \(several contacts, impacts\) are not analysed yet"):
         kreisel.stability(w, ball)
     tumbling = w.add_body(1.0, moments=(1.0, 2.0, 3.0), omega_body=(1.0, 1.0, 1.0))
     with pytest.raises(ValueError, match=r"^no steady motion near this state: relative residual") as e:
