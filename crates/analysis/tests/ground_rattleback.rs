@@ -5,6 +5,7 @@
 //! and against the engine's own nonlinear run started along the library's
 //! mode.
 
+mod support;
 use glam::{DQuat, DVec3};
 use kreisel_analysis::{Linearisation, Mode, Rattleback, VectorField, Verdict, ZeroModeKind};
 use kreisel_dynamics::{ContactShape, EllipsoidContact, Friction, GroundTop, GroundTopState};
@@ -207,30 +208,7 @@ fn measured(
         samples.push(observe(s))
     })
     .unwrap();
-    let (mut zeros, mut extrema) = (Vec::new(), Vec::new());
-    for k in 1..samples.len() - 1 {
-        let (a, b, c) = (samples[k - 1], samples[k], samples[k + 1]);
-        if a * b < 0.0 {
-            zeros.push(h * ((k - 1) as f64 + a / (a - b)));
-        }
-        if b.abs() > a.abs() && b.abs() >= c.abs() {
-            let shift = 0.5 * (a - c) / (a - 2.0 * b + c);
-            extrema.push((
-                h * (k as f64 + shift),
-                (b - 0.25 * (a - c) * shift).abs().ln(),
-            ));
-        }
-    }
-    let n = zeros.len();
-    let omega = std::f64::consts::PI * (n - 1) as f64 / (zeros[n - 1] - zeros[0]);
-    let m = extrema.len() as f64;
-    let (t_mean, y_mean) = extrema
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (t, y)| (a + t / m, b + y / m));
-    let (num, den) = extrema.iter().fold((0.0, 0.0), |(a, b), (t, y)| {
-        (a + (t - t_mean) * (y - y_mean), b + (t - t_mean).powi(2))
-    });
-    (num / den, omega)
+    support::growth_and_frequency(&samples, h)
 }
 
 /// The engine started `1e-8` along the library's growing mode at `+5`

@@ -1,6 +1,9 @@
 //! Measuring a mode from a nonlinear run: the growth rate and the
 //! frequency of a sampled signal, independent of the linearisation.
 
+// Each test target uses its own subset of these helpers.
+#![allow(dead_code)]
+
 use glam::{DQuat, DVec3};
 use kreisel_dynamics::{Body, BodyId, World};
 
@@ -53,4 +56,29 @@ pub fn run(
         samples.push(observe(s.world_from_body, s.omega_body));
     }
     samples
+}
+
+/// The growth rate and angular frequency of `y = a e^{σt} cos(ωt + φ)`
+/// sampled every `h`: its zeros are `π/ω` apart (an even number of
+/// half periods, linear interpolation), its extrema (parabolas through
+/// the three samples around each) lie on `ln|y| = const + σt`.
+pub fn growth_and_frequency(samples: &[f64], h: f64) -> (f64, f64) {
+    let (mut zeros, mut extrema) = (Vec::new(), Vec::new());
+    for k in 1..samples.len() - 1 {
+        let (a, b, c) = (samples[k - 1], samples[k], samples[k + 1]);
+        if a * b < 0.0 {
+            zeros.push(h * ((k - 1) as f64 + a / (a - b)));
+        }
+        if b.abs() > a.abs() && b.abs() >= c.abs() {
+            let shift = 0.5 * (a - c) / (a - 2.0 * b + c);
+            extrema.push((
+                h * (k as f64 + shift),
+                (b - 0.25 * (a - c) * shift).abs().ln(),
+            ));
+        }
+    }
+    assert!(zeros.len() >= 3, "only {} zero crossings", zeros.len());
+    let spans = (zeros.len() - 1) & !1;
+    let omega = std::f64::consts::PI * spans as f64 / (zeros[spans] - zeros[0]);
+    (slope(&extrema), omega)
 }
