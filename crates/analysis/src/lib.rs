@@ -42,6 +42,7 @@ mod mode;
 mod parameter;
 mod precessing_top;
 mod stability_map;
+mod steady_kind;
 mod steady_problem;
 mod steady_search;
 mod vector_field;
@@ -62,6 +63,7 @@ pub use stability_map::{
     BoundaryEdge, BoundaryPoint, GridPoint, StabilityMap, Sweep, bisect_boundary, boundary_edges,
     grid_point,
 };
+pub use steady_kind::SteadyKind;
 pub use steady_problem::{PivotBody, SteadyProblem};
 pub use steady_search::{NEARBY, SteadyMotion, find_steady_motion};
 pub use vector_field::{Scalar, VectorField};

@@ -9,7 +9,7 @@ use kreisel_inertia::MassProperties;
 
 use crate::{
     AnalysisError, BodyOnGround, FreeBodyRotation, HeavyTopPivot, Linearisation, Parameter,
-    PrecessingTop, Precession, find_steady_motion,
+    PrecessingTop, Precession, SteadyKind, find_steady_motion,
 };
 
 /// A top on a pivot, as the engine builds it: mass properties about the
@@ -303,6 +303,64 @@ impl SteadyProblem {
                 }
             }
         }
+    }
+
+    /// The steady motion `kind` of `body` at its state's parameters: a top
+    /// on a pivot sleeping or hanging at its spin about the axis through
+    /// the centre of mass, or precessing at its tilt and that spin; or
+    /// the one nearest its state ([`SteadyProblem::near`]).
+    ///
+    /// ```text
+    /// ĉ = (c − pivot)/|c − pivot|,   spin = ω·ĉ,   tilt = ∠(γ, ĉ)   (body axes)
+    /// ```
+    ///
+    /// # Errors
+    /// [`AnalysisError::NoSuchMotion`] for a named kind on a body without
+    /// a pivot; as [`SteadyProblem::near`] for the nearest.
+    pub fn named(
+        body: &Body,
+        gravity_world: DVec3,
+        kind: SteadyKind,
+    ) -> Result<Self, AnalysisError> {
+        if kind == SteadyKind::Nearest {
+            return Self::near(body, gravity_world);
+        }
+        let Support::Pivot { pivot_body, .. } = body.support() else {
+            return Err(AnalysisError::NoSuchMotion {
+                kind: "named steady motion",
+                why: format!(
+                    "steady = \"{kind}\" needs a body on a pivot; give steady = \"nearest\" (or none)"
+                ),
+            });
+        };
+        let top = PivotBody {
+            mass_properties: *body.mass_properties(),
+            pivot_body,
+            gravity_world,
+        };
+        let axis = (top.mass_properties.center_of_mass - pivot_body).normalize_or_zero();
+        let up_body = body.world_from_body().normalize().conjugate()
+            * (-gravity_world.normalize_or(DVec3::NEG_Z));
+        let spin = body.omega_body().dot(axis);
+        let tilt = up_body.dot(axis).clamp(-1.0, 1.0).acos();
+        Ok(match kind {
+            SteadyKind::Sleeping | SteadyKind::Hanging => Self::SleepingTop {
+                top,
+                spin,
+                hanging: kind == SteadyKind::Hanging,
+            },
+            SteadyKind::SlowPrecession | SteadyKind::FastPrecession => Self::Precession {
+                top,
+                tilt,
+                spin,
+                which: if kind == SteadyKind::SlowPrecession {
+                    Precession::Slow
+                } else {
+                    Precession::Fast
+                },
+            },
+            SteadyKind::Nearest => unreachable!("returned above"),
+        })
     }
 
     /// The steady motion nearest the state of `body` (at rest or spinning,

@@ -14,7 +14,7 @@ mod text;
 
 use std::path::PathBuf;
 
-use kreisel_analysis::{Linearisation, Parameter, StabilityMap, SteadyProblem};
+use kreisel_analysis::{Linearisation, Parameter, StabilityMap, SteadyKind, SteadyProblem};
 use kreisel_plot::ImageFormat;
 use kreisel_scene::error::SceneError;
 use kreisel_scene::scene_file;
@@ -24,9 +24,12 @@ use crate::error::CliError;
 
 /// The `--help` text after the options.
 const AFTER_HELP: &str = "\
-Each body's steady motion is the one nearest the scene's initial state with
-the same Casimirs and momenta (a free body: rotation about a principal axis;
-a top on a pivot: sleeping, hanging, or in slow or fast steady precession).
+Each body's steady motion is the one its `steady` key names (sleeping,
+hanging, slow_precession, fast_precession: a top on a pivot at its state's
+spin and tilt) or, by default (nearest), the one nearest the scene's initial
+state with the same Casimirs and momenta (a free body: rotation about a
+principal axis; a top on a pivot: sleeping, hanging, or in slow or fast
+steady precession; a body on the ground: spinning about the vertical).
 Eigenvalues are in 1/s (real part: growth rate; imaginary: angular
 frequency, in the frame printed); every zero eigenvalue is named.
 
@@ -125,10 +128,23 @@ pub fn run(args: &StabilityArgs) -> Result<(), CliError> {
         })?;
     let scene = scene_file::parse(&args.scene, &text)?;
     let gravity = scene.world.gravity();
-    let chosen: Vec<&(String, kreisel_dynamics::BodyId)> = scene
+    // Each body's `steady` key, checked before any analysis.
+    let mut kinds = Vec::with_capacity(scene.bodies.len());
+    for ((name, _), steady) in scene.bodies.iter().zip(&scene.steady) {
+        kinds.push(match steady {
+            None => SteadyKind::Nearest,
+            Some((kind, line)) => kind.parse().map_err(|message: String| SceneError::Scene {
+                path: args.scene.clone(),
+                line: Some(*line),
+                message: format!("body `{name}`: `steady`: {message}"),
+            })?,
+        });
+    }
+    let chosen: Vec<(&(String, kreisel_dynamics::BodyId), SteadyKind)> = scene
         .bodies
         .iter()
-        .filter(|(name, _)| args.body.as_ref().is_none_or(|b| b == name))
+        .zip(kinds)
+        .filter(|((name, _), _)| args.body.as_ref().is_none_or(|b| b == name))
         .collect();
     if let Some(name) = &args.body
         && chosen.is_empty()
@@ -150,14 +166,14 @@ pub fn run(args: &StabilityArgs) -> Result<(), CliError> {
         ));
     }
     let mut reports = Vec::new();
-    for (name, id) in chosen {
+    for ((name, id), kind) in chosen {
         let fail = |error| CliError::Analysis {
             path: args.scene.clone(),
             body: name.clone(),
             error,
         };
         let body = scene.world.body(*id).expect("the scene's own body");
-        let problem = SteadyProblem::near(body, gravity).map_err(fail)?;
+        let problem = SteadyProblem::named(body, gravity, kind).map_err(fail)?;
         let linearisation = problem.linearise().map_err(fail)?;
         let map = if args.sweep.is_empty() {
             None

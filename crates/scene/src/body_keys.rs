@@ -48,6 +48,9 @@ pub struct RawBody {
     force: Option<Spanned<[f64; 3]>>,
     angular_damping: Option<Spanned<f64>>,
     contact: Option<Spanned<RawContacts>>,
+    /// The steady motion `kreisel stability` analyses (its name; `simulate`
+    /// does not read it).
+    steady: Option<Spanned<String>>,
 }
 
 /// `euler = { sequence = "ZXZ", angles = [..] }` as written.
@@ -62,6 +65,13 @@ impl RawBody {
     /// Whether the body has a `pivot` (is a heavy top).
     pub fn has_pivot(&self) -> bool {
         self.pivot.is_some()
+    }
+
+    /// The `steady` key as written, with the byte span of its value.
+    pub fn steady(&self) -> Option<(&str, std::ops::Range<usize>)> {
+        self.steady
+            .as_ref()
+            .map(|s| (s.get_ref().as_str(), s.span()))
     }
 
     /// Where the `contact` key is, if given (the body stands on the ground).

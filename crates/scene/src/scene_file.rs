@@ -63,6 +63,9 @@ pub struct Scene {
     /// The lines of the `mu` keys of each body's contact tables, in file
     /// order (`None` where not given): Painlevé's case names its `mu`.
     pub mu_lines: Vec<Vec<Option<u64>>>,
+    /// Each body's `steady` key (the steady motion `kreisel stability`
+    /// analyses) and its line, in file order; `None` where not given.
+    pub steady: Vec<Option<(String, u64)>>,
 }
 
 /// Reads and checks a scene and builds its world, moved by the scene's
@@ -161,6 +164,7 @@ pub fn parse_with_method(
     let mut has_pivot = false;
     let mut contact_lines: Vec<Vec<u64>> = Vec::with_capacity(raw.body.len());
     let mut mu_lines: Vec<Vec<Option<u64>>> = Vec::with_capacity(raw.body.len());
+    let mut steady: Vec<Option<(String, u64)>> = Vec::with_capacity(raw.body.len());
     let down = gravity.x == 0.0 && gravity.y == 0.0 && gravity.z < 0.0;
     for (n, raw_body) in raw.body.iter().enumerate() {
         if let Some(contact) = raw_body.get_ref().contact_span()
@@ -191,6 +195,12 @@ pub fn parse_with_method(
         }
         has_pivot |= raw_body.get_ref().has_pivot();
         bodies.push((name, id));
+        steady.push(
+            raw_body
+                .get_ref()
+                .steady()
+                .map(|(kind, span)| (kind.to_owned(), file.line_of(span.start))),
+        );
         let spans = raw_body.get_ref().contact_spans();
         contact_lines.push(spans.into_iter().map(|s| file.line_of(s.start)).collect());
         let mu = raw_body.get_ref().mu_spans();
@@ -215,6 +225,7 @@ pub fn parse_with_method(
         has_pivot,
         contact_lines,
         mu_lines,
+        steady,
     })
 }
 

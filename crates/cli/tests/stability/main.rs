@@ -219,3 +219,44 @@ fn bad_arguments_and_states_get_one_line() {
         assert!(run.stderr.contains(says), "{}", run.stderr);
     }
 }
+
+/// `steady = "slow_precession"` names the steady motion at the state's
+/// tilt and spin (Bruls' top, horizontal, 150 rad/s, nutating: no steady
+/// motion near it); its nutation frequency is the effective potential's,
+/// `√((k − 2φ̇ cos θ)² + φ̇² sin²θ)` with `k = I₃ω₃/I₁`, at θ = π/2:
+/// `√(k² + φ̇²)`, `φ̇ = M g l/(I₃ω₃)`. A name it does not know is one line
+/// with the key's line.
+#[test]
+fn a_scene_names_its_steady_motion() {
+    let bruls = std::fs::read_to_string(repo("examples/scenes/heavy_top.toml")).unwrap();
+    let named = bruls.replace(
+        "pivot = [0.0, -1.0, 0.0]",
+        "pivot = [0.0, -1.0, 0.0]\nsteady = \"slow_precession\"",
+    );
+    assert_ne!(named, bruls);
+    let path = scratch_dir().join("bruls_steady.toml");
+    std::fs::write(&path, &named).unwrap();
+    let doc = json(&["stability", &path.display().to_string(), "--format", "json"]);
+    let motion = &doc["bodies"][0]["steady_motions"][0];
+    assert_eq!(motion["kind"], "slow steady precession");
+    assert_eq!(motion["verdict"], "stable");
+    let (i1, i3, mgl, spin): (f64, f64, f64, f64) = (0.234375 + 15.0, 0.46875, 15.0 * 9.81, 150.0);
+    let phi_dot = mgl / (i3 * spin);
+    let expected = ((i3 * spin / i1).powi(2) + phi_dot * phi_dot).sqrt();
+    let found = motion["eigenvalues"][0][1].as_f64().unwrap().abs();
+    assert!(
+        (found / expected - 1.0).abs() < 1e-12,
+        "{found} vs {expected}"
+    );
+    let bad = bruls.replace(
+        "pivot = [0.0, -1.0, 0.0]",
+        "pivot = [0.0, -1.0, 0.0]\nsteady = \"wobbling\"",
+    );
+    std::fs::write(&path, &bad).unwrap();
+    let run = kreisel(&["stability", &path.display().to_string()], "");
+    let line = run.error_line(1);
+    assert!(
+        line.ends_with(":18: body `top`: `steady`: unknown steady motion \"wobbling\" (one of nearest, sleeping, hanging, slow_precession, fast_precession)"),
+        "{line}"
+    );
+}
