@@ -4,7 +4,7 @@
 //! with a closed-form stability boundary where one exists.
 
 use glam::{DQuat, DVec3};
-use kreisel_dynamics::{Body, HeavyTop, Support};
+use kreisel_dynamics::{Body, Friction, HeavyTop, Support};
 use kreisel_inertia::MassProperties;
 
 use crate::{
@@ -112,7 +112,7 @@ impl SteadyProblem {
             Self::FreeRotation { .. } => "free rotation about a principal axis",
             Self::SleepingTop { hanging: false, .. } => "sleeping top",
             Self::SleepingTop { hanging: true, .. } => "hanging top",
-            Self::GroundSpin { .. } => "spin about the vertical on the ground",
+            Self::GroundSpin { .. } => "spin about the vertical on its contact point",
             Self::Precession {
                 which: Precession::Slow,
                 ..
@@ -363,14 +363,16 @@ impl SteadyProblem {
         })
     }
 
-    /// The steady motion nearest the state of `body` (at rest or spinning,
-    /// free or on a pivot) under `gravity_world`, found with the start's
+    /// The steady motion nearest the state of `body` (at rest or spinning;
+    /// free, on a pivot, on the ground, or on the table with one contact
+    /// shape, sticking) under `gravity_world`, found with the start's
     /// Casimirs and momenta kept ([`find_steady_motion`]).
     ///
     /// # Errors
     /// [`AnalysisError::NoSteadyMotionNearby`] with the residuals when
-    /// there is none; [`AnalysisError::NoSuchMotion`] for a support the
-    /// analysis does not know yet (the ground, the table).
+    /// there is none; [`AnalysisError::NoSuchMotion`] for a body on the
+    /// table it cannot take (see `sticking_on_ground`: several contact
+    /// shapes, not touching, a set-valued law).
     pub fn near(body: &Body, gravity_world: DVec3) -> Result<Self, AnalysisError> {
         let rigid = body.rigid_body();
         match body.support() {
@@ -417,12 +419,10 @@ impl SteadyProblem {
                     up_body,
                 })
             }
-            Support::Table { .. } => Err(AnalysisError::NoSuchMotion {
-                kind: "steady motion",
-                why: "bodies on the table (several contacts, impacts) are not analysed yet; \
-                      a body on the ground is"
-                    .into(),
-            }),
+            Support::Table { position, .. } => {
+                let on_ground = sticking_on_ground(body, position)?;
+                Self::near(&on_ground, gravity_world)
+            }
         }
     }
 }
@@ -500,4 +500,61 @@ fn positive_cubic_root(a: f64, b: f64, d: f64) -> f64 {
         }
     }
     x
+}
+
+/// A body on the table touching it with one contact shape, as the same
+/// body on the ground: a steady spin about the vertical has no slip at
+/// the contact, so Coulomb friction (μ > 0) sticks there, and small
+/// perturbations keep the friction force inside the cone: to first order
+/// the contact rolls ([`Friction::Rolling`]); with μ = 0 it slides
+/// freely ([`Friction::None`]).
+///
+/// ```text
+/// gap z_G + ρ_z = 0 (to 1e-9 of the shape's size),   μ > 0 → rolling,   μ = 0 → frictionless
+/// ```
+///
+/// # Errors
+/// [`AnalysisError::NoSuchMotion`] for several contact shapes, a body
+/// above the table, or a law the linearisation cannot take (a drilling
+/// Contensou torque, rolling resistance or an air layer: each is
+/// set-valued or slows the spin, so nothing is steady).
+fn sticking_on_ground(body: &Body, position: DVec3) -> Result<Body, AnalysisError> {
+    let refuse = |why: String| AnalysisError::NoSuchMotion {
+        kind: "steady motion on the table",
+        why,
+    };
+    let [contact] = body.table_contacts() else {
+        return Err(refuse(format!(
+            "the body touches the table with {} contact shapes; the analysis takes one",
+            body.table_contacts().len()
+        )));
+    };
+    let law = contact.law;
+    if law.contensou_radius() > 0.0 || law.rolling_resistance() > 0.0 || law.air_layer().is_some() {
+        return Err(refuse(
+            "its contact law has a drilling torque, rolling resistance or an air layer \
+             (set-valued, or slowing the spin: nothing is steady)"
+                .into(),
+        ));
+    }
+    let gap = position.z
+        + contact
+            .shape
+            .contact_from_com_world(body.world_from_body())
+            .z;
+    if gap.abs() > 1e-9 * contact.shape.size() {
+        return Err(refuse(format!(
+            "it starts {gap:.3e} m from the table (it must touch it to spin steadily on it)"
+        )));
+    }
+    let friction = if law.mu() > 0.0 {
+        Friction::Rolling
+    } else {
+        Friction::None
+    };
+    Ok(Body::from_mass_properties(*body.mass_properties())
+        .world_from_body(body.world_from_body())
+        .omega_body(body.omega_body())
+        .on_ground(contact.shape, friction)
+        .try_build()?)
 }

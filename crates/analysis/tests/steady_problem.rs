@@ -163,3 +163,64 @@ fn bad_parameters_and_states_say_what_is_wrong() {
         other => panic!("{other:?}"),
     }
 }
+
+/// Leine & Glocker's tippe top spinning upright on the table (one sphere,
+/// Coulomb μ = 0.3, touching): no slip at the contact, so it is analysed
+/// rolling — the same eigenvalues as the tippe-top family built from its
+/// parameters with `Friction::Rolling`, to 1e-12; with μ = 0 it is the
+/// frictionless family. Two contacts, or a drilling torque, are refused.
+#[test]
+fn a_top_spinning_on_the_table_is_the_rolling_top() {
+    use kreisel_analysis::{LEINE_GLOCKER, Linearisation, TippeTop};
+    use kreisel_dynamics::{ContactLaw, ContactShape, Friction, SphereContact, TableContact};
+    let sphere =
+        ContactShape::Sphere(SphereContact::try_new(0.015, DVec3::new(0.0, 0.0, 0.003)).unwrap());
+    let on_table = |laws: &[ContactLaw]| {
+        let contacts: Vec<TableContact> = laws
+            .iter()
+            .map(|&law| TableContact { shape: sphere, law })
+            .collect();
+        Body::from_principal_moments(0.006, DVec3::new(8e-7, 8e-7, 7e-7))
+            .omega_body(DVec3::new(0.0, 0.0, 180.0))
+            .on_table(DVec3::new(0.0, 0.0, 0.015 - 0.003), DVec3::ZERO, &contacts)
+            .try_build()
+            .unwrap()
+    };
+    let sorted = |lin: &Linearisation| {
+        let mut v: Vec<(f64, f64)> = lin.eigenvalues().iter().map(|e| (e.re, e.im)).collect();
+        v.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.total_cmp(&b.0)));
+        v
+    };
+    for (mu, friction) in [(0.3, Friction::Rolling), (0.0, Friction::None)] {
+        let problem = SteadyProblem::near(&on_table(&[ContactLaw::new(mu)]), G).unwrap();
+        assert_eq!(
+            problem.kind(),
+            "spin about the vertical on its contact point"
+        );
+        let found = problem.linearise().unwrap();
+        let family = TippeTop::try_new(LEINE_GLOCKER, friction).unwrap();
+        let reference =
+            Linearisation::try_new(&family, &family.spinning_upright(180.0).unwrap()).unwrap();
+        assert_eq!(found.verdict.name(), reference.verdict.name(), "μ = {mu}");
+        let (a, b) = (sorted(&found), sorted(&reference));
+        assert_eq!(a.len(), b.len());
+        for (x, y) in a.iter().zip(&b) {
+            let scale = y.0.hypot(y.1).max(1.0);
+            assert!(
+                (x.0 - y.0).abs() <= 1e-12 * scale && (x.1 - y.1).abs() <= 1e-12 * scale,
+                "μ = {mu}: {x:?} vs {y:?}"
+            );
+        }
+    }
+    let two = on_table(&[ContactLaw::new(0.3), ContactLaw::new(0.3)]);
+    assert!(matches!(
+        SteadyProblem::near(&two, G),
+        Err(AnalysisError::NoSuchMotion { .. })
+    ));
+    let drilling = ContactLaw::try_new(0.3)
+        .unwrap()
+        .try_with_contensou_radius(1e-3)
+        .unwrap();
+    let e = SteadyProblem::near(&on_table(&[drilling]), G).unwrap_err();
+    assert!(e.to_string().contains("drilling torque"), "{e}");
+}

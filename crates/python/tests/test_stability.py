@@ -144,8 +144,10 @@ def test_spin_about_the_largest_or_smallest_axis_is_stable(axis):
 
 def test_errors_are_the_library_s_one_line():
     w = kreisel.World(dt=0.01, gravity=(0, 0, -G))
-    ball = w.add_body(1.0, moments=(0.002,) * 3, contacts=[dict(shape="sphere", radius=0.1, mu=0.5)])
-    with pytest.raises(kreisel.KreiselError, match=r"^no steady motion: bodies on the table \(several contacts, impacts\) are not analysed yet"):
+    # A ball on the table with a drilling (Contensou) torque: its spin slows, nothing is steady.
+    ball = w.add_body(1.0, moments=(0.002,) * 3,
+                      contacts=[dict(shape="sphere", radius=0.1, mu=0.5, contensou_radius=1e-3)])
+    with pytest.raises(kreisel.KreiselError, match=r"^no steady motion on the table: its contact law has a drilling torque"):
         kreisel.stability(w, ball)
     tumbling = w.add_body(1.0, moments=(1.0, 2.0, 3.0), omega_body=(1.0, 1.0, 1.0))
     with pytest.raises(ValueError, match=r"^no steady motion near this state: relative residual") as e:
@@ -387,3 +389,19 @@ def test_docstring_examples():
         for test in doctest.DocTestFinder(recurse=False).find(obj, obj.__name__, globs={}):
             runner.run(test)
         assert runner.failures == 0 and runner.tries > 0, obj
+
+
+def test_a_spinning_top_on_the_table_sticks_and_is_the_rolling_one():
+    """A tippe top spinning upright on the table: with μ > 0 nothing slips at
+    the contact, so it is analysed rolling (state γ, ω; two zeros named,
+    four eigenvalues); with μ = 0 it slides freely (γ, ω, v; three zeros,
+    six). The Rust tests compare the rolling one with the tippe-top family."""
+    w = kreisel.World(dt=0.01, gravity=(0, 0, -G))
+    sticking = w.add_body(0.006, moments=(8e-7, 8e-7, 7e-7), omega_body=(0, 0, 180.0),
+                          contacts=[dict(shape="sphere", radius=0.015, center=(0, 0, 0.003), mu=0.3)])
+    sliding = w.add_body(0.006, moments=(8e-7, 8e-7, 7e-7), omega_body=(0, 0, 180.0),
+                         contacts=[dict(shape="sphere", radius=0.015, center=(0, 0, 0.003), mu=0.0)])
+    a, b = kreisel.stability(w, sticking), kreisel.stability(w, sliding)
+    assert a["kind"] == b["kind"] == "spin about the vertical on its contact point"
+    assert len(a["eigenvalues"]) == 4 and len(b["eigenvalues"]) == 6   # rolling (γ, ω); sliding adds v
+    assert sorted(abs(e.imag) for e in a["eigenvalues"]) != pytest.approx(sorted(abs(e.imag) for e in b["eigenvalues"][:4]))
