@@ -325,6 +325,7 @@ impl SteadyProblem {
         if kind == SteadyKind::Nearest {
             return Self::near(body, gravity_world);
         }
+        refuse_driven(body)?;
         let Support::Pivot { pivot_body, .. } = body.support() else {
             return Err(AnalysisError::NoSuchMotion {
                 kind: "named steady motion",
@@ -372,8 +373,10 @@ impl SteadyProblem {
     /// [`AnalysisError::NoSteadyMotionNearby`] with the residuals when
     /// there is none; [`AnalysisError::NoSuchMotion`] for a body on the
     /// table it cannot take (see `sticking_on_ground`: several contact
-    /// shapes, not touching, a set-valued law).
+    /// shapes, not touching, a set-valued law), or a body with applied
+    /// torques, forces or damping.
     pub fn near(body: &Body, gravity_world: DVec3) -> Result<Self, AnalysisError> {
+        refuse_driven(body)?;
         let rigid = body.rigid_body();
         match body.support() {
             Support::Free { .. } => {
@@ -500,6 +503,21 @@ fn positive_cubic_root(a: f64, b: f64, d: f64) -> f64 {
         }
     }
     x
+}
+
+/// The families are the bodies' own motions under gravity and contact: a
+/// body with applied torques, forces or damping ([`kreisel_dynamics::Inputs`])
+/// is refused, not analysed as if it had none.
+fn refuse_driven(body: &Body) -> Result<(), AnalysisError> {
+    if body.inputs().is_none() {
+        return Ok(());
+    }
+    Err(AnalysisError::NoSuchMotion {
+        kind: "steady motion",
+        why: "the body is driven (torque, force or angular damping): the analysis takes \
+              the motion under gravity and contact alone"
+            .into(),
+    })
 }
 
 /// A body on the table touching it with one contact shape, as the same

@@ -224,3 +224,20 @@ fn a_top_spinning_on_the_table_is_the_rolling_top() {
     let e = SteadyProblem::near(&on_table(&[drilling]), G).unwrap_err();
     assert!(e.to_string().contains("drilling torque"), "{e}");
 }
+
+/// Regression: a reaction wheel spun up by a motor (`spin_up.toml`) was
+/// analysed as a free body at rest ("neutral"), its torque ignored. A
+/// driven body is refused, named or nearest.
+#[test]
+fn a_driven_body_is_refused() {
+    use kreisel_analysis::SteadyKind;
+    use kreisel_dynamics::Inputs;
+    let wheel = Body::from_principal_moments(1.0, DVec3::new(0.01, 0.01, 0.02))
+        .with_inputs(Inputs::default().with_torque_body(DVec3::new(0.0, 0.0, 0.1)))
+        .try_build()
+        .unwrap();
+    for kind in [SteadyKind::Nearest, SteadyKind::Sleeping] {
+        let e = SteadyProblem::named(&wheel, G, kind).unwrap_err();
+        assert!(e.to_string().contains("the body is driven"), "{e}");
+    }
+}

@@ -29,7 +29,8 @@ hanging, slow_precession, fast_precession: a top on a pivot at its state's
 spin and tilt) or, by default (nearest), the one nearest the scene's initial
 state with the same Casimirs and momenta (a free body: rotation about a
 principal axis; a top on a pivot: sleeping, hanging, or in slow or fast
-steady precession; a body on the ground: spinning about the vertical).
+steady precession; a body on the ground, or on the table with one contact
+shape: spinning about the vertical).
 Eigenvalues are in 1/s (real part: growth rate; imaginary: angular
 frequency, in the frame printed); every zero eigenvalue is named.
 
