@@ -3,6 +3,7 @@
 //! steady circles kept steady by the engine, and the wobble's frequency
 //! and the fall's growth rate measured from the engine's nonlinear runs.
 
+mod support;
 use glam::{DMat3, DQuat, DVec3};
 use kreisel_analysis::{
     AnalysisError, Linearisation, RollingDisk, VectorField, Verdict, ZeroModeKind,
@@ -205,17 +206,10 @@ fn the_engine_wobbles_and_falls_at_the_librarys_rates() {
         .skip(samples.len() / 2)
         .map(|(k, w)| ((k + 1) as f64 * h, (w[1] - w[0]).abs().ln()))
         .collect();
-    let m = points.len() as f64;
-    let (t_mean, y_mean) = points
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (t, y)| (a + t / m, b + y / m));
-    let (num, den) = points.iter().fold((0.0, 0.0), |(a, b), (t, y)| {
-        (a + (t - t_mean) * (y - y_mean), b + (t - t_mean).powi(2))
-    });
-    let e_sigma = num / den / growth_rate - 1.0;
+    let measured = support::slope(&points);
+    let e_sigma = measured / growth_rate - 1.0;
     eprintln!(
-        "fall: library σ = {growth_rate:.10} 1/s, engine {:.10} ({e_sigma:.1e}) over {duration:.2} s",
-        num / den
+        "fall: library σ = {growth_rate:.10} 1/s, engine {measured:.10} ({e_sigma:.1e}) over {duration:.2} s"
     );
     assert!(e_sigma.abs() <= 5e-8, "{e_sigma:e}");
 }
@@ -293,18 +287,9 @@ fn the_engine_leaves_an_unstable_circle_at_the_librarys_rate() {
         .skip(samples.len() / 2)
         .map(|(k, w)| ((k + lag) as f64 * h, (w[lag] - w[0]).abs().ln()))
         .collect();
-    let m = points.len() as f64;
-    let (t_mean, y_mean) = points
-        .iter()
-        .fold((0.0, 0.0), |(a, b), (t, y)| (a + t / m, b + y / m));
-    let (num, den) = points.iter().fold((0.0, 0.0), |(a, b), (t, y)| {
-        (a + (t - t_mean) * (y - y_mean), b + (t - t_mean).powi(2))
-    });
-    let e_sigma = num / den / growth_rate - 1.0;
-    eprintln!(
-        "circle: library σ = {growth_rate:.10} 1/s, engine {:.10} ({e_sigma:.1e})",
-        num / den
-    );
+    let measured = support::slope(&points);
+    let e_sigma = measured / growth_rate - 1.0;
+    eprintln!("circle: library σ = {growth_rate:.10} 1/s, engine {measured:.10} ({e_sigma:.1e})");
     assert!(e_sigma.abs() <= 1e-6, "{e_sigma:e}");
 }
 
