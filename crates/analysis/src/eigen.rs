@@ -35,45 +35,63 @@ pub(crate) fn eigen_pairs(b: &DMatrix<f64>, scale: f64) -> Option<Vec<EigenPair>
     let mut values = crate::hessenberg_qr::eigenvalues(b)?;
     values.sort_by(|x, y| y.re.total_cmp(&x.re).then(y.im.total_cmp(&x.im)));
     let bc: DMatrix<Complex<f64>> = b.map(|v| Complex::new(v, 0.0));
-    let pairs = values
-        .iter()
-        .map(|&lambda| {
-            let cluster: Vec<Complex<f64>> = values
-                .iter()
-                .copied()
-                .filter(|v| (v - lambda).norm() <= CLUSTER * scale)
-                .collect();
+    let mut pairs: Vec<EigenPair> = Vec::with_capacity(n);
+    for &lambda in &values {
+        // A real matrix: the mode of λ̄ is the conjugate of λ's (the QR
+        // iteration gives the pair exactly conjugate, λ first).
+        let partner = pairs
+            .iter()
+            .find(|p| lambda.im < 0.0 && Complex::new(p.value.re, -p.value.im) == lambda);
+        let vector = match partner {
+            Some(p) => p.vector.iter().map(|c| c.conj()).collect(),
+            None => null_vector(&bc, lambda)?,
+        };
+        let cluster: Vec<Complex<f64>> = values
+            .iter()
+            .copied()
+            .filter(|v| (v - lambda).norm() <= CLUSTER * scale)
+            .collect();
+        let modes_in_cluster = if cluster.len() > 1 {
             let centre = cluster.iter().sum::<Complex<f64>>() / cluster.len() as f64;
-            let shifted = &bc - DMatrix::<Complex<f64>>::identity(n, n) * lambda;
-            let svd = shifted.svd(false, true);
-            let v_t = svd.v_t.expect("v_t was asked for");
-            // The smallest singular value's right vector is the mode.
-            let (k, _) = svd.singular_values.iter().enumerate().fold(
+            let at_centre = &bc - DMatrix::<Complex<f64>>::identity(n, n) * centre;
+            at_centre
+                .singular_values()
+                .iter()
+                .filter(|&&s| s <= CLUSTER.sqrt() * 1e-1 * scale)
+                .count()
+                .max(1)
+        } else {
+            1
+        };
+        pairs.push(EigenPair {
+            value: Eigenvalue::new(lambda.re, lambda.im),
+            vector,
+            multiplicity: cluster.len(),
+            modes_in_cluster,
+        });
+    }
+    Some(pairs)
+}
+
+/// The mode of `lambda`: the right singular vector of `B − λ𝟙` for its
+/// smallest singular value (unit length, largest component real and
+/// positive); `None` only if the SVD gives no `Vᴴ` (never: it is asked for).
+fn null_vector(bc: &DMatrix<Complex<f64>>, lambda: Complex<f64>) -> Option<Vec<Complex<f64>>> {
+    let n = bc.nrows();
+    let shifted = bc - DMatrix::<Complex<f64>>::identity(n, n) * lambda;
+    let svd = shifted.svd(false, true);
+    let v_t = svd.v_t?;
+    let (k, _) =
+        svd.singular_values
+            .iter()
+            .enumerate()
+            .fold(
                 (0, f64::INFINITY),
                 |(kb, sb), (k, &s)| if s < sb { (k, s) } else { (kb, sb) },
             );
-            let mut vector: Vec<Complex<f64>> = v_t.row(k).iter().map(|c| c.conj()).collect();
-            normalise_phase(&mut vector);
-            let modes_in_cluster = if cluster.len() > 1 {
-                let at_centre = &bc - DMatrix::<Complex<f64>>::identity(n, n) * centre;
-                at_centre
-                    .singular_values()
-                    .iter()
-                    .filter(|&&s| s <= CLUSTER.sqrt() * 1e-1 * scale)
-                    .count()
-                    .max(1)
-            } else {
-                1
-            };
-            EigenPair {
-                value: Eigenvalue::new(lambda.re, lambda.im),
-                vector,
-                multiplicity: cluster.len(),
-                modes_in_cluster,
-            }
-        })
-        .collect();
-    Some(pairs)
+    let mut vector: Vec<Complex<f64>> = v_t.row(k).iter().map(|c| c.conj()).collect();
+    normalise_phase(&mut vector);
+    Some(vector)
 }
 
 /// Unit length, and the largest component made real and positive.

@@ -93,33 +93,31 @@ impl Linearisation {
                 limit: STEADY_RESIDUAL,
             });
         }
-        // The level set's tangent space: ⊥ the independent gradients.
-        let mut normals: Vec<DVector<f64>> = Vec::new();
+        // One orthonormal basis: the independent gradients (their
+        // complement is the level set's tangent space T), then the
+        // symmetry directions inside T.
+        let mut taken: Vec<DVector<f64>> = Vec::new();
         let (mut zero_modes, mut dependent) = (Vec::new(), Vec::new());
         for (mode, _, gradient) in conserved_gradients(field, x) {
-            if push_independent(&mut normals, DVector::from_vec(gradient)) {
+            if push_independent(&mut taken, DVector::from_vec(gradient)) {
                 zero_modes.push(mode);
             } else {
                 dependent.push(mode);
             }
         }
-        // Symmetry directions inside it.
-        let mut along: Vec<DVector<f64>> = Vec::new();
+        let normals = taken.len();
         for (mode, direction) in field.symmetry_directions(x) {
+            // Its part in T is what counts.
             let mut d = DVector::from_vec(direction);
-            for g in &normals {
+            for g in &taken[..normals] {
                 d -= g * g.dot(&d);
             }
-            let mut both = normals.clone();
-            both.extend(along.iter().cloned());
-            if push_independent(&mut both, d.clone()) {
-                along.push(both.pop().expect("just pushed"));
+            if push_independent(&mut taken, d) {
                 zero_modes.push(mode);
             } else {
                 dependent.push(mode);
             }
         }
-        let mut taken: Vec<DVector<f64>> = normals.iter().chain(&along).cloned().collect();
         let kept = taken.len();
         for i in 0..n {
             if taken.len() == n {

@@ -322,9 +322,12 @@ impl SteadyProblem {
         gravity_world: DVec3,
         kind: SteadyKind,
     ) -> Result<Self, AnalysisError> {
-        if kind == SteadyKind::Nearest {
-            return Self::near(body, gravity_world);
-        }
+        let which = match kind {
+            SteadyKind::Nearest => return Self::near(body, gravity_world),
+            SteadyKind::Sleeping | SteadyKind::Hanging => None,
+            SteadyKind::SlowPrecession => Some(Precession::Slow),
+            SteadyKind::FastPrecession => Some(Precession::Fast),
+        };
         refuse_driven(body)?;
         let Support::Pivot { pivot_body, .. } = body.support() else {
             return Err(AnalysisError::NoSuchMotion {
@@ -340,27 +343,23 @@ impl SteadyProblem {
             gravity_world,
         };
         let axis = (top.mass_properties.center_of_mass - pivot_body).normalize_or_zero();
-        let up_body = body.world_from_body().normalize().conjugate()
-            * (-gravity_world.normalize_or(DVec3::NEG_Z));
         let spin = body.omega_body().dot(axis);
-        let tilt = up_body.dot(axis).clamp(-1.0, 1.0).acos();
-        Ok(match kind {
-            SteadyKind::Sleeping | SteadyKind::Hanging => Self::SleepingTop {
+        Ok(match which {
+            None => Self::SleepingTop {
                 top,
                 spin,
                 hanging: kind == SteadyKind::Hanging,
             },
-            SteadyKind::SlowPrecession | SteadyKind::FastPrecession => Self::Precession {
-                top,
-                tilt,
-                spin,
-                which: if kind == SteadyKind::SlowPrecession {
-                    Precession::Slow
-                } else {
-                    Precession::Fast
-                },
-            },
-            SteadyKind::Nearest => unreachable!("returned above"),
+            Some(which) => {
+                let up_body = body.world_from_body().normalize().conjugate()
+                    * (-gravity_world.normalize_or(DVec3::NEG_Z));
+                Self::Precession {
+                    top,
+                    tilt: up_body.dot(axis).clamp(-1.0, 1.0).acos(),
+                    spin,
+                    which,
+                }
+            }
         })
     }
 

@@ -67,7 +67,8 @@ pub fn find_steady_motion<F: VectorField>(
 ) -> Result<SteadyMotion, AnalysisError> {
     check_state(field, start)?;
     let mut x = DVector::from_column_slice(start);
-    let a = jacobian(field, start);
+    // The Jacobian at x, carried from one step to the next.
+    let mut a = jacobian(field, start);
     let start_residual = relative_residual(field, start, &a);
     let (mut best, mut best_x, mut iterations) = (start_residual, x.clone(), 0);
     // The levels the search keeps: each Casimir and momentum of the start.
@@ -92,7 +93,6 @@ pub fn find_steady_motion<F: VectorField>(
             .filter(|(mode, _, _)| kept(mode))
             .collect();
         let rows = n + levels_here.len();
-        let a = jacobian(field, x.as_slice());
         let f = rates_at(field, x.as_slice());
         let mut j = DMatrix::zeros(rows, n);
         j.view_mut((0, 0), (n, n)).copy_from(&a);
@@ -118,7 +118,8 @@ pub fn find_steady_motion<F: VectorField>(
         if !x.iter().all(|v| v.is_finite()) {
             break;
         }
-        let r = relative_residual(field, x.as_slice(), &jacobian(field, x.as_slice()));
+        a = jacobian(field, x.as_slice());
+        let r = relative_residual(field, x.as_slice(), &a);
         if r < best {
             (best, best_x) = (r, x.clone());
         } else if best <= STEADY_RESIDUAL {
@@ -127,14 +128,10 @@ pub fn find_steady_motion<F: VectorField>(
     }
     let distance = (&best_x - DVector::from_column_slice(start)).norm();
     // The largest change of a component in units of its size.
-    let relative_distance = field
-        .state_scales(start)
+    let relative_distance = scales
         .iter()
         .zip(best_x.iter().zip(start))
-        .map(|(scale, (a, b))| {
-            let change = (a - b).abs();
-            if *scale > 0.0 { change / scale } else { change }
-        })
+        .map(|(scale, (a, b))| (a - b).abs() / scale)
         .fold(0.0, f64::max);
     if best > STEADY_RESIDUAL || best.is_nan() || relative_distance > NEARBY {
         return Err(AnalysisError::NoSteadyMotionNearby {

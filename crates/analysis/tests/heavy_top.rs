@@ -156,12 +156,7 @@ fn the_engine_s_sleeping_top_grows_and_precesses_at_the_linearised_rates() {
         let up = q.conjugate() * DVec3::Z;
         up.x.hypot(up.y).ln()
     });
-    let points: Vec<(f64, f64)> = samples
-        .iter()
-        .enumerate()
-        .map(|(k, &y)| (k as f64 * h, y))
-        .collect();
-    let measured = support::slope(&points[steps / 4..]);
+    let measured = support::late_slope(&samples, h);
     let error = measured / growth_rate - 1.0;
     eprintln!("growth: linearised {growth_rate:.12} 1/s, measured {measured:.12} ({error:.1e})");
     assert!(error.abs() < 1e-6, "{error:e}");

@@ -72,3 +72,23 @@ pub fn open_output(path: Option<&Path>, input: Option<&Path>) -> Result<Output, 
     })?;
     Ok((Box::new(file), Stream::File(path.to_owned()), Some(pending)))
 }
+
+/// Renders `figure` as `format` and writes it to `path`, whole or not at
+/// all (`--plot`).
+///
+/// # Errors
+/// [`CliError::Plot`] when rendering fails or the file cannot be written.
+pub fn write_figure(
+    figure: &kreisel_plot::Figure,
+    format: kreisel_plot::ImageFormat,
+    path: &Path,
+) -> Result<(), CliError> {
+    let bytes = format.render(figure).map_err(|e| CliError::Plot {
+        path: path.to_owned(),
+        message: e.to_string(),
+    })?;
+    atomic_file::write_file(path, &bytes).map_err(|source| CliError::Plot {
+        path: path.to_owned(),
+        message: format!("cannot write the file: {source}"),
+    })
+}

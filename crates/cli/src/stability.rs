@@ -173,6 +173,8 @@ pub fn run(args: &StabilityArgs) -> Result<(), CliError> {
             body: name.clone(),
             error,
         };
+        // `id` is one the scene's world returned when it added the body:
+        // the world holds it (bodies are never removed).
         let body = scene.world.body(*id).expect("the scene's own body");
         let problem = SteadyProblem::named(body, gravity, kind).map_err(fail)?;
         let linearisation = problem.linearise().map_err(fail)?;

@@ -323,14 +323,7 @@ fn plot(
         samples_per_period,
         degrees,
     });
-    let bytes = format.render(&figure).map_err(|e| CliError::Plot {
-        path: path.to_owned(),
-        message: e.to_string(),
-    })?;
-    crate::output::atomic_file::write_file(path, &bytes).map_err(|source| CliError::Plot {
-        path: path.to_owned(),
-        message: format!("cannot write the file: {source}"),
-    })
+    crate::output::write_figure(&figure, format, path)
 }
 
 /// The arguments with --theta0 in radians (`degrees`: given in degrees).

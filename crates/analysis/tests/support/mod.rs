@@ -82,3 +82,15 @@ pub fn growth_and_frequency(samples: &[f64], h: f64) -> (f64, f64) {
     let omega = std::f64::consts::PI * spans as f64 / (zeros[spans] - zeros[0]);
     (slope(&extrema), omega)
 }
+
+/// The growth rate of samples of `ln |y|` taken every `h` (from `t = 0`):
+/// the least-squares slope over the last three quarters, where the
+/// growing mode has left the others behind.
+pub fn late_slope(log_samples: &[f64], h: f64) -> f64 {
+    let points: Vec<(f64, f64)> = log_samples
+        .iter()
+        .enumerate()
+        .map(|(k, &y)| (k as f64 * h, y))
+        .collect();
+    slope(&points[log_samples.len() / 4..])
+}

@@ -30,14 +30,7 @@ pub fn write(report: &BodyReport, format: ImageFormat, path: &Path) -> Result<()
         return Ok(());
     };
     let figure = figure(&format!("{}: {}", report.name, report.problem.kind()), map);
-    let bytes = format.render(&figure).map_err(|e| CliError::Plot {
-        path: path.to_owned(),
-        message: e.to_string(),
-    })?;
-    crate::output::atomic_file::write_file(path, &bytes).map_err(|source| CliError::Plot {
-        path: path.to_owned(),
-        message: format!("cannot write the file: {source}"),
-    })
+    crate::output::write_figure(&figure, format, path)
 }
 
 /// The figure of a map.
